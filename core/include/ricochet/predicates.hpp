@@ -1,0 +1,36 @@
+// Exact geometric predicates on doubles: each returns the sign of a polynomial in its (double)
+// arguments exactly as if computed with real numbers. A floating-point filter answers almost every
+// call; when the rounded value is too close to zero to trust, an exact fallback decides: expansion
+// arithmetic (error-free sums and products, Shewchuk 1997) for inputs in the range where products
+// cannot underflow or overflow, GMP rationals beyond it. Valid for every finite input.
+#pragma once
+
+#include "ricochet/shapes.hpp"
+#include "ricochet/vec2.hpp"
+
+namespace ricochet::exact {
+
+/// sign((b − a) × (c − a)): +1 if a, b, c turn counter-clockwise, −1 clockwise, 0 collinear.
+int orient(Vec2 a, Vec2 b, Vec2 c);
+/// sign of BC = n·(p − P0) with n = (e_y, −e_x): +1 Outside, −1 Inside, 0 On. Equals −orient(P0, P1, p).
+int side(Vec2 p, const Wall& w);
+/// sign of n·d: +1 if the direction d points to the wall's outside, −1 inside, 0 parallel.
+int direction_side(Vec2 d, const Wall& w);
+/// sign(|p − c|² − r²): −1 strictly inside the circle, 0 on it, +1 outside.
+int point_circle(Vec2 p, const Circle& c);
+/// sign(|cA − cB|² − (rA + rB)²): −1 overlapping, 0 touching, +1 apart.
+int circle_circle(const Circle& a, const Circle& b);
+/// Orders two crossing times along one leg. For wall k with a_k = orient(P0k, P1k, A) ≠ 0 and
+/// b_k = orient(P0k, P1k, B) of sign 0 or −sign(a_k), the leg A → B meets wall k's line at
+/// s_k = a_k/(a_k − b_k). Returns sign(s_1 − s_2).
+int compare_crossings(Vec2 a, Vec2 b, const Wall& w1, const Wall& w2);
+
+/// How many calls the filter could not decide, since start (for benchmarks and the
+/// "skip what a scene doesn't need" report). Not thread-safe to read while others write; relaxed.
+struct FallbackCounts {
+    unsigned long long expansion = 0;
+    unsigned long long gmp = 0;
+};
+FallbackCounts fallback_counts();
+
+}  // namespace ricochet::exact

@@ -1,0 +1,139 @@
+// The robust kernel: exact decisions (predicates.hpp), rounded constructions that are never
+// accepted across a wall (path.hpp).
+#include "kernel_impl.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "path.hpp"
+#include "ricochet/predicates.hpp"
+
+namespace ricochet::robust {
+namespace {
+
+/// A decision for the leg q → b against w, with the exact sides of q and b.
+struct Leg {
+    Miss miss;
+    int sq = 0;
+    int sb = 0;
+};
+
+Leg test_leg(Vec2 q, Vec2 b, const Wall& w) {
+    // Degenerate: a zero-length wall has no normal, a zero-length leg no motion.
+    if (w.p0 == w.p1 || q == b) return {Miss::degenerate};
+    const int sq = exact::side(q, w);
+    const int sb = exact::side(b, w);
+    if (sq < 0 && sb < 0) return {Miss::both_inside, sq, sb};
+    if (sq > 0 && sb > 0) return {Miss::both_outside, sq, sb};
+    // Both on the line: the motion is along it, n·v = 0.
+    if (sq == 0 && sb == 0) return {Miss::parallel, sq, sb};
+    if (sq == 0) return {Miss::leaving, sq, sb};
+    // The leg meets the line at X = P0 + u·e with u = −o0/(d × e), 1 − u = o1/(d × e), where
+    // o_k = orient(q, b, P_k) and sign(d × e) = −sign(sq). X is before P0 if u < 0, past P1 if u > 1.
+    if (exact::orient(q, b, w.p0) == -sq) return {Miss::before_p0, sq, sb};
+    if (exact::orient(q, b, w.p1) == sq) return {Miss::past_p1, sq, sb};
+    return {Miss::none, sq, sb};
+}
+
+/// The leg fraction s at which q → b meets w's line: BC(q)/(BC(q) − BC(b)), rounded, in [0, 1].
+double crossing(Vec2 q, Vec2 b, const Wall& w, int sb) {
+    if (sb == 0) return 1.0;
+    const Vec2 e = edge(w);
+    // BC ∝ n·(p − P0) = −e × (p − P0); the common factor 1/|n| cancels in the ratio.
+    const double bq = -cross(e, q - w.p0);
+    const double bb = -cross(e, b - w.p0);
+    const double s = bq / (bq - bb);
+    return std::isfinite(s) ? std::clamp(s, 0.0, 1.0) : 0.0;
+}
+
+}  // namespace
+
+Side classify(Vec2 p, const Wall& w) { return side_from_sign(exact::side(p, w)); }
+bool point_in_circle(Vec2 p, const Circle& c) { return exact::point_circle(p, c) <= 0; }
+bool circles_overlap(const Circle& a, const Circle& b) { return exact::circle_circle(a, b) <= 0; }
+
+Vec2 reflect(Vec2 v, const Wall& w) {
+    // v' = v − 2(v·n̂)n̂ = v − (2(v·n)/(n·n))·n: no square root.
+    const Vec2 n = normal(w);
+    const double nn = dot(n, n);
+    if (nn == 0.0) return v;
+    const double k = 2.0 * dot(v, n) / nn;
+    return v - k * n;
+}
+
+Sweep sweep(Vec2 bs, Vec2 v, const Wall& w) {
+    const Vec2 be = bs + v;
+    const Leg leg = test_leg(bs, be, w);
+    if (leg.miss != Miss::none) return {leg.miss, 0.0, {}};
+    const double s = crossing(bs, be, w, leg.sb);
+    return {Miss::none, s, leg.sb == 0 ? be : bs + s * (be - bs)};
+}
+
+FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
+                      StepScratch& scratch, const WallIndex* index) {
+    Vec2 q = ball.pos, v = ball.vel;
+    double rest = 1.0, now = 0.0;
+    FrameStatus status = FrameStatus::ok;
+    for (int bounce = 0;; ++bounce) {
+        // A ball at rest does no sweep; a motion below an ulp of the position does not move it.
+        if (v == Vec2{}) break;
+        const Vec2 b = q + rest * v;
+        if (b == q) break;
+        if (bounce == k_max_bounces) {
+            status = FrameStatus::bounce_limit;
+            break;
+        }
+        // A leg that would leave a contact wall to its far side bounces off that wall instead.
+        const Contact* blocked = nullptr;
+        for (std::uint8_t k = 0; k < memory.count && blocked == nullptr; ++k)
+            if (exact::side(b, walls[memory.contacts[k].wall]) == -memory.contacts[k].side) blocked = &memory.contacts[k];
+        if (blocked != nullptr) {
+            v = reflect(v, walls[blocked->wall]);
+            continue;
+        }
+        // The earliest hit: exact ordering of crossings, the lowest index on a tie.
+        bool found = false;
+        std::uint32_t best = 0;
+        int best_sb = 0;
+        for (std::uint32_t i : detail::candidates(walls, index, q, b, scratch.candidates)) {
+            const Leg leg = test_leg(q, b, walls[i]);
+            if (leg.miss != Miss::none) continue;
+            if (found) {
+                const int c = exact::compare_crossings(q, b, walls[i], walls[best]);
+                if (c > 0 || (c == 0 && i > best)) continue;
+            }
+            found = true;
+            best = i;
+            best_sb = leg.sb;
+        }
+        if (!found) {
+            // No wall meets q → b, so no wall is crossed and none is touched from a side.
+            q = b;
+            memory.count = 0;
+            break;
+        }
+        const double s = crossing(q, b, walls[best], best_sb);
+        const Vec2 x = detail::make_safe(q, best_sb == 0 ? b : q + s * (b - q), memory, walls, index, scratch);
+        BallMemory arrived;
+        detail::arrive(q, x, memory, walls, index, scratch, arrived);  // make_safe guarantees it fits
+        now += s * rest;
+        hits.push_back({best, now, x});
+        // Bounce off the wall hit, then off each other wall met here whose far side v' still points
+        // to; if one is still crossed, go straight back.
+        Vec2 w = reflect(v, walls[best]);
+        for (std::uint8_t k = 0; k < arrived.count; ++k) {
+            const Contact& c = arrived.contacts[k];
+            if (c.wall != best && exact::direction_side(w, walls[c.wall]) == -c.side) w = reflect(w, walls[c.wall]);
+        }
+        for (std::uint8_t k = 0; k < arrived.count; ++k)
+            if (exact::direction_side(w, walls[arrived.contacts[k].wall]) == -arrived.contacts[k].side) w = -v;
+        v = w;
+        rest *= 1.0 - s;
+        q = x;
+        memory = arrived;
+    }
+    ball = {q, v};
+    return status;
+}
+
+}  // namespace ricochet::robust

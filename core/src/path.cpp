@@ -1,0 +1,90 @@
+#include "path.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "ricochet/predicates.hpp"
+
+namespace ricochet::detail {
+
+std::span<const std::uint32_t> candidates(std::span<const Wall> walls, const WallIndex* index, Vec2 a, Vec2 b,
+                                          std::vector<std::uint32_t>& scratch) {
+    scratch.clear();
+    if (index != nullptr) {
+        index->query(a, b, scratch);
+    } else {
+        scratch.resize(walls.size());
+        std::iota(scratch.begin(), scratch.end(), std::uint32_t{0});
+    }
+    return scratch;
+}
+
+bool on_closed_segment(Vec2 p, const Wall& w) {
+    // On the line, the segment is its bounding box: exact comparisons of doubles.
+    return std::min(w.p0.x, w.p1.x) <= p.x && p.x <= std::max(w.p0.x, w.p1.x) && std::min(w.p0.y, w.p1.y) <= p.y &&
+           p.y <= std::max(w.p0.y, w.p1.y);
+}
+
+const Contact* find_contact(const BallMemory& memory, std::uint32_t w) {
+    for (std::uint8_t i = 0; i < memory.count; ++i)
+        if (memory.contacts[i].wall == w) return &memory.contacts[i];
+    return nullptr;
+}
+
+bool arrive(Vec2 q, Vec2 r, const BallMemory& before, std::span<const Wall> walls, const WallIndex* index,
+            StepScratch& scratch, BallMemory& out) {
+    if (q == r) {
+        out = before;
+        return true;
+    }
+    out.count = 0;
+    for (std::uint32_t i : candidates(walls, index, q, r, scratch.touching)) {
+        const Wall& w = walls[i];
+        if (exact::side(r, w) != 0 || !on_closed_segment(r, w)) continue;
+        const int from = exact::side(q, w);
+        // Arriving along the wall's line is no crossing: nothing to remember.
+        if (from == 0) continue;
+        if (out.count == out.contacts.size()) return false;
+        out.contacts[out.count++] = {i, static_cast<std::int8_t>(from)};
+    }
+    // Deterministic order, whatever order the index answered in.
+    std::sort(out.contacts.begin(), out.contacts.begin() + out.count,
+              [](const Contact& a, const Contact& b) { return a.wall < b.wall; });
+    return true;
+}
+
+bool piece_allowed(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wall> walls, const WallIndex* index,
+                   StepScratch& scratch) {
+    if (q == r) return true;
+    for (std::uint8_t k = 0; k < memory.count; ++k) {
+        const Contact& c = memory.contacts[k];
+        if (exact::side(r, walls[c.wall]) == -c.side) return false;
+    }
+    for (std::uint32_t i : candidates(walls, index, q, r, scratch.candidates)) {
+        const Wall& w = walls[i];
+        const int sq = exact::side(q, w);
+        const int sr = exact::side(r, w);
+        if (sq * sr >= 0) continue;
+        // Strictly opposite sides: the piece crosses the line; it tunnels if P0 and P1 are not
+        // strictly on one side of the line q → r.
+        if (exact::orient(q, r, w.p0) * exact::orient(q, r, w.p1) <= 0) return false;
+    }
+    BallMemory arrived;
+    return arrive(q, r, memory, walls, index, scratch, arrived);
+}
+
+Vec2 make_safe(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wall> walls, const WallIndex* index,
+               StepScratch& scratch) {
+    if (piece_allowed(q, r, memory, walls, index, scratch)) return r;
+    // Walk back towards q: a rounding error of a few ulps is undone by the first steps; the last
+    // step, f = 0, is q itself, where the ball already is.
+    const Vec2 d = r - q;
+    for (double f : {1 - 0x1p-50, 1 - 0x1p-46, 1 - 0x1p-40, 1 - 0x1p-30, 1 - 0x1p-20, 1 - 0x1p-10, 0.5, 0.0}) {
+        const Vec2 c = f == 0.0 ? q : q + f * d;
+        if (piece_allowed(q, c, memory, walls, index, scratch)) return c;
+    }
+    return q;
+}
+
+}  // namespace ricochet::detail

@@ -1,0 +1,38 @@
+// Internal: the rules that keep a printed path from tunnelling, shared by the robust and exact
+// kernels. Every decision here is an exact predicate on doubles.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ricochet/kernel.hpp"
+
+namespace ricochet::detail {
+
+/// Walls to try for the segment a → b: every wall, or what the index says.
+std::span<const std::uint32_t> candidates(std::span<const Wall> walls, const WallIndex* index, Vec2 a, Vec2 b,
+                                          std::vector<std::uint32_t>& scratch);
+
+/// True if p lies on the closed segment of w, given that it lies on w's line.
+bool on_closed_segment(Vec2 p, const Wall& w);
+
+/// Is the printed piece q → r allowed? It may not pass strictly from one side of a wall to the
+/// other through the wall's closed segment, nor leave a contact wall to the side it did not come
+/// from, nor arrive where more walls meet than BallMemory can remember.
+bool piece_allowed(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wall> walls, const WallIndex* index,
+                   StepScratch& scratch);
+
+/// The contacts after the piece q → r: each wall whose closed segment holds r and whose line q is off,
+/// with q's side; before, unchanged, if r = q. Returns false if more walls meet at r than BallMemory holds.
+bool arrive(Vec2 q, Vec2 r, const BallMemory& before, std::span<const Wall> walls, const WallIndex* index,
+            StepScratch& scratch, BallMemory& out);
+
+/// r, or the first point on the way back towards q whose piece q → r is allowed (q itself at worst).
+Vec2 make_safe(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wall> walls, const WallIndex* index,
+               StepScratch& scratch);
+
+/// The contact on wall w in memory, or nullptr.
+const Contact* find_contact(const BallMemory& memory, std::uint32_t w);
+
+}  // namespace ricochet::detail
