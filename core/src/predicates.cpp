@@ -216,7 +216,7 @@ int compare_crossings(Vec2 a, Vec2 b, const Wall& w1, const Wall& w2) {
     const double d = l - r;
     if (std::isfinite(err) && std::fabs(d) > (1.0 + 8.0 * k_eps) * err) return sign(d) * sa1 * sa2;
     g_gmp.fetch_add(1, std::memory_order_relaxed);
-    auto det = [](const Wall& w, Vec2 p) {
+    auto det = [](const Wall& w, Vec2 p) -> mpq_class {
         return (q(w.p0.x) - q(p.x)) * (q(w.p1.y) - q(p.y)) - (q(w.p0.y) - q(p.y)) * (q(w.p1.x) - q(p.x));
     };
     const mpq_class ea1 = det(w1, a), eb1 = det(w1, b), ea2 = det(w2, a), eb2 = det(w2, b);

@@ -1,0 +1,173 @@
+// One frame of one ball among many walls: the lecture's pinball, corners, the bounce, limits.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "ricochet/kernel.hpp"
+#include "ricochet/tunnel.hpp"
+
+namespace ricochet {
+namespace {
+
+// A closed box [lo, hi]²: 0 left, 1 bottom, 2 right, 3 top. For P0 → P1 the normal (e_y, −e_x) points
+// to the right of the direction of travel, so going counter-clockwise keeps the outside on the right.
+std::vector<Wall> box(double lo = 0, double hi = 10) {
+    return {{{lo, hi}, {lo, lo}}, {{lo, lo}, {hi, lo}}, {{hi, lo}, {hi, hi}}, {{hi, hi}, {lo, hi}}};
+}
+
+struct Stepped {
+    Ball ball;
+    std::vector<HitEvent> hits;
+    FrameStatus status;
+};
+
+Stepped step(KernelId k, Ball b, const std::vector<Wall>& walls, BallMemory* memory = nullptr) {
+    BallMemory local;
+    StepScratch scratch;
+    std::vector<HitEvent> hits;
+    const FrameStatus st = step_ball(k, b, memory ? *memory : local, walls, hits, scratch);
+    return {b, hits, st};
+}
+
+class Frames : public ::testing::TestWithParam<KernelId> {};
+INSTANTIATE_TEST_SUITE_P(Kernels, Frames, ::testing::ValuesIn(k_all_kernels));
+
+TEST_P(Frames, BoxWallsPointOutward) {
+    for (const Wall& w : box()) EXPECT_EQ(classify(GetParam(), {5, 5}, w), Side::Inside);
+}
+
+TEST_P(Frames, ThePinballBouncesAndSpendsTheRestOfTheFrame) {
+    // Bs = (8, 5), v = (4, 1): the right wall x = 10 is met at t_i = 0.5, B_i = (10, 5.5);
+    // v' = (−4, 1); the rest (1 − 0.5)·v' = (−2, 0.5) ends at (8, 6).
+    const Stepped s = step(GetParam(), {{8, 5}, {4, 1}}, box());
+    ASSERT_EQ(s.hits.size(), 1u);
+    EXPECT_EQ(s.hits[0].wall, 2u);
+    EXPECT_EQ(s.hits[0].t, 0.5);
+    EXPECT_EQ(s.hits[0].point, (Vec2{10, 5.5}));
+    EXPECT_EQ(s.ball.pos, (Vec2{8, 6}));
+    EXPECT_EQ(s.ball.vel, (Vec2{-4, 1}));
+    EXPECT_EQ(s.status, FrameStatus::ok);
+}
+
+TEST_P(Frames, SeveralBouncesInOneFrame) {
+    // Fast enough to cross the box twice: (5, 5) + (25, 0) bounces off x = 10 then x = 0.
+    const Stepped s = step(GetParam(), {{5, 5}, {25, 0}}, box());
+    // 5 → 10 (5), → 0 (10), → 10 with the rest, 25 − 15 = 10: the frame ends touching the right
+    // wall, and touching is a collision, so that is a third bounce at t = 1.
+    ASSERT_EQ(s.hits.size(), 3u);
+    EXPECT_EQ(s.hits[0].wall, 2u);
+    EXPECT_EQ(s.hits[1].wall, 0u);
+    EXPECT_EQ(s.hits[2].wall, 2u);
+    // Hit times are constructions: rounded, except in exact (correctly rounded from the rational).
+    const double tol = GetParam() == KernelId::exact ? 0.0 : GetParam() == KernelId::lecture_float ? 1e-7 : 1e-15;
+    EXPECT_NEAR(s.hits[0].t, 0.2, tol);
+    EXPECT_NEAR(s.hits[1].t, 0.6, tol);
+    EXPECT_NEAR(s.hits[2].t, 1.0, tol);
+    EXPECT_EQ(s.ball.pos, (Vec2{10, 5}));
+    EXPECT_EQ(s.ball.vel, (Vec2{-25, 0}));
+}
+
+TEST(Frames, CornerGoesStraightBackForRobustAndExact) {
+    // Aimed exactly at the corner (10, 10): both walls are met at the same time. The lowest index (the
+    // right wall, 2) is reported; reflecting about both sends the ball straight back.
+    for (KernelId k : {KernelId::robust, KernelId::exact}) {
+        const Stepped s = step(k, {{6, 6}, {8, 8}}, box());
+        ASSERT_EQ(s.hits.size(), 1u) << kernel_name(k);
+        EXPECT_EQ(s.hits[0].wall, 2u);
+        EXPECT_EQ(s.hits[0].point, (Vec2{10, 10}));
+        EXPECT_EQ(s.ball.vel, (Vec2{-8, -8}));
+        EXPECT_EQ(s.ball.pos, (Vec2{6, 6}));
+    }
+}
+
+TEST(Frames, EndOnACornerThenLeaveIntoTheBox) {
+    // The frame ends exactly in the corner; the next frame must leave it into the box, never out.
+    for (KernelId k : {KernelId::robust, KernelId::exact}) {
+        BallMemory memory;
+        Stepped s = step(k, {{6, 6}, {4, 4}}, box(), &memory);
+        ASSERT_EQ(s.hits.size(), 1u);
+        EXPECT_EQ(s.ball.pos, (Vec2{10, 10}));
+        const auto walls = box();
+        const std::vector<Ball> start{{{6, 6}, {4, 4}}};
+        TunnelChecker checker(walls, start);
+        EXPECT_FALSE(checker.advance(0, s.ball.pos));
+        s = step(k, s.ball, walls, &memory);
+        EXPECT_FALSE(checker.advance(0, s.ball.pos));
+        EXPECT_LE(s.ball.pos.x, 10.0);
+        EXPECT_LE(s.ball.pos.y, 10.0);
+    }
+}
+
+TEST_P(Frames, BounceLimitStopsAtASafePoint) {
+    // A corridor 2^-40 wide crossed at speed 1: thousands of bounces are needed, 16 are allowed.
+    const double h = 0x1p-40;
+    const std::vector<Wall> corridor{{{-10, 0}, {10, 0}}, {{10, h}, {-10, h}}};
+    const Stepped s = step(GetParam(), {{0, h / 2}, {1, 1}}, corridor);
+    EXPECT_EQ(s.status, FrameStatus::bounce_limit);
+    EXPECT_EQ(s.hits.size(), static_cast<std::size_t>(k_max_bounces));
+    if (GetParam() == KernelId::robust || GetParam() == KernelId::exact) {
+        EXPECT_GE(s.ball.pos.y, 0.0);
+        EXPECT_LE(s.ball.pos.y, h);
+    }
+}
+
+TEST_P(Frames, ZeroVelocityDoesNoSweep) {
+    const Stepped s = step(GetParam(), {{5, 5}, {0, 0}}, box());
+    EXPECT_TRUE(s.hits.empty());
+    EXPECT_EQ(s.ball.pos, (Vec2{5, 5}));
+}
+
+TEST_P(Frames, OutOfRangeIsAnErrorAndChangesNothing) {
+    const Ball nan{{std::nan(""), 0}, {1, 0}};
+    Stepped s = step(GetParam(), nan, box());
+    EXPECT_EQ(s.status, FrameStatus::out_of_range);
+    const Ball huge{{1e300, 0}, {1, 0}};
+    s = step(GetParam(), huge, box());
+    EXPECT_EQ(s.status, FrameStatus::out_of_range);
+    EXPECT_EQ(s.ball, huge);
+}
+
+TEST(Frames, BounceKeepsSpeedAndSide) {
+    // Many bounces off a wall with an inexact direction: |v| stays within the stated bound and the
+    // ball always ends on the side it came from.
+    const Wall w{{0.1, 0.3}, {7.3, 2.9}};
+    for (KernelId k : {KernelId::robust, KernelId::exact}) {
+        for (int i = 1; i < 200; ++i) {
+            const Vec2 start{3.0 + i * 0.01, 5.0};
+            const Vec2 v{0.37 * i - 30.0, -7.0 - 0.011 * i};
+            BallMemory memory;
+            Stepped s = step(k, {start, v}, {w}, &memory);
+            if (s.hits.empty()) continue;
+            const double before = std::hypot(v.x, v.y), after = std::hypot(s.ball.vel.x, s.ball.vel.y);
+            EXPECT_LE(std::fabs(after - before), k_speed_rel_bound * before + 4e-16 * before);
+            const Side from = classify(KernelId::exact, start, w);
+            const Side to = classify(KernelId::exact, s.ball.pos, w);
+            EXPECT_TRUE(to == from || to == Side::On) << kernel_name(k) << " case " << i;
+        }
+    }
+}
+
+TEST(Frames, RobustNeverTunnelsThroughAThinWedge) {
+    // Two walls meeting at a sharp angle, balls aimed near the apex from many directions over many
+    // frames: the exact checker must never see a tunnel.
+    const std::vector<Wall> walls{{{0, 0}, {10, 1e-9}}, {{10, -1e-9}, {0, 0}}, {{10, 1e-9}, {10, -1e-9}}};
+    for (KernelId k : {KernelId::robust, KernelId::exact}) {
+        for (int i = 0; i < 64; ++i) {
+            const std::vector<Ball> balls{{{-1.0 - i * 0.37, 0.5 - i * 0.013}, {1.0 + i * 0.11, -0.5 + i * 0.0131}}};
+            TunnelChecker checker(walls, balls);
+            Ball b = balls[0];
+            BallMemory memory;
+            StepScratch scratch;
+            for (int f = 0; f < 40; ++f) {
+                std::vector<HitEvent> hits;
+                step_ball(k, b, memory, walls, hits, scratch);
+                for (const HitEvent& h : hits) ASSERT_FALSE(checker.advance(0, h.point)) << kernel_name(k) << " ball " << i;
+                ASSERT_FALSE(checker.advance(0, b.pos)) << kernel_name(k) << " ball " << i << " frame " << f;
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace ricochet
