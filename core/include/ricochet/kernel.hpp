@@ -38,7 +38,7 @@
 // exact for every finite double; the range keeps constructions (t_i, B_i, v') free of overflow.
 // Robust error bounds, inside the range: t_i and B_i are within a few ulps of the exact crossing of
 // the leg for well-conditioned hits (|n̂·d| not tiny against |d|); v' satisfies
-// | |v'| − |v| | ≤ k_speed_rel_bound·|v| per bounce.
+// | |v'| − |v| | ≤ k_speed_rel_bound·|v| (2^-48) per bounce.
 #pragma once
 
 #include <array>
@@ -68,7 +68,11 @@ inline constexpr double k_coordinate_limit = 0x1p256;
 /// Most bounces one ball makes in one frame.
 inline constexpr int k_max_bounces = 16;
 /// Robust and exact: bound on the relative change of |v| per bounce (the rounded reflection).
-inline constexpr double k_speed_rel_bound = 0x1p-49;
+/// v' = v − k·n with k = 2(v·n)/(n·n): v·n is off by ≤ 2ε|v||n|, n·n by ≤ 2ε, the division by ε, so
+/// k·n is off by ≤ 10ε|v|; rounding k·n and the subtraction add ≤ 3ε|v| per component. Reflecting
+/// about the rounded normal itself preserves |v|. In all ≤ 15√2·ε ≈ 21ε < 32ε = 2^-48 (ε = 2^-53).
+/// Measured worst over 2·10^6 random reflections at scales 2^±60: 2^-49.96.
+inline constexpr double k_speed_rel_bound = 0x1p-48;
 
 /// True if x is finite and |x| ≤ k_coordinate_limit.
 bool in_range(double x);
