@@ -138,7 +138,8 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
             status = FrameStatus::bounce_limit;
             break;
         }
-        const QV b = q + rest * v;
+        // The frame's first leg ends at Be = Bs + v as C++ rounds it (kernel.hpp), as robust's and sweep()'s do.
+        const QV b = bounce == 0 ? qv(ball.pos + ball.vel) : q + rest * v;
         // A leg that would leave a contact wall to its far side bounces off that wall instead.
         const auto blocked = std::find_if(contacts.begin(), contacts.end(),
                                           [&](const QContact& c) { return sgn(bc(b, qwalls[c.wall])) == -c.side; });
