@@ -1,0 +1,218 @@
+#include "fuzz_common.hpp"
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "ricochet/checks.hpp"
+#include "ricochet/scene_log.hpp"
+
+namespace ricochet::fuzz {
+
+KernelId kernel_under_test() {
+    static const KernelId k = [] {
+        const char* name = std::getenv(k_kernel_env);
+        if (name == nullptr || *name == '\0') return KernelId::robust;
+        const auto parsed = parse_kernel(name);
+        if (!parsed) {
+            fmt::print(stderr, "ricochet fuzz: error: {}={} is not a kernel (lecture-float, lecture-double, robust, exact)\n",
+                       k_kernel_env, name);
+            std::exit(2);
+        }
+        return *parsed;
+    }();
+    return k;
+}
+
+std::uint64_t ByteReader::u64() {
+    std::uint64_t x = 0;
+    for (int i = 0; i < 8; ++i) x |= std::uint64_t{u8()} << (8 * i);
+    return x;
+}
+
+double clamp_to_range(double x) { return in_range(x) ? x : 0.0; }
+
+namespace {
+
+// Values where geometry is known to go wrong: zero of both signs, units, non-dyadic decimals,
+// the smallest normal and subnormal, the 2^53 integer edge, far offsets and the range limit.
+constexpr std::array<double, 24> k_interesting = {
+    0.0,     -0.0,   1.0,     -1.0,         0.5,          0.1,           1.0 / 3.0,     3.0,
+    1e-9,    1e-300, 5e-324,  0x1p-1022,    0x1p52,       0x1p53,        0x1p53 + 2.0,  1e9,
+    1e9 + 0.5, 1e15, -1e15,   1e30,         1e77,         -1e77,         k_coordinate_limit, -k_coordinate_limit};
+
+}  // namespace
+
+double ByteReader::number() {
+    switch (u8() % 8) {
+        case 0:
+        case 1:
+        case 2:
+            // Small integers: most decisive geometry (boxes, diagonals) lives here.
+            return static_cast<double>(static_cast<std::int8_t>(u8()));
+        case 3: {
+            // Dyadic fractions m/2^k: exact in binary, so points can sit exactly on lines.
+            const auto m = static_cast<std::int16_t>(u16());
+            return std::ldexp(static_cast<double>(m), -static_cast<int>(u8() % 40));
+        }
+        case 4: return k_interesting[u8() % k_interesting.size()];
+        case 5: {
+            // A small integer far from the origin: 1e9 and beyond, where an ulp is large.
+            const double base = std::ldexp(1.0, 20 + static_cast<int>(u8() % 40));
+            return (u8() & 1 ? -base : base) + static_cast<double>(static_cast<std::int8_t>(u8()));
+        }
+        case 6: {
+            // Any double; out of range folds back into it keeping the mantissa.
+            const double x = std::bit_cast<double>(u64());
+            if (in_range(x)) return x;
+            if (!std::isfinite(x)) return 0.0;
+            int e = 0;
+            const double m = std::frexp(x, &e);
+            return std::ldexp(m, e % 200);
+        }
+        default: {
+            // A small integer scaled by a power of two, tiny to large.
+            const double m = static_cast<double>(static_cast<std::int8_t>(u8()));
+            return std::ldexp(m, static_cast<int>(u8() % 128) - 64);
+        }
+    }
+}
+
+double ByteReader::magnitude() { return std::fabs(number()); }
+
+double ByteReader::nudge(double x) {
+    const int k = static_cast<int>(u8() % 7) - 3;
+    for (int i = 0; i < k; ++i) x = std::nextafter(x, INFINITY);
+    for (int i = 0; i > k; --i) x = std::nextafter(x, -INFINITY);
+    return clamp_to_range(x);
+}
+
+Vec2 ByteReader::point() {
+    const unsigned mode = u8() % 8;
+    Vec2 p;
+    if (mode == 4 && !points_.empty()) {
+        // A point seen before: a wall's end, a ball's start, a circle's centre.
+        p = points_[u8() % points_.size()];
+    } else if (mode == 5 && !walls_.empty()) {
+        // On a wall's line: P0 + f·e with f dyadic (inside the segment, at its ends or beyond).
+        const Wall& w = walls_[u8() % walls_.size()];
+        const double f = std::ldexp(static_cast<double>(static_cast<std::int8_t>(u8())), -static_cast<int>(u8() % 8));
+        p = {clamp_to_range(w.p0.x + f * (w.p1.x - w.p0.x)), clamp_to_range(w.p0.y + f * (w.p1.y - w.p0.y))};
+    } else if (mode == 6 && !points_.empty()) {
+        // Near a point seen before: a small step away (grazing, corners).
+        const Vec2 q = points_[u8() % points_.size()];
+        p = {clamp_to_range(q.x + number()), clamp_to_range(q.y + number())};
+    } else {
+        p = {number(), number()};
+    }
+    // A few ulps off, one coordinate or both: the end positions where rounding decides.
+    if (u8() & 1) p.x = nudge(p.x);
+    if (u8() & 1) p.y = nudge(p.y);
+    return p;
+}
+
+Wall ByteReader::wall() {
+    Wall w;
+    w.p0 = point();
+    remember(w.p0);
+    w.p1 = u8() % 16 == 0 ? w.p0 : point();  // sometimes zero-length
+    remember(w.p1);
+    remember(w);
+    return w;
+}
+
+Vec2 ByteReader::velocity(Vec2 from) {
+    Vec2 v;
+    switch (u8() % 4) {
+        case 0:
+        case 1: {
+            // Towards a target point: the leg then ends on or next to a line or a corner.
+            const Vec2 to = point();
+            v = {clamp_to_range(to.x - from.x), clamp_to_range(to.y - from.y)};
+            break;
+        }
+        case 2:
+            if (!walls_.empty()) {
+                // Along a wall, or a few ulps off parallel.
+                const Wall& w = walls_[u8() % walls_.size()];
+                const double k = std::ldexp(static_cast<double>(static_cast<std::int8_t>(u8())), -static_cast<int>(u8() % 8));
+                v = {nudge(clamp_to_range(k * (w.p1.x - w.p0.x))), nudge(clamp_to_range(k * (w.p1.y - w.p0.y)))};
+                break;
+            }
+            [[fallthrough]];
+        default: v = {number(), number()};
+    }
+    return v;
+}
+
+Circle ByteReader::circle() {
+    Circle c;
+    c.c = point();
+    c.r = u8() % 8 == 0 ? 0.0 : magnitude();
+    remember(c.c);
+    // Points on the circle: the axis extremes, and a 3-4-5 point (exact when r is a multiple of 5).
+    remember(Vec2{clamp_to_range(c.c.x + c.r), c.c.y});
+    remember(Vec2{c.c.x, clamp_to_range(c.c.y - c.r)});
+    remember(Vec2{clamp_to_range(c.c.x + 0.6 * c.r), clamp_to_range(c.c.y + 0.8 * c.r)});
+    return c;
+}
+
+Rect ByteReader::rect() {
+    const Vec2 a = point();
+    const Vec2 b = u8() % 8 == 0 ? a : point();  // sometimes zero-size
+    const Rect r{std::fmin(a.x, b.x), std::fmin(a.y, b.y), std::fmax(a.x, b.x), std::fmax(a.y, b.y)};
+    // Corners, so that later points and rectangles can touch them exactly.
+    remember(Vec2{r.left, r.bottom});
+    remember(Vec2{r.right, r.top});
+    remember(Vec2{r.left, r.top});
+    return r;
+}
+
+void fail(std::string_view target, const Failure& f, Scene scene) {
+    const KernelId k = kernel_under_test();
+    fmt::print(stderr, "{} target={} kernel={} check={} frame={} kind={}\n  {}\n", k_failure_tag, target, kernel_name(k),
+               check_name(f.check), f.frame, f.kind, f.what);
+    if (const char* out = std::getenv(k_scene_out_env); out != nullptr && *out != '\0') {
+        const char* sha = std::getenv(k_sha1_env);
+        scene.kernel = k;
+        scene.provenance = {fmt::format("fuzz {} {}", target, sha != nullptr && *sha != '\0' ? sha : "unknown")};
+        // Which check does replay see break? The target's own first; if replay's version of it misses
+        // this case, the first of all checks that replay sees fail.
+        std::vector<Check> checks = {f.check};
+        CheckedRun run = run_checked(scene, k, scene.frames, checks, no_events());
+        if (!run.failure) {
+            checks = {Check::no_tunnel, Check::oracle, Check::speed, Check::boundary, Check::symmetry, Check::deterministic};
+            run = run_checked(scene, k, scene.frames, checks, no_events());
+        }
+        std::string note = fmt::format("{}: {}", f.kind, f.what);
+        if (run.failure) {
+            scene.checks = {run.failure->check};
+            // A lecture kernel's failure documents a known weakness: replay passes while it reproduces.
+            // A robust or exact failure is a bug: its log fails replay until the bug is fixed.
+            if (k == KernelId::lecture_float || k == KernelId::lecture_double)
+                scene.expect_failure = ExpectFailure{run.failure->check, run.failure->frame};
+            fmt::print(stderr, "  replay sees it: {}\n", run.failure->str());
+        } else {
+            scene.checks = {f.check};
+            note += " (replay's checks do not see this; the fuzz target's oracle is stricter)";
+            fmt::print(stderr, "  replay does not see it: the log documents the case only\n");
+        }
+        // The header, then the fuzz target's own words as a comment, then the canonical log.
+        std::string text = write_scene_log(scene);
+        const std::size_t eol = text.find('\n');
+        std::string comment;
+        for (char ch : note) comment += (ch == '\n' || ch == '\r') ? ' ' : ch;
+        text.insert(eol + 1, fmt::format("# {}\n", comment));
+        std::string error;
+        if (!write_file_atomically(out, text, &error)) fmt::print(stderr, "ricochet fuzz: error: {}\n", error);
+    }
+    std::fflush(stderr);
+    std::abort();
+}
+
+}  // namespace ricochet::fuzz

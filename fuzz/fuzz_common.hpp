@@ -1,0 +1,107 @@
+// Shared by the fuzz targets: a deterministic byte decoder that favours the numbers where
+// geometry goes wrong (small integers, dyadic fractions, values near zero, huge offsets, a few ulps
+// either side of a line), the kernel under test, and the failure report that turns an oracle
+// violation into an abort (libFuzzer saves the input) plus, on request, a scene log.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ricochet/checks.hpp"
+#include "ricochet/kernel.hpp"
+#include "ricochet/scene.hpp"
+#include "ricochet/shapes.hpp"
+
+namespace ricochet::fuzz {
+
+/// Environment variable naming the kernel under test (shared with the property tests).
+inline constexpr const char* k_kernel_env = "RICOCHET_KERNEL";
+/// Environment variable: when set, a failing input also writes its scene log to this path.
+inline constexpr const char* k_scene_out_env = "RICOCHET_FUZZ_SCENE_OUT";
+/// Environment variable: the SHA1 of the input, for the log's `from fuzz TARGET SHA1` line.
+inline constexpr const char* k_sha1_env = "RICOCHET_FUZZ_SHA1";
+/// The line prefix of a failure report on stderr (the campaign driver parses it).
+inline constexpr std::string_view k_failure_tag = "==ricochet-fuzz== FAILURE";
+
+/// The kernel named by RICOCHET_KERNEL, robust if unset; an unknown name aborts (a typo must not
+/// silently fuzz the wrong kernel).
+KernelId kernel_under_test();
+
+/// Reads the fuzzer's bytes as geometry. Exhausted input reads as zeros, so every byte string
+/// decodes to some case and small inputs decode to simple ones.
+class ByteReader {
+public:
+    /// Reads from the bytes [data, data + size).
+    ByteReader(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
+    /// True when every byte was consumed.
+    bool empty() const { return pos_ >= size_; }
+    /// The next byte, 0 past the end.
+    std::uint8_t u8() { return pos_ < size_ ? data_[pos_++] : 0; }
+    /// The next two bytes, little-endian.
+    std::uint16_t u16() { return static_cast<std::uint16_t>(u8() | (u8() << 8)); }
+    /// The next eight bytes, little-endian.
+    std::uint64_t u64();
+    /// An integer in [0, n), n ≥ 1.
+    unsigned below(unsigned n) { return u8() % n; }
+    /// A number in the accepted range (kernel.hpp's in_range), mostly simple, sometimes extreme.
+    double number();
+    /// A non-negative number in range.
+    double magnitude();
+    /// x moved k ulps (k in [−3, 3], often 0).
+    double nudge(double x);
+    /// A point: free, or tied to the geometry seen so far (an end point, on a wall's line, on a
+    /// circle), each possibly a few ulps off.
+    Vec2 point();
+    /// Remembers a wall so that later points can land on its line or ends.
+    void remember(const Wall& w) { walls_.push_back(w); }
+    /// Remembers a point so that later points can reuse it.
+    void remember(Vec2 p) { points_.push_back(p); }
+    /// A wall (sometimes zero-length), remembered.
+    Wall wall();
+    /// A velocity: free, towards a decoded target point, or along a remembered wall.
+    Vec2 velocity(Vec2 from);
+    /// A circle, remembered by its centre.
+    Circle circle();
+    /// A rectangle with left ≤ right and bottom ≤ top.
+    Rect rect();
+
+private:
+    const std::uint8_t* data_;
+    std::size_t size_;
+    std::size_t pos_ = 0;
+    std::vector<Wall> walls_;
+    std::vector<Vec2> points_;
+};
+
+/// Keeps x in the accepted range: out-of-range or non-finite values become 0.
+double clamp_to_range(double x);
+
+/// The same wall walked the other way (normal flipped).
+inline Wall reversed(const Wall& w) { return {w.p1, w.p0}; }
+
+/// An oracle violation: which scene-log check it breaks, the frame, a stable kind (the campaign
+/// deduplicates on it) and a human sentence.
+struct Failure {
+    Check check = Check::oracle;
+    std::int64_t frame = 0;
+    std::string kind;
+    std::string what;
+};
+
+/// Check options that keep no events (the fuzz targets only need the verdict and the hash).
+inline CheckOptions no_events() {
+    CheckOptions o;
+    o.keep_events = false;
+    return o;
+}
+
+/// Reports f for target on stderr, writes scene (with the failed check, provenance and, for a
+/// lecture kernel, `expect failure`) to $RICOCHET_FUZZ_SCENE_OUT if set, then aborts.
+[[noreturn]] void fail(std::string_view target, const Failure& f, Scene scene);
+
+}  // namespace ricochet::fuzz

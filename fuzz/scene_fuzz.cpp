@@ -1,0 +1,69 @@
+// Fuzz target `scene`: a whole small scene decoded from the bytes (an optional closed box, free
+// walls, balls, circles, rectangles) stepped for up to 32 frames by the kernel under test.
+// Oracle: the scene-log checks no-tunnel (exact), speed (|v| within the kernel's bound per bounce),
+// boundary and deterministic (a second World in lockstep gives the same events, hence the same hash),
+// all as `ricochet replay` asserts them (checks.hpp), so every failure replays.
+#include <cmath>
+#include <cstdint>
+
+#include <fmt/format.h>
+
+#include "fuzz_common.hpp"
+#include "ricochet/checks.hpp"
+
+namespace ricochet::fuzz {
+namespace {
+
+/// Most frames a decoded scene runs (keeps one input well under a millisecond).
+constexpr std::int64_t k_scene_max_frames = 32;
+
+/// The scene a scene input decodes to.
+Scene decode(const std::uint8_t* data, std::size_t size) {
+    ByteReader in(data, size);
+    Scene s;
+    s.kernel = kernel_under_test();
+    const unsigned shape = in.u8();
+    if (shape % 2 == 0) {
+        // A closed box, corners listed counter-clockwise so that every outward normal points out.
+        const Vec2 a = in.point(), b = in.point();
+        const double l = std::fmin(a.x, b.x), r = std::fmax(a.x, b.x), bo = std::fmin(a.y, b.y), t = std::fmax(a.y, b.y);
+        const Vec2 c[4] = {{l, bo}, {r, bo}, {r, t}, {l, t}};
+        for (int i = 0; i < 4; ++i) {
+            const Wall w{c[(i + 1) % 4], c[i]};  // clockwise P0 → P1: normal (e_y, −e_x) points out
+            s.walls.push_back(w);
+            in.remember(w);
+            in.remember(c[i]);
+        }
+    }
+    const unsigned free_walls = in.below(shape % 2 == 0 ? 3 : 6);
+    for (unsigned i = 0; i < free_walls; ++i) s.walls.push_back(in.wall());
+    const unsigned balls = 1 + in.below(3);
+    for (unsigned i = 0; i < balls; ++i) {
+        Ball b;
+        b.pos = in.point();
+        b.vel = in.velocity(b.pos);
+        s.balls.push_back(b);
+    }
+    const unsigned circles = in.below(3);
+    for (unsigned i = 0; i < circles; ++i) s.circles.push_back(in.circle());
+    const unsigned rects = in.below(3);
+    for (unsigned i = 0; i < rects; ++i) s.rects.push_back(in.rect());
+    s.frames = 1 + in.below(static_cast<unsigned>(k_scene_max_frames));
+    return s;
+}
+
+}  // namespace
+}  // namespace ricochet::fuzz
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    using namespace ricochet;
+    const KernelId k = fuzz::kernel_under_test();
+    const Scene scene = fuzz::decode(data, size);
+    static constexpr Check k_checks[] = {Check::no_tunnel, Check::speed, Check::boundary, Check::deterministic};
+    const CheckedRun run = run_checked(scene, k, scene.frames, k_checks, fuzz::no_events());
+    if (run.failure)
+        fuzz::fail("scene", fuzz::Failure{run.failure->check, run.failure->frame, std::string(check_name(run.failure->check)),
+                                          run.failure->str()},
+                   scene);
+    return 0;
+}
