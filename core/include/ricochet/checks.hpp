@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -53,7 +54,8 @@ struct CheckedRun {
 
 /// Options for run_checked.
 struct CheckOptions {
-    bool keep_events = true;   ///< store events in CheckedRun::events
+    bool keep_events = true;                                   ///< store events in CheckedRun::events
+    std::function<void(std::span<const Event>)> on_frame;      ///< called with each frame's events, in order
 };
 
 /// Runs frames 0..frames of scene under kernel, asserting checks on every frame. After the first failure

@@ -1,0 +1,143 @@
+// `ricochet check`: the whole regression gate. Replays the corpus (replays/ of the source tree), runs
+// the lecture's pinball example, then the property suite if it was built, then a short fuzz campaign
+// if the fuzz targets were built; one summary, non-zero exit if anything failed.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "ricochet/checks.hpp"
+#include "ricochet/scene_log.hpp"
+
+namespace ricochet::cli {
+
+namespace {
+
+/// Runs argv (no shell), inheriting stdout/stderr; returns its exit status (127 if it could not start).
+int run_program(const std::vector<std::string>& argv) {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    const pid_t pid = ::fork();
+    if (pid < 0) return 127;
+    if (pid == 0) {
+        std::vector<char*> args;
+        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        args.push_back(nullptr);
+        ::execv(args[0], args.data());
+        std::_Exit(127);
+    }
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR) return 127;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::string self_exe() {
+    std::error_code ec;
+    const auto p = std::filesystem::read_symlink("/proc/self/exe", ec);
+    return ec ? std::string(RICOCHET_BINARY_DIR "/cli/ricochet") : p.string();
+}
+
+bool any_fuzz_target_built() {
+    const std::filesystem::path dir = std::filesystem::path(RICOCHET_BINARY_DIR) / "fuzz";
+    std::error_code ec;
+    for (const char* t : {"fuzz_parser", "fuzz_scene", "fuzz_sweep", "fuzz_static"})
+        if (std::filesystem::exists(dir / t, ec)) return true;
+    return false;
+}
+
+}  // namespace
+
+void register_check(CLI::App& app) {
+    struct Options {
+        int fuzz_time = 20;
+        bool no_properties = false;
+    };
+    auto opt = std::make_shared<Options>();
+    CLI::App* sub = app.add_subcommand(
+        "check", "replay the corpus, the lecture's pinball example, the property suite and a short fuzz campaign");
+    sub->add_option("--fuzz-time", opt->fuzz_time, "seconds of fuzzing at the end (0: none)")->check(CLI::NonNegativeNumber);
+    sub->add_flag("--no-properties", opt->no_properties, "skip the property suite");
+    sub->callback([opt] {
+        std::vector<std::string> summary;
+        bool failed = false;
+        const auto timed = [](auto&& f) {
+            const auto t0 = std::chrono::steady_clock::now();
+            f();
+            return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        };
+
+        // 1. The corpus.
+        fmt::print("== replay {}\n", source_replays_dir().string());
+        ReplaySummary r;
+        const double t_replay = timed([&] { r = replay_paths({source_replays_dir().string()}, false); });
+        failed = failed || r.failed > 0 || r.bad_input;
+        summary.push_back(fmt::format("replay      {} passed, {} failed ({:.2f} s)", r.passed, r.failed, t_replay));
+
+        // 2. The lecture's pinball experiment, under every kernel: robust must keep its checks.
+        const std::filesystem::path pinball = source_replays_dir() / "pinball.scene";
+        fmt::print("== lecture pinball example {}\n", pinball.string());
+        auto parsed = read_scene_log(pinball);
+        if (auto* d = std::get_if<Diagnostic>(&parsed)) {
+            fmt::print(stderr, "{}\n", d->str());
+            failed = true;
+            summary.push_back("pinball     unreadable");
+        } else {
+            const Scene& scene = std::get<Scene>(parsed);
+            std::string line = "pinball    ";
+            CheckOptions quiet;
+            quiet.keep_events = false;
+            for (KernelId k : k_all_kernels) {
+                const CheckedRun run = run_checked(scene, k, scene.frames, scene.checks, quiet);
+                const bool ok = !run.failure && !run.error;
+                fmt::print("{:15} {}\n", kernel_name(k),
+                           ok ? "every check held"
+                              : run.failure ? run.failure->str() : run.error->message());
+                line += fmt::format(" {}={}", kernel_name(k), ok ? "ok" : "broken");
+                // The lecture kernels are expected to break; the robust and exact kernels may not.
+                if (!ok && (k == KernelId::robust || k == KernelId::exact)) failed = true;
+            }
+            summary.push_back(line);
+        }
+
+        // 3. The property suite, if this build has it.
+        const std::string props = RICOCHET_PROPERTIES_EXE;
+        if (opt->no_properties) {
+            summary.push_back("properties  skipped (--no-properties)");
+        } else if (props.empty() || !std::filesystem::exists(props)) {
+            summary.push_back("properties  not built (build target ricochet_properties)");
+        } else {
+            fmt::print("== properties {}\n", props);
+            int rc = 0;
+            const double t = timed([&] { rc = run_program({props}); });
+            failed = failed || rc != 0;
+            summary.push_back(fmt::format("properties  {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
+        }
+
+        // 4. A short fuzz campaign through `ricochet fuzz`, if the targets are built.
+        if (opt->fuzz_time == 0) {
+            summary.push_back("fuzz        skipped (--fuzz-time 0)");
+        } else if (!any_fuzz_target_built()) {
+            summary.push_back("fuzz        not built (configure with clang-14 and RICOCHET_FUZZ=ON)");
+        } else {
+            fmt::print("== fuzz for {} s\n", opt->fuzz_time);
+            int rc = 0;
+            const double t = timed([&] { rc = run_program({self_exe(), "fuzz", "--time", std::to_string(opt->fuzz_time)}); });
+            failed = failed || rc != 0;
+            summary.push_back(fmt::format("fuzz        {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
+        }
+
+        fmt::print("== summary\n");
+        for (const auto& s : summary) fmt::print("{}\n", s);
+        fmt::print("{}\n", failed ? "check FAILED" : "check passed");
+        throw Exit{failed ? 1 : 0};
+    });
+}
+
+}  // namespace ricochet::cli

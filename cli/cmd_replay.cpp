@@ -1,0 +1,27 @@
+// `ricochet replay [PATH...] [--hashes]`: every log's checks and expect lines; exit 0 all passed, 1 some
+// failed, 2 some log could not be read.
+#include <filesystem>
+
+#include "commands.hpp"
+
+namespace ricochet::cli {
+
+void register_replay(CLI::App& app) {
+    struct Options {
+        std::vector<std::string> paths;
+        bool hashes = false;
+    };
+    auto opt = std::make_shared<Options>();
+    CLI::App* sub = app.add_subcommand("replay", "replay logs (default replays/; folders: every *.scene under them)");
+    sub->add_option("PATH", opt->paths, "logs or folders");
+    sub->add_flag("--hashes", opt->hashes, "print 'HASH PATH' per log (for comparing builds) instead");
+    sub->callback([opt] {
+        std::vector<std::string> paths = opt->paths;
+        if (paths.empty())
+            paths.push_back(std::filesystem::exists("replays") ? std::string("replays") : source_replays_dir().string());
+        const ReplaySummary s = replay_paths(paths, opt->hashes);
+        throw Exit{s.bad_input ? 2 : s.failed > 0 ? 1 : 0};
+    });
+}
+
+}  // namespace ricochet::cli

@@ -1,0 +1,50 @@
+// The `ricochet` command's subcommands: each file registers one on the app.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "ricochet/scene.hpp"
+
+namespace ricochet::cli {
+
+/// Thrown by a subcommand's callback to end the program with code (after flushing output).
+struct Exit {
+    int code = 0;
+};
+
+/// `ricochet run LOG [--kernel K] [--frames N]`.
+void register_run(CLI::App& app);
+/// `ricochet record LOG`.
+void register_record(CLI::App& app);
+/// `ricochet replay [PATH...] [--hashes]`.
+void register_replay(CLI::App& app);
+/// `ricochet render LOG -o FILE.svg [--frames A:B]`.
+void register_render(CLI::App& app);
+/// `ricochet check`.
+void register_check(CLI::App& app);
+/// `ricochet bench` (bench/ owns it).
+void register_bench(CLI::App& app);
+/// `ricochet fuzz` (fuzz/ owns it).
+void register_fuzz(CLI::App& app);
+
+/// Reads a log, or prints its diagnostic on stderr and throws Exit{2}.
+Scene load_scene_or_exit(const std::filesystem::path& path);
+/// The kernel called name, or a diagnostic on stderr and Exit{2}.
+KernelId kernel_or_exit(const std::string& name);
+/// The folder of the source tree's corpus (replays/ under the source dir baked in at configure time).
+std::filesystem::path source_replays_dir();
+/// Outcome of replaying some logs (counts, and whether a log could not be read).
+struct ReplaySummary {
+    int passed = 0;
+    int failed = 0;
+    bool bad_input = false;
+};
+/// Replays every log under paths (folders recursively, *.scene), one line per log on stdout, then
+/// "N passed, N failed". With hashes_only, prints "HASH PATH" per log instead (and no summary).
+ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only);
+
+}  // namespace ricochet::cli

@@ -1,0 +1,82 @@
+// Helpers shared by the subcommands: loading logs, kernels, the corpus location, replaying.
+#include <algorithm>
+#include <chrono>
+#include <system_error>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "ricochet/checks.hpp"
+#include "ricochet/hash.hpp"
+#include "ricochet/scene_log.hpp"
+
+namespace ricochet::cli {
+
+Scene load_scene_or_exit(const std::filesystem::path& path) {
+    auto result = read_scene_log(path);
+    if (auto* d = std::get_if<Diagnostic>(&result)) {
+        fmt::print(stderr, "{}\n", d->str());
+        throw Exit{2};
+    }
+    return std::get<Scene>(std::move(result));
+}
+
+KernelId kernel_or_exit(const std::string& name) {
+    const auto k = parse_kernel(name);
+    if (!k) {
+        fmt::print(stderr, "ricochet: error: unknown kernel '{}' (lecture-float, lecture-double, robust, exact)\n", name);
+        throw Exit{2};
+    }
+    return *k;
+}
+
+std::filesystem::path source_replays_dir() { return std::filesystem::path(RICOCHET_SOURCE_DIR) / "replays"; }
+
+ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only) {
+    ReplaySummary s;
+    std::vector<std::filesystem::path> logs;
+    for (const std::string& p : paths) {
+        std::error_code ec;
+        if (std::filesystem::is_directory(p, ec)) {
+            std::vector<std::filesystem::path> found;
+            for (auto it = std::filesystem::recursive_directory_iterator(p, ec);
+                 !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
+                if (it->is_regular_file() && it->path().extension() == ".scene") found.push_back(it->path());
+            if (ec) {
+                fmt::print(stderr, "{}:1:1: error: cannot list the folder: {}\n", p, ec.message());
+                s.bad_input = true;
+            }
+            std::sort(found.begin(), found.end());
+            logs.insert(logs.end(), found.begin(), found.end());
+        } else if (std::filesystem::exists(p, ec)) {
+            logs.emplace_back(p);
+        } else {
+            fmt::print(stderr, "{}:1:1: error: no such file or folder\n", p);
+            s.bad_input = true;
+            ++s.failed;
+        }
+    }
+    for (const auto& log : logs) {
+        auto parsed = read_scene_log(log);
+        if (auto* d = std::get_if<Diagnostic>(&parsed)) {
+            fmt::print(stderr, "{}\n", d->str());
+            if (!hashes_only) fmt::print("FAIL {}: unreadable log\n", log.string());
+            s.bad_input = true;
+            ++s.failed;
+            continue;
+        }
+        const Scene& scene = std::get<Scene>(parsed);
+        const ReplayResult r = replay_scene(scene);
+        if (hashes_only)
+            fmt::print("{} {}\n", format_hash(r.run.hash), log.string());
+        else
+            fmt::print("{} {}: {}\n", r.passed ? "ok  " : "FAIL", log.string(), r.message);
+        (r.passed ? s.passed : s.failed) += 1;
+    }
+    if (!hashes_only) fmt::print("{} passed, {} failed\n", s.passed, s.failed);
+    std::fflush(stdout);
+    return s;
+}
+
+}  // namespace ricochet::cli
