@@ -1,0 +1,100 @@
+// Chipmunk 7 through its own API: cpShapeSegmentQuery of the leg against a radius-0 segment shape on a
+// static body, cpShapePointQuery for a point against a circle, cpShapesCollide for two circles,
+// cpBBContainsVect / cpBBIntersects for rectangles. Chipmunk works in double (cpFloat).
+#include <chipmunk/chipmunk.h>
+
+#include "methods.hpp"
+
+namespace ricochet::bench {
+namespace {
+
+cpVect to_cp(Vec2 p) { return cpv(p.x, p.y); }
+
+class ChipmunkMethod final : public Method {
+public:
+    ChipmunkMethod() : body_(cpBodyNewStatic()) {}
+    ~ChipmunkMethod() override {
+        release();
+        cpBodyFree(body_);
+    }
+    ChipmunkMethod(const ChipmunkMethod&) = delete;
+    ChipmunkMethod& operator=(const ChipmunkMethod&) = delete;
+
+    std::string name() const override { return "chipmunk"; }
+
+    SweepAnswer sweep_one(const SweepQuery& q) const override {
+        cpShape* seg = cpSegmentShapeNew(body_, to_cp(q.wall.p0), to_cp(q.wall.p1), 0.0);
+        cpShapeCacheBB(seg);
+        const SweepAnswer a = query(seg, q);
+        cpShapeFree(seg);
+        return a;
+    }
+    void prepare(std::span<const SweepQuery> qs) const override {
+        // Shapes live in a game's space before it queries them: made here, outside the timed loop.
+        release();
+        prepared_.resize(qs.size());
+        for (std::size_t i = 0; i < qs.size(); ++i) {
+            prepared_[i] = cpSegmentShapeNew(body_, to_cp(qs[i].wall.p0), to_cp(qs[i].wall.p1), 0.0);
+            cpShapeCacheBB(prepared_[i]);
+        }
+    }
+    void release() const override {
+        for (cpShape* s : prepared_) cpShapeFree(s);
+        prepared_.clear();
+    }
+    void sweep_all(std::span<const SweepQuery> qs, std::span<SweepAnswer> out) const override {
+        if (prepared_.size() != qs.size()) prepare(qs);
+        for (std::size_t i = 0; i < qs.size(); ++i) out[i] = query(prepared_[i], qs[i]);
+    }
+    bool has_static(StaticKind) const override { return true; }
+    void static_all(std::span<const StaticQuery> qs, std::span<unsigned char> out) const override {
+        for (std::size_t i = 0; i < qs.size(); ++i) {
+            const StaticQuery& q = qs[i];
+            bool r = false;
+            switch (q.kind) {
+                case StaticKind::point_circle: {
+                    cpShape* c = cpCircleShapeNew(body_, q.a.r, to_cp(q.a.c));
+                    cpShapeCacheBB(c);
+                    cpPointQueryInfo info;
+                    // The signed distance from the circle's surface: ≤ 0 on or inside.
+                    r = cpShapePointQuery(c, to_cp(q.p), &info) <= 0.0;
+                    cpShapeFree(c);
+                    break;
+                }
+                case StaticKind::circle_circle: {
+                    cpShape* a = cpCircleShapeNew(body_, q.a.r, to_cp(q.a.c));
+                    cpShape* b = cpCircleShapeNew(body_, q.b.r, to_cp(q.b.c));
+                    cpShapeCacheBB(a);
+                    cpShapeCacheBB(b);
+                    r = cpShapesCollide(a, b).count > 0;
+                    cpShapeFree(a);
+                    cpShapeFree(b);
+                    break;
+                }
+                case StaticKind::point_rect:
+                    r = cpBBContainsVect(cpBBNew(q.ra.left, q.ra.bottom, q.ra.right, q.ra.top), to_cp(q.p));
+                    break;
+                case StaticKind::rect_rect:
+                    r = cpBBIntersects(cpBBNew(q.ra.left, q.ra.bottom, q.ra.right, q.ra.top),
+                                       cpBBNew(q.rb.left, q.rb.bottom, q.rb.right, q.rb.top));
+                    break;
+            }
+            out[i] = r;
+        }
+    }
+
+private:
+    static SweepAnswer query(const cpShape* seg, const SweepQuery& q) {
+        cpSegmentQueryInfo info;
+        if (!cpShapeSegmentQuery(seg, to_cp(q.bs), to_cp(q.bs + q.v), 0.0, &info)) return {};
+        return {true, true, info.alpha, {info.point.x, info.point.y}};
+    }
+    cpBody* body_;
+    mutable std::vector<cpShape*> prepared_;
+};
+
+}  // namespace
+
+std::unique_ptr<Method> make_chipmunk() { return std::make_unique<ChipmunkMethod>(); }
+
+}  // namespace ricochet::bench

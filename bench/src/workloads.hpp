@@ -1,0 +1,73 @@
+// Workload generators: fixed-seed query sets, the same for every method.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ricochet/kernel.hpp"
+
+namespace ricochet::bench {
+
+/// One sweep query: the leg Bs → Be = fl(Bs + v) against one wall. Generators guarantee fl(bs + v) == be.
+struct SweepQuery {
+    Vec2 bs;
+    Vec2 v;
+    Wall wall;
+};
+
+/// The four static tests.
+enum class StaticKind : std::uint8_t { point_circle, circle_circle, point_rect, rect_rect };
+
+/// One static query; which fields matter depends on kind.
+struct StaticQuery {
+    StaticKind kind;
+    Vec2 p;
+    Circle a, b;
+    Rect ra, rb;
+};
+
+/// A named sweep workload.
+struct SweepWorkload {
+    std::string name;
+    std::vector<SweepQuery> queries;
+};
+
+/// A named static workload.
+struct StaticWorkload {
+    std::string name;
+    StaticKind kind;
+    std::vector<StaticQuery> queries;
+};
+
+/// A deterministic generator: splitmix64, so that sequences are the same on every platform.
+class Rng {
+public:
+    explicit Rng(std::uint64_t seed) : state_(seed) {}
+    /// Next 64 random bits.
+    std::uint64_t next();
+    /// Uniform double in [0, 1), 53 random bits.
+    double unit() { return static_cast<double>(next() >> 11) * 0x1p-53; }
+    /// Uniform double in [lo, hi).
+    double uniform(double lo, double hi) { return lo + (hi - lo) * unit(); }
+    /// Uniform integer in [lo, hi].
+    int integer(int lo, int hi) { return lo + static_cast<int>(next() % static_cast<std::uint64_t>(hi - lo + 1)); }
+
+private:
+    std::uint64_t state_;
+};
+
+/// The sweep workloads, n queries each, from seed.
+std::vector<SweepWorkload> sweep_workloads(std::size_t n, std::uint64_t seed);
+/// The static workloads (boundary-heavy), n queries each, from seed.
+std::vector<StaticWorkload> static_workloads(std::size_t n, std::uint64_t seed);
+
+/// Uniform sweeps in a unit box moved by offset (stability sweep over magnitude).
+SweepWorkload offset_workload(double offset, std::size_t n, std::uint64_t seed);
+/// Grazing sweeps whose leg makes an angle of about angle radians with the wall (stability sweep over angle).
+SweepWorkload angle_workload(double angle, std::size_t n, std::uint64_t seed);
+
+/// A query from a start and an end point: v = Be − Bs; false if fl(Bs + v) ≠ Be (the caller retries).
+bool make_query(Vec2 bs, Vec2 be, const Wall& w, SweepQuery& out);
+
+}  // namespace ricochet::bench

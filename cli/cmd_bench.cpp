@@ -1,0 +1,39 @@
+// `ricochet bench`: run time against error (the main table), `bench stability`, `bench frames`.
+// The heavy lifting is in bench/ (the ricochet_bench library); this file only wires the options.
+#include "commands.hpp"
+
+#include <memory>
+
+#include "ricochet_bench/bench.hpp"
+
+namespace ricochet::cli {
+
+/// Registers the `bench` command (and its `stability` and `frames` subcommands) on app.
+void register_bench(CLI::App& app) {
+    auto opt = std::make_shared<ricochet::bench::Options>();
+    auto frames = std::make_shared<long>(20'000'000);
+    CLI::App* cmd = app.add_subcommand("bench", "Benchmark run time against error: every kernel and peer on the same workloads");
+    cmd->add_flag("--quick", opt->quick, "Smaller query sets (under 2 minutes)");
+    cmd->add_flag("--smoke", opt->smoke, "Tiny sets, one repetition: a correctness check (exit 1 if robust is ever wrong)");
+    cmd->add_option("--out", opt->out_dir, "Folder for the CSV and the charts")->capture_default_str();
+    cmd->add_option("--seed", opt->seed, "Seed of every workload")->capture_default_str();
+    cmd->add_flag("!--no-chart", opt->chart, "Do not run gnuplot");
+
+    CLI::App* stab = cmd->add_subcommand("stability", "Error and tunnelling against coordinate magnitude and angle to the wall");
+    stab->add_flag("--quick", opt->quick, "Smaller query sets");
+    stab->add_flag("--smoke", opt->smoke, "Tiny sets");
+    CLI::App* fr = cmd->add_subcommand("frames", "One ball in a closed box, robust kernel: ball-frames per second");
+    fr->add_option("--frames", *frames, "Frames per run")->capture_default_str();
+    fr->add_flag("--smoke", opt->smoke, "One run");
+
+    cmd->callback([cmd, stab, fr, opt, frames] {
+        int rc = 0;
+        if (stab->parsed()) rc = ricochet::bench::run_stability(*opt);
+        else if (fr->parsed()) rc = ricochet::bench::run_frames(*opt, *frames);
+        else rc = ricochet::bench::run_bench(*opt);
+        (void)cmd;
+        if (rc != 0) throw Exit{rc};
+    });
+}
+
+}  // namespace ricochet::cli

@@ -1,0 +1,179 @@
+// Batched robust sweep decisions (batch.hpp). Eight lanes at a time (AVX-512F where the CPU has it):
+// each lane evaluates the four orientation determinants of the robust kernel's leg test with exactly
+// the operations of exact::orient's filter (so the certified signs are the same bits), and any lane
+// whose needed signs are not certified is decided again, alone, by the exact predicates. Without
+// AVX-512F every pair goes through the exact predicates one at a time (their own filter first), which
+// gives the same decisions at the scalar robust cost.
+#include "ricochet/batch.hpp"
+
+#include <algorithm>
+#include <cstdint>
+
+#include "ricochet/predicates.hpp"
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define RICOCHET_BATCH_AVX512 1
+#endif
+
+namespace ricochet {
+namespace {
+
+/// The robust kernel's leg test (kernel_robust.cpp, test_leg) on the exact predicates: the fallback.
+/// Kept out of line: it is rare, and inlining it into the SIMD loop only bloats it.
+[[gnu::noinline]] Miss exact_leg(Vec2 q, Vec2 v, const Wall& w) {
+    const Vec2 b = q + v;
+    // Degenerate: a zero-length wall has no normal, a zero-length leg no motion.
+    if (w.p0 == w.p1 || q == b) return Miss::degenerate;
+    const int sq = exact::side(q, w);
+    const int sb = exact::side(b, w);
+    if (sq < 0 && sb < 0) return Miss::both_inside;
+    if (sq > 0 && sb > 0) return Miss::both_outside;
+    if (sq == 0 && sb == 0) return Miss::parallel;
+    if (sq == 0) return Miss::leaving;
+    // X before P0 iff orient(q, b, P0) = −sq; past P1 iff orient(q, b, P1) = sq.
+    if (exact::orient(q, b, w.p0) == -sq) return Miss::before_p0;
+    if (exact::orient(q, b, w.p1) == sq) return Miss::past_p1;
+    return Miss::none;
+}
+
+#ifdef RICOCHET_BATCH_AVX512
+// The filter constants of predicates.cpp, restated (they must stay equal to those):
+// Shewchuk's bound for a 2×2 determinant of differences, |det − fl(det)| ≤ k_ccw·(|l| + |r|).
+constexpr double k_eps = 0x1p-53;
+constexpr double k_ccw = (3.0 + 16.0 * k_eps) * k_eps;
+// Below this magnitude a product may have underflowed: the filter declines.
+constexpr double k_tiny = 0x1p-900;
+
+/// The filtered sign of l − r in eight lanes: pos/neg masks of the rounded value, and certain where
+/// |l − r| > k_ccw·(|l| + |r|) and |l| + |r| ≥ k_tiny, exactly as exact::orient's filter decides
+/// (ordered compares: a NaN lane is never certain).
+struct Signs {
+    __mmask8 pos, neg, certain;
+};
+
+[[gnu::target("avx512f"), gnu::always_inline]] inline Signs filtered(__m512d l, __m512d r) {
+    const __m512d value = _mm512_sub_pd(l, r);
+    const __m512d sum = _mm512_add_pd(_mm512_abs_pd(l), _mm512_abs_pd(r));
+    const __m512d bound = _mm512_mul_pd(_mm512_set1_pd(k_ccw), sum);
+    const __mmask8 certain = _mm512_cmp_pd_mask(_mm512_abs_pd(value), bound, _CMP_GT_OQ) &
+                             _mm512_cmp_pd_mask(sum, _mm512_set1_pd(k_tiny), _CMP_GE_OQ);
+    const __m512d zero = _mm512_setzero_pd();
+    return {_mm512_cmp_pd_mask(value, zero, _CMP_GT_OQ), _mm512_cmp_pd_mask(value, zero, _CMP_LT_OQ), certain};
+}
+
+/// Eight lanes of the leg test; writes eight Miss codes to out and returns the mask of lanes the filter
+/// left undecided (their codes are garbage until the caller decides them exactly).
+[[gnu::target("avx512f"), gnu::always_inline]] inline __mmask8 lanes(__m512d qx, __m512d qy, __m512d vx, __m512d vy,
+                                                                     __m512d x0, __m512d y0, __m512d x1, __m512d y1,
+                                                                     Miss* out) {
+    // Be = Bs + v, as every kernel computes the leg's end.
+    const __m512d bx = _mm512_add_pd(qx, vx), by = _mm512_add_pd(qy, vy);
+    // The differences exact::orient's filter forms, (a − c) and (b − c), shared between determinants.
+    const __m512d dqx = _mm512_sub_pd(qx, x0), dqy = _mm512_sub_pd(qy, y0);  // q − P0
+    const __m512d dbx = _mm512_sub_pd(bx, x0), dby = _mm512_sub_pd(by, y0);  // b − P0
+    const __m512d eqx = _mm512_sub_pd(qx, x1), eqy = _mm512_sub_pd(qy, y1);  // q − P1
+    const __m512d ebx = _mm512_sub_pd(bx, x1), eby = _mm512_sub_pd(by, y1);  // b − P1
+    // orient(P0, P1, q) = (P0 − q) × (P1 − q) = (q − P0) × (q − P1); side(q) = −orient(P0, P1, q).
+    const Signs oq = filtered(_mm512_mul_pd(dqx, eqy), _mm512_mul_pd(dqy, eqx));
+    const Signs ob = filtered(_mm512_mul_pd(dbx, eby), _mm512_mul_pd(dby, ebx));
+    // orient(q, b, P0) = (q − P0) × (b − P0); orient(q, b, P1) = (q − P1) × (b − P1).
+    const Signs o0 = filtered(_mm512_mul_pd(dqx, dby), _mm512_mul_pd(dqy, dbx));
+    const Signs o1 = filtered(_mm512_mul_pd(eqx, eby), _mm512_mul_pd(eqy, ebx));
+    // side = −orient: Inside (sq < 0) where orient > 0, Outside where orient < 0.
+    const __mmask8 inside = oq.pos & ob.pos, outside = oq.neg & ob.neg;
+    const __mmask8 zq = static_cast<__mmask8>(~(oq.pos | oq.neg)), zb = static_cast<__mmask8>(~(ob.pos | ob.neg));
+    // before P0 iff sign(orient(q, b, P0)) = −sq = sign(orient(P0, P1, q)); past P1 iff sign(orient(q, b, P1)) = sq.
+    const __mmask8 before = (o0.pos & oq.pos) | (o0.neg & oq.neg);
+    const __mmask8 past = (o1.pos & oq.neg) | (o1.neg & oq.pos);
+    // Lowest priority first, so that each later blend overrides: test_leg's order reversed.
+    __m512i code = _mm512_set1_epi64(static_cast<long long>(Miss::none));
+    code = _mm512_mask_blend_epi64(past, code, _mm512_set1_epi64(static_cast<long long>(Miss::past_p1)));
+    code = _mm512_mask_blend_epi64(before, code, _mm512_set1_epi64(static_cast<long long>(Miss::before_p0)));
+    code = _mm512_mask_blend_epi64(zq, code, _mm512_set1_epi64(static_cast<long long>(Miss::leaving)));
+    code = _mm512_mask_blend_epi64(zq & zb, code, _mm512_set1_epi64(static_cast<long long>(Miss::parallel)));
+    code = _mm512_mask_blend_epi64(outside, code, _mm512_set1_epi64(static_cast<long long>(Miss::both_outside)));
+    code = _mm512_mask_blend_epi64(inside, code, _mm512_set1_epi64(static_cast<long long>(Miss::both_inside)));
+    // Degenerate: a zero-length leg, b = q.
+    const __mmask8 still = _mm512_cmp_pd_mask(bx, qx, _CMP_EQ_OQ) & _mm512_cmp_pd_mask(by, qy, _CMP_EQ_OQ);
+    code = _mm512_mask_blend_epi64(still, code, _mm512_set1_epi64(static_cast<long long>(Miss::degenerate)));
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(out), _mm512_cvtepi64_epi8(code));
+    // The same certified side at both ends decides alone; otherwise all four signs are needed.
+    const __mmask8 decided = oq.certain & ob.certain & (inside | outside | (o0.certain & o1.certain));
+    return static_cast<__mmask8>(~(decided | still));
+}
+
+[[gnu::target("avx512f")]] std::size_t many_balls_avx512(const double* x, const double* y, const double* vx,
+                                                         const double* vy, std::size_t n, const Wall& w, Miss* out) {
+    const __m512d x0 = _mm512_set1_pd(w.p0.x), y0 = _mm512_set1_pd(w.p0.y);
+    const __m512d x1 = _mm512_set1_pd(w.p1.x), y1 = _mm512_set1_pd(w.p1.y);
+    std::size_t slow = 0, i = 0;
+    for (; i + 8 <= n; i += 8) {
+        __mmask8 undecided = lanes(_mm512_loadu_pd(x + i), _mm512_loadu_pd(y + i), _mm512_loadu_pd(vx + i),
+                                   _mm512_loadu_pd(vy + i), x0, y0, x1, y1, out + i);
+        for (; undecided != 0; undecided &= static_cast<__mmask8>(undecided - 1), ++slow) {
+            const std::size_t j = i + static_cast<std::size_t>(__builtin_ctz(undecided));
+            out[j] = exact_leg({x[j], y[j]}, {vx[j], vy[j]}, w);
+        }
+    }
+    for (; i < n; ++i, ++slow) out[i] = exact_leg({x[i], y[i]}, {vx[i], vy[i]}, w);
+    return slow;
+}
+
+[[gnu::target("avx512f")]] std::size_t many_walls_avx512(Vec2 bs, Vec2 v, const double* x0, const double* y0,
+                                                         const double* x1, const double* y1, std::size_t n, Miss* out) {
+    const __m512d qx = _mm512_set1_pd(bs.x), qy = _mm512_set1_pd(bs.y);
+    const __m512d vx = _mm512_set1_pd(v.x), vy = _mm512_set1_pd(v.y);
+    const auto wall = [&](std::size_t k) { return Wall{{x0[k], y0[k]}, {x1[k], y1[k]}}; };
+    std::size_t slow = 0, i = 0;
+    for (; i + 8 <= n; i += 8) {
+        const __m512d ax0 = _mm512_loadu_pd(x0 + i), ay0 = _mm512_loadu_pd(y0 + i);
+        const __m512d ax1 = _mm512_loadu_pd(x1 + i), ay1 = _mm512_loadu_pd(y1 + i);
+        __mmask8 undecided = lanes(qx, qy, vx, vy, ax0, ay0, ax1, ay1, out + i);
+        // Degenerate: a zero-length wall has no normal; test_leg answers so before anything else.
+        const __mmask8 point = _mm512_cmp_pd_mask(ax0, ax1, _CMP_EQ_OQ) & _mm512_cmp_pd_mask(ay0, ay1, _CMP_EQ_OQ);
+        for (__mmask8 p = point; p != 0; p &= static_cast<__mmask8>(p - 1))
+            out[i + static_cast<std::size_t>(__builtin_ctz(p))] = Miss::degenerate;
+        undecided &= static_cast<__mmask8>(~point);
+        for (; undecided != 0; undecided &= static_cast<__mmask8>(undecided - 1), ++slow) {
+            const std::size_t j = i + static_cast<std::size_t>(__builtin_ctz(undecided));
+            out[j] = exact_leg(bs, v, wall(j));
+        }
+    }
+    for (; i < n; ++i, ++slow) out[i] = exact_leg(bs, v, wall(i));
+    return slow;
+}
+
+bool have_avx512() {
+    static const bool yes = __builtin_cpu_supports("avx512f");
+    return yes;
+}
+#endif
+
+}  // namespace
+
+std::size_t sweep_decisions(const BallsSoA& balls, const Wall& w, std::span<Miss> out) {
+    const std::size_t n = balls.x.size();
+    // Degenerate: a zero-length wall has no normal and is never hit.
+    if (w.p0 == w.p1) {
+        std::fill_n(out.begin(), n, Miss::degenerate);
+        return 0;
+    }
+#ifdef RICOCHET_BATCH_AVX512
+    if (have_avx512()) return many_balls_avx512(balls.x.data(), balls.y.data(), balls.vx.data(), balls.vy.data(), n, w, out.data());
+#endif
+    for (std::size_t i = 0; i < n; ++i) out[i] = exact_leg({balls.x[i], balls.y[i]}, {balls.vx[i], balls.vy[i]}, w);
+    return n;
+}
+
+std::size_t sweep_decisions(Vec2 bs, Vec2 v, const WallsSoA& walls, std::span<Miss> out) {
+    const std::size_t n = walls.x0.size();
+#ifdef RICOCHET_BATCH_AVX512
+    if (have_avx512())
+        return many_walls_avx512(bs, v, walls.x0.data(), walls.y0.data(), walls.x1.data(), walls.y1.data(), n, out.data());
+#endif
+    for (std::size_t i = 0; i < n; ++i) out[i] = exact_leg(bs, v, {{walls.x0[i], walls.y0[i]}, {walls.x1[i], walls.y1[i]}});
+    return n;
+}
+
+}  // namespace ricochet
