@@ -1,0 +1,49 @@
+#!/bin/sh
+# One malformed-log kind per call: writes the log, runs `ricochet run` and `ricochet record` on it and
+# checks the exact diagnostic on stderr, exit status 2, and that record left the file unchanged.
+#   malformed.sh RICOCHET KIND
+set -u
+ricochet=$1
+kind=$2
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+f=$dir/bad.scene
+h='ricochet 1'
+case "$kind" in
+  unknown-directive) printf '%s\nwal 0 0 1 1\n' "$h" >"$f"; want='2:1: error: unknown directive '\''wal'\''' ;;
+  missing-token)     printf '%s\nwall 0 0 1\n' "$h" >"$f"; want='2:11: error: '\''wall'\'' needs X0 Y0 X1 Y1: missing Y1' ;;
+  extra-token)       printf '%s\nball 0 0 1 1 7\n' "$h" >"$f"; want='2:14: error: unexpected '\''7'\'' after '\''ball'\'' (X Y VX VY expected)' ;;
+  bad-number)        printf '%s\nball 0 0x 1 1\n' "$h" >"$f"; want='2:8: error: bad Y: '\''0x'\'' is not a number' ;;
+  nan)               printf '%s\nball nan 0 1 1\n' "$h" >"$f"; want='2:6: error: X nan is outside the accepted range (finite, magnitude at most 2^256)' ;;
+  inf)               printf '%s\ncircle 0 0 -inf\n' "$h" >"$f"; want='2:12: error: R -inf is outside the accepted range (finite, magnitude at most 2^256)' ;;
+  out-of-range)      printf '%s\nwall 0 0 1e78 0\n' "$h" >"$f"; want='2:10: error: X1 1e78 is outside the accepted range (finite, magnitude at most 2^256)' ;;
+  overflow)          printf '%s\nwall 0 0 1e400 0\n' "$h" >"$f"; want='2:10: error: bad X1: '\''1e400'\'' is out of the range of a double' ;;
+  negative-radius)   printf '%s\ncircle 0 0 -1\n' "$h" >"$f"; want='2:12: error: negative radius -1' ;;
+  left-gt-right)     printf '%s\nrect 2 0 1 1\n' "$h" >"$f"; want='2:6: error: left 2 is greater than right 1' ;;
+  bottom-gt-top)     printf '%s\nrect 0 2 1 1\n' "$h" >"$f"; want='2:8: error: bottom 2 is greater than top 1' ;;
+  negative-frames)   printf '%s\nframes -3\n' "$h" >"$f"; want='2:8: error: negative frame count -3' ;;
+  absurd-frames)     printf '%s\nframes 99999999999\n' "$h" >"$f"; want='2:8: error: frame count 99999999999 is over the limit of 10000000' ;;
+  unknown-kernel)    printf '%s\nkernel fast\n' "$h" >"$f"; want='2:8: error: unknown kernel '\''fast'\'' (lecture-float, lecture-double, robust, exact)' ;;
+  unknown-check)     printf '%s\ncheck speedy\n' "$h" >"$f"; want='2:7: error: unknown check '\''speedy'\'' (no-tunnel, symmetry, boundary, speed, deterministic, oracle)' ;;
+  future-version)    printf 'ricochet 2\n' >"$f"; want='1:10: error: format version 2 is newer than this reader (it reads version 1)' ;;
+  missing-header)    printf 'wall 0 0 1 1\n' >"$f"; want='1:1: error: expected the header '\''ricochet 1'\'' before '\''wall'\''' ;;
+  duplicate-header)  printf '%s\n%s\n' "$h" "$h" >"$f"; want='2:1: error: duplicate header '\''ricochet'\''' ;;
+  empty)             : >"$f"; want='1:1: error: empty log: expected the header '\''ricochet 1'\''' ;;
+  nul-byte)          printf '%s\nwall 0 0\0001 1\n' "$h" >"$f"; want='2:9: error: NUL byte in the log' ;;
+  huge-line)         { echo "$h"; printf '# %05000d\n' 0; } >"$f"; want='2:4097: error: line is 5002 bytes long, over the limit of 4096' ;;
+  huge-file)         { echo "$h"; i=0; while [ $i -lt 5000 ]; do printf '# %03990d\n' 0; i=$((i+1)); done; } >"$f"
+                     want='1:1: error: the file is over the limit of 16777216 bytes' ;;
+  bad-hash)          printf '%s\nexpect hash 12345g7890abcdef\n' "$h" >"$f"; want='2:13: error: bad hash '\''12345g7890abcdef'\'': expected exactly 16 hex digits' ;;
+  expect-bad-ball)   printf '%s\nframes 1\nball 0 0 1 1\nexpect state 1 3 0 0 1 1\n' "$h" >"$f"; want='4:16: error: expect state for ball 3 but the log has 1 balls' ;;
+  duplicate-check)   printf '%s\ncheck speed\ncheck speed\n' "$h" >"$f"; want='3:7: error: duplicate check '\''speed'\''' ;;
+  *) echo "unknown kind $kind" >&2; exit 1 ;;
+esac
+before=$(cksum <"$f")
+for cmd in run record; do
+  err=$("$ricochet" "$cmd" "$f" 2>&1 >/dev/null)
+  rc=$?
+  if [ "$rc" != 2 ]; then echo "FAIL $kind ($cmd): exit $rc, expected 2; stderr: $err"; exit 1; fi
+  if [ "$err" != "$f:$want" ]; then printf 'FAIL %s (%s): stderr\n  got:  %s\n  want: %s\n' "$kind" "$cmd" "$err" "$f:$want"; exit 1; fi
+done
+if [ "$(cksum <"$f")" != "$before" ]; then echo "FAIL $kind: record changed the file"; exit 1; fi
+echo "ok $kind: $want"
