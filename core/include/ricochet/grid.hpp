@@ -1,0 +1,116 @@
+// Broad phase for static geometry: a uniform grid over the walls, walked along each leg (WallGrid,
+// the default), and a point index over the static circles and rectangles (StaticIndex).
+//
+// Conservative by construction. Let G(p) = (p − o)·inv be the grid coordinate of a real point p
+// (o, inv doubles; the map is exact over the reals) and cell(p) = ⌊G(p)⌋. A wall is registered in,
+// and a leg a → b visits, every cell that holds a real point within m cells (∞-norm) of the
+// computed segment G̃(a) → G̃(b), where G̃ is G rounded:
+//   |G̃(a) − G(a)| ≤ 2.01ε·|G(a)| per coordinate (a subtraction and a product, each rounded),
+//   the per-column y range of the segment is off by ≤ 12ε·max|G̃| (a division, a product, a sum),
+// and m = k_grid_margin·(1 + (|a|∞ + |b|∞ + |o|∞)·inv) ≥ 2^-40·max|G| ≫ 14ε·max|G| (ε = 2^-53).
+// So every real point S on the real segment a → b lies within m of the computed segment and its cell
+// is visited; the same holds for every point of a wall, so a wall that meets the leg at S (its end
+// points, the hit point and touching included) shares cell(S) with it and is returned.
+// The margin, 2^13 ulps of the largest coordinate, also covers the rounding of the lecture-double
+// kernel's hit points, so that kernel gives the same bits with and without the index except for
+// hits whose t_i is wrong by O(1) (a leg parallel to the wall within an ulp: measure zero, see
+// scale_test). lecture-float rounds at 2^-24: give it GridOptions{.margin = k_float_margin}.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ricochet/kernel.hpp"
+#include "ricochet/shapes.hpp"
+
+namespace ricochet {
+
+/// Default relative margin of the wall grid: 2^-40 of the largest coordinate, in cells.
+inline constexpr double k_grid_margin = 0x1p-40;
+/// A margin that also covers the lecture-float kernel's 2^-24 rounding.
+inline constexpr double k_float_margin = 0x1p-18;
+
+/// How a WallGrid is laid out.
+struct GridOptions {
+    double cell_size = 0.0;         ///< side of a cell; 0 chooses one (about one wall per cell)
+    double margin = k_grid_margin;  ///< relative margin, see the header comment
+    std::size_t max_cells = std::size_t{1} << 24;  ///< cap on nx·ny (memory)
+};
+
+/// A uniform grid over a scene's walls, built once; query walks the cells along a segment.
+/// Thread-safe: query is const and keeps no state.
+class WallGrid final : public WallIndex {
+public:
+    /// Builds the grid over walls (indices refer to this span's order).
+    explicit WallGrid(std::span<const Wall> walls, GridOptions options = {});
+    /// Appends every wall registered in a cell the segment a → b visits, each once (see above).
+    void query(Vec2 a, Vec2 b, std::vector<std::uint32_t>& out) const override;
+    /// Side of a cell.
+    double cell_size() const { return 1.0 / inv_; }
+    /// Cells along x and y.
+    std::uint32_t columns() const { return nx_; }
+    std::uint32_t rows() const { return ny_; }
+    /// Wall references stored in all cells together (a wall crossing k cells counts k times).
+    std::size_t references() const { return items_.size(); }
+
+private:
+    template <class F>
+    void visit(Vec2 a, Vec2 b, F&& f) const;
+
+    std::uint32_t wall_count_ = 0;
+    double ox_ = 0, oy_ = 0, inv_ = 1, margin_ = k_grid_margin, o_mag_ = 0;
+    std::uint32_t nx_ = 0, ny_ = 0;
+    std::vector<std::uint32_t> start_;  // CSR: cell c holds items_[start_[c] .. start_[c + 1])
+    std::vector<std::uint32_t> items_;
+};
+
+/// A bounding-volume tree (AABB tree, median split, 4 walls a leaf) over a scene's walls: the
+/// alternative to WallGrid, measured against it by `ricochet bench scale`. Same conservative margin.
+class WallBvh final : public WallIndex {
+public:
+    /// Builds the tree over walls.
+    explicit WallBvh(std::span<const Wall> walls, double margin = k_grid_margin);
+    /// Appends every wall in a leaf whose box (inflated) the segment a → b may touch.
+    void query(Vec2 a, Vec2 b, std::vector<std::uint32_t>& out) const override;
+    /// Nodes in the tree.
+    std::size_t nodes() const { return nodes_.size(); }
+
+private:
+    struct Node {
+        double lo_x, lo_y, hi_x, hi_y;
+        std::uint32_t first;  // leaf: first item; inner: index of the left child (right = first + 1)
+        std::uint32_t count;  // leaf: item count; inner: 0
+    };
+    void build(std::span<const Wall> walls, std::uint32_t slot, std::uint32_t first, std::uint32_t count);
+    std::vector<Node> nodes_;
+    std::vector<std::uint32_t> items_;
+    double margin_;
+};
+
+/// Which static shapes may hold a point: a uniform grid over the circles' and rectangles' boxes,
+/// inflated by 2^-18 of their magnitude so that every kernel's test (lecture-float included) is
+/// covered. Lists come back in index order, so overlap events come out as the brute-force loop
+/// makes them.
+class StaticIndex {
+public:
+    /// Builds the index (empty shapes: every query answers nothing at once).
+    StaticIndex(std::span<const Circle> circles, std::span<const Rect> rects);
+    /// The circles and rectangles that may hold p, each in increasing index order.
+    struct Candidates {
+        std::span<const std::uint32_t> circles;
+        std::span<const std::uint32_t> rects;
+    };
+    /// One cell lookup.
+    Candidates query(Vec2 p) const;
+    /// True if there are no static shapes at all (the overlap pass can be skipped).
+    bool empty() const { return empty_; }
+
+private:
+    bool empty_ = true;
+    double ox_ = 0, oy_ = 0, inv_ = 1;
+    std::uint32_t nx_ = 0, ny_ = 0;
+    std::vector<std::uint32_t> circle_start_, circle_items_, rect_start_, rect_items_;
+};
+
+}  // namespace ricochet

@@ -1,0 +1,320 @@
+// The broad phase and the threads change nothing: the same events and run hash with and without the
+// wall grid (and the BVH), and on N threads as on one, for lecture-double and robust, on random
+// mazes, closed boxes, random segment soups and far-from-origin copies, with balls aimed at wall end
+// points and corners. And the index contract itself: every wall that meets a segment is returned.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "ricochet/grid.hpp"
+#include "ricochet/hash.hpp"
+#include "ricochet/parallel.hpp"
+#include "ricochet/predicates.hpp"
+#include "ricochet/world.hpp"
+
+namespace ricochet {
+namespace {
+
+using Rng = std::mt19937_64;
+
+double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+
+/// A maze on an n×n lattice of pitch 1 with a closed border; each inner lattice edge a wall with
+/// probability 0.5; balls at random points and aimed through lattice vertices (wall end points,
+/// corners), some ending exactly on one.
+Scene maze(Rng& rng, int n, int balls, double offset) {
+    Scene s;
+    const auto at = [&](int x, int y) { return Vec2{offset + x, offset + y}; };
+    for (int i = 0; i < n; ++i) {
+        s.walls.push_back({at(i, 0), at(i + 1, 0)});
+        s.walls.push_back({at(n, i), at(n, i + 1)});
+        s.walls.push_back({at(i + 1, n), at(i, n)});
+        s.walls.push_back({at(0, i + 1), at(0, i)});
+    }
+    std::bernoulli_distribution coin(0.5);
+    for (int x = 0; x < n; ++x)
+        for (int y = 1; y < n; ++y) {
+            if (coin(rng)) s.walls.push_back({at(x, y), at(x + 1, y)});
+            if (coin(rng)) s.walls.push_back({at(y, x), at(y, x + 1)});
+        }
+    std::uniform_int_distribution<int> vertex(1, n - 1);
+    for (int b = 0; b < balls; ++b) {
+        Ball ball;
+        switch (b % 3) {
+            case 0:  // anywhere, any direction, up to 1.5 cells a frame
+                ball.pos = {offset + uniform(rng, 0.01, n - 0.01), offset + uniform(rng, 0.01, n - 0.01)};
+                ball.vel = {uniform(rng, -1.5, 1.5), uniform(rng, -1.5, 1.5)};
+                break;
+            case 1: {  // ends its first frame exactly on a lattice vertex (dyadic offsets: exact sums)
+                const Vec2 v = at(vertex(rng), vertex(rng));
+                const Vec2 d{std::ldexp(std::floor(uniform(rng, -64, 64)), -7), std::ldexp(std::floor(uniform(rng, -64, 64)), -7)};
+                ball.pos = v + d;
+                ball.vel = -d;
+                break;
+            }
+            default: {  // passes through a lattice vertex mid-frame
+                const Vec2 v = at(vertex(rng), vertex(rng));
+                const Vec2 d{std::ldexp(std::floor(uniform(rng, -64, 64)), -7), std::ldexp(std::floor(uniform(rng, -64, 64)), -7)};
+                ball.pos = v + d;
+                ball.vel = -2.0 * d;
+                break;
+            }
+        }
+        s.balls.push_back(ball);
+    }
+    return s;
+}
+
+/// A closed convex polygon (k sides, random rotation) around the origin with balls inside, some
+/// aimed at its corners, some at rest.
+Scene closed_box(Rng& rng, int sides, int balls, double scale) {
+    Scene s;
+    const double phase = uniform(rng, 0, 6.283185307179586);
+    std::vector<Vec2> corner;
+    for (int i = 0; i < sides; ++i) {
+        const double a = phase + 6.283185307179586 * i / sides;
+        corner.push_back({scale * std::cos(a), scale * std::sin(a)});
+    }
+    // Counter-clockwise corners: p_i → p_{i+1} has its normal (e_y, −e_x) pointing outward.
+    for (int i = 0; i < sides; ++i) s.walls.push_back({corner[i], corner[(i + 1) % sides]});
+    for (int b = 0; b < balls; ++b) {
+        Ball ball;
+        ball.pos = {uniform(rng, -0.5, 0.5) * scale, uniform(rng, -0.5, 0.5) * scale};
+        if (b % 4 == 1) {
+            ball.vel = 0.7 * (corner[b % sides] - ball.pos);  // through a corner in two frames
+        } else if (b % 4 == 2) {
+            ball.vel = corner[b % sides] - ball.pos;  // to a corner, rounded
+        } else if (b % 8 == 3) {
+            ball.vel = {};  // at rest
+        } else {
+            ball.vel = {uniform(rng, -0.8, 0.8) * scale, uniform(rng, -0.8, 0.8) * scale};
+        }
+        s.balls.push_back(ball);
+    }
+    return s;
+}
+
+/// Random segments of all lengths and directions in a square, with circles and rectangles.
+Scene soup(Rng& rng, int walls, int balls) {
+    Scene s;
+    for (int i = 0; i < walls; ++i) {
+        const Vec2 p{uniform(rng, 0, 100), uniform(rng, 0, 100)};
+        const double len = std::exp(uniform(rng, std::log(0.1), std::log(60.0)));
+        const double a = uniform(rng, 0, 6.283185307179586);
+        s.walls.push_back({p, p + Vec2{len * std::cos(a), len * std::sin(a)}});
+    }
+    for (int i = 0; i < walls / 8; ++i) s.circles.push_back({{uniform(rng, 0, 100), uniform(rng, 0, 100)}, uniform(rng, 0, 6)});
+    for (int i = 0; i < walls / 8; ++i) {
+        const double x = uniform(rng, 0, 100), y = uniform(rng, 0, 100);
+        s.rects.push_back({x, y, x + uniform(rng, 0, 9), y + uniform(rng, 0, 9)});
+    }
+    std::uniform_int_distribution<int> pick(0, walls - 1);
+    for (int b = 0; b < balls; ++b) {
+        Ball ball{{uniform(rng, 0, 100), uniform(rng, 0, 100)}, {uniform(rng, -4, 4), uniform(rng, -4, 4)}};
+        if (b % 3 == 1) ball.vel = s.walls[pick(rng)].p0 - ball.pos;  // ends on a wall's end point
+        if (b % 3 == 2) ball.vel = 1.5 * (s.walls[pick(rng)].p1 - ball.pos);  // through one
+        s.balls.push_back(ball);
+    }
+    return s;
+}
+
+std::vector<Event> run_world(const Scene& scene, KernelId k, std::int64_t frames, const WallIndex* index) {
+    World world(scene, k, index);
+    std::vector<Event> events;
+    world.start(events);
+    for (std::int64_t f = 0; f < frames; ++f) world.step(events);
+    return events;
+}
+
+std::vector<Event> run_scaled(const Scene& scene, KernelId k, std::int64_t frames, ScaleOptions options) {
+    ScaledWorld world(scene, k, options);
+    std::vector<Event> events;
+    world.start(events);
+    for (std::int64_t f = 0; f < frames; ++f) world.step(events);
+    return events;
+}
+
+/// The first event where a and b differ, for the failure message.
+std::string first_difference(const std::vector<Event>& a, const std::vector<Event>& b) {
+    for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+        if (!(a[i] == b[i])) return fmt::format("event {}: {} vs {}", i, format_event(a[i]), format_event(b[i]));
+    return fmt::format("lengths {} vs {}", a.size(), b.size());
+}
+
+/// Brute force, the grid (in World and in ScaledWorld on 1 and 3 threads) and the BVH agree.
+void expect_same_runs(const Scene& scene, KernelId k, std::int64_t frames) {
+    const std::vector<Event> brute = run_world(scene, k, frames, nullptr);
+    std::size_t hits = 0;
+    for (const Event& e : brute) hits += e.kind == Event::Kind::hit;
+    const WallGrid grid(scene.walls);
+    const WallBvh bvh(scene.walls);
+    const auto with_grid = run_world(scene, k, frames, &grid);
+    const auto with_bvh = run_world(scene, k, frames, &bvh);
+    const auto scaled1 = run_scaled(scene, k, frames, {.broad_phase = true, .threads = 1});
+    const auto scaled3 = run_scaled(scene, k, frames, {.broad_phase = true, .threads = 3});
+    const auto brute3 = run_scaled(scene, k, frames, {.broad_phase = false, .threads = 3});
+    ASSERT_GT(hits, 0u) << "the scene must bounce for the comparison to mean something";
+    const std::uint64_t h = hash_events(brute);
+    EXPECT_EQ(hash_events(with_grid), h) << first_difference(brute, with_grid);
+    EXPECT_EQ(hash_events(with_bvh), h) << first_difference(brute, with_bvh);
+    EXPECT_EQ(hash_events(scaled1), h) << first_difference(brute, scaled1);
+    EXPECT_EQ(hash_events(scaled3), h) << first_difference(brute, scaled3);
+    EXPECT_EQ(hash_events(brute3), h) << first_difference(brute, brute3);
+    EXPECT_EQ(brute, scaled3);
+}
+
+class ScaleKernels : public ::testing::TestWithParam<KernelId> {};
+
+TEST_P(ScaleKernels, MazesSameBitsWithAndWithoutBroadPhase) {
+    Rng rng(7);
+    for (int round = 0; round < 3; ++round) expect_same_runs(maze(rng, 12 + 6 * round, 300, 0.0), GetParam(), 60);
+}
+
+TEST_P(ScaleKernels, MazesFarFromOriginSameBits) {
+    Rng rng(8);
+    expect_same_runs(maze(rng, 10, 200, 0x1p30), GetParam(), 40);
+    expect_same_runs(maze(rng, 10, 200, -1e9), GetParam(), 40);
+}
+
+TEST_P(ScaleKernels, ClosedBoxesSameBits) {
+    Rng rng(9);
+    for (int sides : {3, 4, 7, 32}) expect_same_runs(closed_box(rng, sides, 200, 10.0), GetParam(), 80);
+    expect_same_runs(closed_box(rng, 5, 100, 1e-6), GetParam(), 80);
+    expect_same_runs(closed_box(rng, 6, 100, 1e12), GetParam(), 80);
+}
+
+TEST_P(ScaleKernels, SegmentSoupWithShapesSameBits) {
+    Rng rng(10);
+    expect_same_runs(soup(rng, 400, 300), GetParam(), 40);
+}
+
+INSTANTIATE_TEST_SUITE_P(Kernels, ScaleKernels, ::testing::Values(KernelId::lecture_double, KernelId::robust),
+                         [](const ::testing::TestParamInfo<KernelId>& p) {
+                             return std::string(p.param == KernelId::robust ? "robust" : "lecture_double");
+                         });
+
+TEST(Scale, LectureFloatWithFloatMargin) {
+    // lecture-float rounds to 2^-24: with k_float_margin the grid still returns every wall it can hit.
+    Rng rng(11);
+    const Scene s = maze(rng, 12, 200, 0.0);
+    const auto brute = run_world(s, KernelId::lecture_float, 40, nullptr);
+    const WallGrid grid(s.walls, {.margin = k_float_margin});
+    EXPECT_EQ(hash_events(run_world(s, KernelId::lecture_float, 40, &grid)), hash_events(brute));
+}
+
+TEST(Scale, ExactKernelThroughScaledWorld) {
+    Rng rng(12);
+    const Scene s = closed_box(rng, 5, 30, 10.0);
+    EXPECT_EQ(hash_events(run_scaled(s, KernelId::exact, 10, {.threads = 2})),
+              hash_events(run_world(s, KernelId::exact, 10, nullptr)));
+}
+
+TEST(Scale, ThreadCountsAllGiveTheSameHash) {
+    Rng rng(13);
+    const Scene s = maze(rng, 30, 2000, 0.0);
+    const std::uint64_t one = hash_events(run_scaled(s, KernelId::robust, 30, {.threads = 1}));
+    for (unsigned t : {2u, 3u, 4u, 7u, 16u})
+        EXPECT_EQ(hash_events(run_scaled(s, KernelId::robust, 30, {.threads = t})), one) << t << " threads";
+}
+
+/// Closed segments ab and pq meet (exactly).
+bool segments_meet(Vec2 a, Vec2 b, Vec2 p, Vec2 q) {
+    const int o1 = exact::orient(a, b, p), o2 = exact::orient(a, b, q);
+    const int o3 = exact::orient(p, q, a), o4 = exact::orient(p, q, b);
+    const auto within = [](Vec2 u, Vec2 v, Vec2 x) {
+        return std::min(u.x, v.x) <= x.x && x.x <= std::max(u.x, v.x) && std::min(u.y, v.y) <= x.y &&
+               x.y <= std::max(u.y, v.y);
+    };
+    if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+    return (o1 == 0 && within(a, b, p)) || (o2 == 0 && within(a, b, q)) || (o3 == 0 && within(p, q, a)) ||
+           (o4 == 0 && within(p, q, b));
+}
+
+TEST(Scale, IndexReturnsEveryWallTheSegmentMeetsEachOnce) {
+    Rng rng(14);
+    for (double scale : {1e-3, 1.0, 1e6}) {
+        const Scene s = soup(rng, 600, 0);
+        std::vector<Wall> walls;
+        for (const Wall& w : s.walls) walls.push_back({scale * w.p0, scale * w.p1});
+        const WallGrid grid(walls);
+        const WallBvh bvh(walls);
+        std::uniform_int_distribution<std::size_t> pick(0, walls.size() - 1);
+        std::vector<std::uint32_t> got;
+        std::size_t meets = 0;
+        for (int i = 0; i < 3000; ++i) {
+            Vec2 a{uniform(rng, -5, 105) * scale, uniform(rng, -5, 105) * scale};
+            Vec2 b = a + Vec2{uniform(rng, -8, 8) * scale, uniform(rng, -8, 8) * scale};
+            const Wall& w = walls[pick(rng)];
+            // Touching cases: ending on an end point, on a point of the wall, starting on one.
+            if (i % 4 == 1) b = w.p0;
+            if (i % 4 == 2) b = w.p0 + 0.37 * (w.p1 - w.p0);
+            if (i % 4 == 3) a = w.p1;
+            for (const WallIndex* index : {static_cast<const WallIndex*>(&grid), static_cast<const WallIndex*>(&bvh)}) {
+                got.clear();
+                index->query(a, b, got);
+                std::vector<std::uint32_t> sorted = got;
+                std::sort(sorted.begin(), sorted.end());
+                ASSERT_TRUE(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) << "a wall twice";
+                for (std::uint32_t k = 0; k < walls.size(); ++k) {
+                    if (!segments_meet(a, b, walls[k].p0, walls[k].p1)) continue;
+                    if (index == &grid) ++meets;
+                    ASSERT_TRUE(std::binary_search(sorted.begin(), sorted.end(), k))
+                        << "wall " << k << " meets the segment but was not returned (scale " << scale << ")";
+                }
+            }
+        }
+        EXPECT_GT(meets, 3000u);  // the touching cases alone give one each
+    }
+}
+
+TEST(Scale, StaticIndexReturnsEveryShapeHoldingThePoint) {
+    Rng rng(15);
+    const Scene s = soup(rng, 800, 0);
+    const StaticIndex index(s.circles, s.rects);
+    for (int i = 0; i < 20000; ++i) {
+        Vec2 p{uniform(rng, -5, 105), uniform(rng, -5, 105)};
+        // Boundary points: on a circle's rim (rounded) and on a rectangle's corner.
+        if (i % 3 == 1) {
+            const Circle& c = s.circles[static_cast<std::size_t>(i) % s.circles.size()];
+            p = c.c + Vec2{c.r, 0.0};
+        }
+        if (i % 3 == 2) {
+            const Rect& r = s.rects[static_cast<std::size_t>(i) % s.rects.size()];
+            p = {r.right, r.top};
+        }
+        const auto c = index.query(p);
+        for (KernelId k : {KernelId::lecture_float, KernelId::robust}) {
+            for (std::uint32_t j = 0; j < s.circles.size(); ++j)
+                if (point_in_circle(k, p, s.circles[j])) {
+                    ASSERT_TRUE(std::binary_search(c.circles.begin(), c.circles.end(), j));
+                }
+            for (std::uint32_t j = 0; j < s.rects.size(); ++j)
+                if (point_in_rect(k, p, s.rects[j])) {
+                    ASSERT_TRUE(std::binary_search(c.rects.begin(), c.rects.end(), j));
+                }
+        }
+    }
+}
+
+TEST(Scale, EmptyAndDegenerateScenes) {
+    const WallGrid none(std::span<const Wall>{});
+    std::vector<std::uint32_t> out;
+    none.query({0, 0}, {1, 1}, out);
+    EXPECT_TRUE(out.empty());
+    // Every wall at one point: the grid still answers, and a segment through that point gets them.
+    const std::vector<Wall> dots(5, Wall{{3, 3}, {3, 3}});
+    const WallGrid grid(dots);
+    grid.query({0, 0}, {6, 6}, out);
+    EXPECT_EQ(out.size(), 5u);
+    out.clear();
+    grid.query({0, 0}, {1, 0}, out);
+    EXPECT_TRUE(out.empty());
+    const StaticIndex statics({}, {});
+    EXPECT_TRUE(statics.empty());
+    EXPECT_TRUE(statics.query({1, 2}).circles.empty());
+}
+
+}  // namespace
+}  // namespace ricochet
