@@ -22,6 +22,9 @@ void register_bench(CLI::App& app) {
     CLI::App* stab = cmd->add_subcommand("stability", "Error and tunnelling against coordinate magnitude and angle to the wall");
     stab->add_flag("--quick", opt->quick, "Smaller query sets");
     stab->add_flag("--smoke", opt->smoke, "Tiny sets");
+    stab->add_option("--out", opt->out_dir, "Folder for the CSV and the charts")->capture_default_str();
+    stab->add_option("--seed", opt->seed, "Seed of every workload")->capture_default_str();
+    stab->add_flag("!--no-chart", opt->chart, "Do not run gnuplot");
     CLI::App* fr = cmd->add_subcommand("frames", "One ball in a closed box, robust kernel: ball-frames per second");
     fr->add_option("--frames", *frames, "Frames per run")->capture_default_str();
     fr->add_flag("--smoke", opt->smoke, "One run");

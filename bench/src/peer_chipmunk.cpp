@@ -32,6 +32,7 @@ public:
     void prepare(std::span<const SweepQuery> qs) const override {
         // Shapes live in a game's space before it queries them: made here, outside the timed loop.
         release();
+        prepared_for_ = qs.data();
         prepared_.resize(qs.size());
         for (std::size_t i = 0; i < qs.size(); ++i) {
             prepared_[i] = cpSegmentShapeNew(body_, to_cp(qs[i].wall.p0), to_cp(qs[i].wall.p1), 0.0);
@@ -41,10 +42,14 @@ public:
     void release() const override {
         for (cpShape* s : prepared_) cpShapeFree(s);
         prepared_.clear();
+        prepared_for_ = nullptr;
     }
     void sweep_all(std::span<const SweepQuery> qs, std::span<SweepAnswer> out) const override {
-        if (prepared_.size() != qs.size()) prepare(qs);
+        // Shapes made by prepare for exactly these queries, or made (and freed) here.
+        const bool mine = prepared_for_ != qs.data() || prepared_.size() != qs.size();
+        if (mine) prepare(qs);
         for (std::size_t i = 0; i < qs.size(); ++i) out[i] = query(prepared_[i], qs[i]);
+        if (mine) release();
     }
     bool has_static(StaticKind) const override { return true; }
     void static_all(std::span<const StaticQuery> qs, std::span<unsigned char> out) const override {
@@ -91,6 +96,7 @@ private:
     }
     cpBody* body_;
     mutable std::vector<cpShape*> prepared_;
+    mutable const SweepQuery* prepared_for_ = nullptr;
 };
 
 }  // namespace
