@@ -1,0 +1,81 @@
+// The Box2D 2.4.1 peer (box2d_peer.hpp).
+#include "box2d_peer.hpp"
+
+#include <box2d/b2_collision.h>
+#include <box2d/b2_dynamic_tree.h>
+#include <box2d/b2_edge_shape.h>
+
+#include <cstdint>
+
+namespace ricochet::scale {
+
+bool box2d_available() { return true; }
+
+struct Box2dPeer::Impl {
+    b2DynamicTree tree;
+    std::vector<b2EdgeShape> edges;
+};
+
+Box2dPeer::Box2dPeer(std::span<const Wall> walls) : impl_(std::make_unique<Impl>()) {
+    impl_->edges.resize(walls.size());
+    for (std::size_t i = 0; i < walls.size(); ++i) {
+        b2EdgeShape& e = impl_->edges[i];
+        e.SetTwoSided({static_cast<float>(walls[i].p0.x), static_cast<float>(walls[i].p0.y)},
+                      {static_cast<float>(walls[i].p1.x), static_cast<float>(walls[i].p1.y)});
+        b2AABB box;
+        e.ComputeAABB(&box, b2Transform(b2Vec2_zero, b2Rot(0.0f)), 0);
+        impl_->tree.CreateProxy(box, reinterpret_cast<void*>(static_cast<std::uintptr_t>(i)));
+    }
+}
+
+Box2dPeer::~Box2dPeer() = default;
+
+namespace {
+
+/// The nearest edge along the ray, clipping the ray as Box2D's own b2World::RayCast callers do.
+struct Nearest {
+    const b2DynamicTree* tree;
+    const std::vector<b2EdgeShape>* edges;
+    b2Transform xf{b2Vec2_zero, b2Rot(0.0f)};
+    bool found = false;
+    float fraction = 1.0f;
+    b2Vec2 normal{0.0f, 0.0f};
+
+    float RayCastCallback(const b2RayCastInput& input, int32 proxy) {
+        const auto i = reinterpret_cast<std::uintptr_t>(tree->GetUserData(proxy));
+        b2RayCastOutput out;
+        if (!(*edges)[i].RayCast(&out, input, xf, 0)) return input.maxFraction;
+        found = true;
+        fraction = out.fraction;
+        normal = out.normal;
+        return out.fraction;
+    }
+};
+
+}  // namespace
+
+void Box2dPeer::step(FloatBall& ball, std::vector<Vec2>* hits) const {
+    b2Vec2 p(ball.x, ball.y), v(ball.vx, ball.vy);
+    float rest = 1.0f;
+    for (int bounce = 0; bounce < 16; ++bounce) {
+        b2RayCastInput input;
+        input.p1 = p;
+        input.p2 = p + rest * v;
+        input.maxFraction = 1.0f;
+        if (input.p1 == input.p2) break;
+        Nearest cb{&impl_->tree, &impl_->edges};
+        impl_->tree.RayCast(&cb, input);
+        if (!cb.found) {
+            p = input.p2;
+            break;
+        }
+        // Move to the hit point, reflect v about the edge normal, spend the rest of the frame.
+        p = input.p1 + cb.fraction * (input.p2 - input.p1);
+        v = v - 2.0f * b2Dot(v, cb.normal) * cb.normal;
+        rest *= 1.0f - cb.fraction;
+        if (hits != nullptr) hits->push_back({p.x, p.y});
+    }
+    ball = {p.x, p.y, v.x, v.y};
+}
+
+}  // namespace ricochet::scale

@@ -1,0 +1,28 @@
+// ricochet_scale_bench [--quick] [--threads N] [--out DIR]: the scale benchmark on its own.
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#include "scale_bench.hpp"
+
+int main(int argc, char** argv) {
+    bool quick = false;
+    unsigned threads = 0;
+    std::string out = "bench/results";
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view a = argv[i];
+        if (a == "--quick") {
+            quick = true;
+        } else if (a == "--threads" && i + 1 < argc) {
+            threads = static_cast<unsigned>(std::strtoul(argv[++i], nullptr, 10));
+        } else if (a == "--out" && i + 1 < argc) {
+            out = argv[++i];
+        } else {
+            fmt::print(stderr, "usage: ricochet_scale_bench [--quick] [--threads N] [--out DIR]\n");
+            return 2;
+        }
+    }
+    return ricochet::run_scale_bench(quick, threads, out);
+}
