@@ -40,14 +40,19 @@ struct Nearest {
     bool found = false;
     float fraction = 1.0f;
     b2Vec2 normal{0.0f, 0.0f};
+    std::uintptr_t skip = ~std::uintptr_t{0};  // the edge just bounced off
+    std::uintptr_t hit = 0;
 
     float RayCastCallback(const b2RayCastInput& input, int32 proxy) {
         const auto i = reinterpret_cast<std::uintptr_t>(tree->GetUserData(proxy));
+        // The edge just bounced off is skipped: the ray starts on it, and would hit it again at 0.
+        if (i == skip) return input.maxFraction;
         b2RayCastOutput out;
         if (!(*edges)[i].RayCast(&out, input, xf, 0)) return input.maxFraction;
         found = true;
         fraction = out.fraction;
         normal = out.normal;
+        hit = i;
         return out.fraction;
     }
 };
@@ -57,6 +62,7 @@ struct Nearest {
 void Box2dPeer::step(FloatBall& ball, std::vector<Vec2>* hits) const {
     b2Vec2 p(ball.x, ball.y), v(ball.vx, ball.vy);
     float rest = 1.0f;
+    std::uintptr_t last = ~std::uintptr_t{0};
     for (int bounce = 0; bounce < 16; ++bounce) {
         b2RayCastInput input;
         input.p1 = p;
@@ -64,6 +70,7 @@ void Box2dPeer::step(FloatBall& ball, std::vector<Vec2>* hits) const {
         input.maxFraction = 1.0f;
         if (input.p1 == input.p2) break;
         Nearest cb{&impl_->tree, &impl_->edges};
+        cb.skip = last;
         impl_->tree.RayCast(&cb, input);
         if (!cb.found) {
             p = input.p2;
@@ -73,6 +80,7 @@ void Box2dPeer::step(FloatBall& ball, std::vector<Vec2>* hits) const {
         p = input.p1 + cb.fraction * (input.p2 - input.p1);
         v = v - 2.0f * b2Dot(v, cb.normal) * cb.normal;
         rest *= 1.0f - cb.fraction;
+        last = cb.hit;
         if (hits != nullptr) hits->push_back({p.x, p.y});
     }
     ball = {p.x, p.y, v.x, v.y};

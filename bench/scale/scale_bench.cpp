@@ -1,0 +1,336 @@
+// `ricochet bench scale` (scale_bench.hpp): mazes from 10 to 10^6 walls, 1 to 10^6 balls.
+#include "scale_bench.hpp"
+
+#include <fmt/format.h>
+#include <fmt/os.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <random>
+#include <thread>
+
+#include "box2d_peer.hpp"
+#include "ricochet/grid.hpp"
+#include "ricochet/parallel.hpp"
+#include "ricochet/predicates.hpp"
+
+namespace ricochet {
+
+#ifndef RICOCHET_HAVE_BOX2D
+namespace scale {
+bool box2d_available() { return false; }
+struct Box2dPeer::Impl {};
+Box2dPeer::Box2dPeer(std::span<const Wall>) {}
+Box2dPeer::~Box2dPeer() = default;
+void Box2dPeer::step(FloatBall&, std::vector<Vec2>*) const {}
+}  // namespace scale
+#endif
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using scale::FloatBall;
+
+/// A maze on an n×n lattice of pitch 1: the closed border and each inner lattice edge with
+/// probability 1/2, so about n² walls.
+std::vector<Wall> make_maze(int n, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::bernoulli_distribution coin(0.5);
+    std::vector<Wall> walls;
+    const auto at = [](int x, int y) { return Vec2{static_cast<double>(x), static_cast<double>(y)}; };
+    for (int i = 0; i < n; ++i) {
+        walls.push_back({at(i, 0), at(i + 1, 0)});
+        walls.push_back({at(n, i), at(n, i + 1)});
+        walls.push_back({at(i + 1, n), at(i, n)});
+        walls.push_back({at(0, i + 1), at(0, i)});
+    }
+    for (int x = 0; x < n; ++x)
+        for (int y = 1; y < n; ++y) {
+            if (coin(rng)) walls.push_back({at(x, y), at(x + 1, y)});
+            if (coin(rng)) walls.push_back({at(y, x), at(y, x + 1)});
+        }
+    return walls;
+}
+
+/// Balls at random points of the maze, random directions, 0.05 to 0.5 cells a frame.
+std::vector<Ball> make_balls(std::size_t count, int n, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> pos(0.001, n - 0.001), angle(0.0, 6.283185307179586), speed(0.05, 0.5);
+    std::vector<Ball> balls(count);
+    for (Ball& b : balls) {
+        const double a = angle(rng), s = speed(rng);
+        b.pos = {pos(rng), pos(rng)};
+        b.vel = {s * std::cos(a), s * std::sin(a)};
+    }
+    return balls;
+}
+
+/// Median seconds per frame: frames run in chunks of at least ~2 ms, until budget seconds have
+/// passed (at least 3 chunks, after one warm-up frame).
+double time_per_frame(const std::function<void()>& frame, double budget) {
+    auto t0 = Clock::now();
+    frame();
+    const double first = std::chrono::duration<double>(Clock::now() - t0).count();
+    const int chunk = std::max(1, static_cast<int>(std::ceil(2e-3 / std::max(first, 1e-9))));
+    std::vector<double> per_frame;
+    const auto start = Clock::now();
+    while (per_frame.size() < 3 || (std::chrono::duration<double>(Clock::now() - start).count() < budget &&
+                                    per_frame.size() < 200)) {
+        t0 = Clock::now();
+        for (int i = 0; i < chunk; ++i) frame();
+        per_frame.push_back(std::chrono::duration<double>(Clock::now() - t0).count() / chunk);
+    }
+    std::nth_element(per_frame.begin(), per_frame.begin() + per_frame.size() / 2, per_frame.end());
+    return per_frame[per_frame.size() / 2];
+}
+
+/// True if the piece q → r goes strictly from one side of a wall to the other through its closed
+/// segment (exact predicates); the grid supplies the candidates.
+bool tunnels(Vec2 q, Vec2 r, std::span<const Wall> walls, const WallGrid& grid, std::vector<std::uint32_t>& scratch) {
+    if (q == r) return false;
+    scratch.clear();
+    grid.query(q, r, scratch);
+    for (std::uint32_t i : scratch) {
+        const Wall& w = walls[i];
+        if (exact::side(q, w) * exact::side(r, w) >= 0) continue;
+        if (exact::orient(q, r, w.p0) * exact::orient(q, r, w.p1) <= 0) return true;
+    }
+    return false;
+}
+
+struct Row {
+    std::string sweep, method;
+    std::size_t walls = 0, balls = 0;
+    unsigned threads = 1;
+    double ms_per_frame = 0, ns_per_ball_frame = 0;
+    double hits_per_ball_frame = -1;  // from the checked frames, -1 if not checked
+    long long tunnels = -1;           // pieces crossing a wall in the checked frames, -1 if not checked
+    std::size_t checked_ball_frames = 0;
+};
+
+struct Config {
+    bool quick;
+    double budget;
+    double brute_limit;  // brute force only when walls·balls ≤ this
+    std::size_t check_balls;
+    int check_frames;
+};
+
+/// Measures one (walls, balls) point for every method and appends the rows.
+void measure(const Config& cfg, const std::string& sweep, int n, std::size_t ball_count, std::vector<Row>& rows) {
+    const std::vector<Wall> walls = make_maze(n, 1000 + static_cast<std::uint64_t>(n));
+    const std::vector<Ball> start = make_balls(ball_count, n, 2000 + ball_count);
+    const WallGrid grid(walls);
+    const auto base = [&](const char* method) {
+        Row r;
+        r.sweep = sweep;
+        r.method = method;
+        r.walls = walls.size();
+        r.balls = ball_count;
+        return r;
+    };
+    const auto finish = [&](Row r, double seconds) {
+        r.ms_per_frame = seconds * 1e3;
+        r.ns_per_ball_frame = seconds * 1e9 / static_cast<double>(ball_count);
+        rows.push_back(r);
+        fmt::print("{:<7} {:>8} walls {:>8} balls  {:<13} {:>10.4f} ms/frame {:>9.1f} ns/ball-frame", r.sweep, r.walls,
+                   r.balls, r.method, r.ms_per_frame, r.ns_per_ball_frame);
+        if (r.tunnels >= 0)
+            fmt::print("  {:.3f} hits/ball-frame, {} tunnels in {} checked ball-frames", r.hits_per_ball_frame,
+                       r.tunnels, r.checked_ball_frames);
+        fmt::print("\n");
+        std::fflush(stdout);
+    };
+
+    // The checked run: the first check_balls balls for check_frames frames, every piece of every path
+    // tested exactly against every wall the grid returns.
+    const std::size_t cb = std::min(ball_count, cfg.check_balls);
+    std::vector<std::uint32_t> scratch;
+    const auto check_ours = [&](Row& r) {
+        std::vector<Ball> balls(start.begin(), start.begin() + static_cast<std::ptrdiff_t>(cb));
+        std::vector<BallMemory> mem(cb);
+        std::vector<HitEvent> hits;
+        StepScratch ss;
+        long long t = 0, h = 0;
+        for (int f = 0; f < cfg.check_frames; ++f)
+            for (std::size_t i = 0; i < cb; ++i) {
+                hits.clear();
+                Vec2 q = balls[i].pos;
+                step_ball(KernelId::robust, balls[i], mem[i], walls, hits, ss, &grid);
+                h += static_cast<long long>(hits.size());
+                for (const HitEvent& e : hits) {
+                    t += tunnels(q, e.point, walls, grid, scratch);
+                    q = e.point;
+                }
+                t += tunnels(q, balls[i].pos, walls, grid, scratch);
+            }
+        r.tunnels = t;
+        r.checked_ball_frames = cb * static_cast<std::size_t>(cfg.check_frames);
+        r.hits_per_ball_frame = static_cast<double>(h) / static_cast<double>(r.checked_ball_frames);
+    };
+
+    // Ours: robust kernel, one thread, with the grid, the BVH, and brute force.
+    const auto ours = [&](const char* method, const WallIndex* index, bool check) {
+        std::vector<Ball> balls = start;
+        std::vector<BallMemory> mem(ball_count);
+        ParallelStepper stepper(1);
+        Row r = base(method);
+        if (check) check_ours(r);
+        const double s = time_per_frame([&] { stepper.step(KernelId::robust, balls, mem, walls, index); }, cfg.budget);
+        finish(r, s);
+    };
+    ours("robust+grid", &grid, true);
+    const bool walls_sweep = sweep == "walls";
+    if (walls_sweep || !cfg.quick) {
+        const WallBvh bvh(walls);
+        ours("robust+bvh", &bvh, false);
+    }
+    if (static_cast<double>(walls.size()) * static_cast<double>(ball_count) <= cfg.brute_limit)
+        ours("robust-brute", nullptr, false);
+
+    if (scale::box2d_available()) {
+        const scale::Box2dPeer peer(walls);
+        std::vector<FloatBall> fb(ball_count);
+        for (std::size_t i = 0; i < ball_count; ++i)
+            fb[i] = {static_cast<float>(start[i].pos.x), static_cast<float>(start[i].pos.y),
+                     static_cast<float>(start[i].vel.x), static_cast<float>(start[i].vel.y)};
+        Row r = base("box2d-2.4.1");
+        {
+            std::vector<FloatBall> c(fb.begin(), fb.begin() + static_cast<std::ptrdiff_t>(cb));
+            std::vector<Vec2> hits;
+            long long t = 0, h = 0;
+            for (int f = 0; f < cfg.check_frames; ++f)
+                for (FloatBall& b : c) {
+                    hits.clear();
+                    Vec2 q{b.x, b.y};
+                    peer.step(b, &hits);
+                    h += static_cast<long long>(hits.size());
+                    hits.push_back({b.x, b.y});
+                    for (Vec2 p : hits) {
+                        t += tunnels(q, p, walls, grid, scratch);
+                        q = p;
+                    }
+                }
+            r.tunnels = t;
+            r.checked_ball_frames = cb * static_cast<std::size_t>(cfg.check_frames);
+            r.hits_per_ball_frame = static_cast<double>(h) / static_cast<double>(r.checked_ball_frames);
+        }
+        const double s = time_per_frame(
+            [&] {
+                for (FloatBall& b : fb) peer.step(b, nullptr);
+            },
+            cfg.budget);
+        finish(r, s);
+    }
+}
+
+int lattice_for(std::size_t walls) { return std::max(2, static_cast<int>(std::lround(std::sqrt(static_cast<double>(walls))))); }
+
+}  // namespace
+
+int run_scale_bench(bool quick, unsigned threads, const std::string& out_dir) {
+    const Config cfg = quick ? Config{true, 0.15, 4e6, 4000, 20} : Config{false, 0.6, 2e7, 20000, 50};
+    const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+    const unsigned max_threads = threads == 0 ? hw : threads;
+    fmt::print("ricochet bench scale{}: robust kernel, maze of unit cells, balls at 0.05-0.5 cells/frame; one thread "
+               "unless stated; {} hardware threads{}\n",
+               quick ? " --quick" : "", hw, scale::box2d_available() ? "" : "; Box2D not found, its column skipped");
+    std::vector<Row> rows;
+    const std::vector<std::size_t> wall_sizes =
+        quick ? std::vector<std::size_t>{10, 100, 1000, 10000, 100000} : std::vector<std::size_t>{10, 100, 1000, 10000, 100000, 1000000};
+    const std::size_t sweep_balls = quick ? 2000 : 10000;
+    for (std::size_t w : wall_sizes) measure(cfg, "walls", lattice_for(w), sweep_balls, rows);
+    const std::vector<std::size_t> ball_sizes = quick ? std::vector<std::size_t>{1, 100, 10000, 100000}
+                                                      : std::vector<std::size_t>{1, 10, 100, 1000, 10000, 100000, 1000000};
+    for (std::size_t b : ball_sizes) measure(cfg, "balls", lattice_for(10000), b, rows);
+
+    // Threads: the headline scene (10^4 walls, 10^5 balls) on 1 .. max_threads threads.
+    {
+        const int n = lattice_for(10000);
+        const std::vector<Wall> walls = make_maze(n, 1000 + static_cast<std::uint64_t>(n));
+        const std::size_t nb = 100000;
+        const std::vector<Ball> start = make_balls(nb, n, 2000 + nb);
+        const WallGrid grid(walls);
+        std::vector<unsigned> counts;
+        for (unsigned t = 1; t < max_threads; t *= 2) counts.push_back(t);
+        counts.push_back(max_threads);
+        double one = 0;
+        for (unsigned t : counts) {
+            std::vector<Ball> balls = start;
+            std::vector<BallMemory> mem(nb);
+            ParallelStepper stepper(t);
+            const double s =
+                time_per_frame([&] { stepper.step(KernelId::robust, balls, mem, walls, &grid); }, cfg.budget);
+            if (t == 1) one = s;
+            Row r;
+            r.sweep = "threads";
+            r.method = "robust+grid";
+            r.walls = walls.size();
+            r.balls = nb;
+            r.threads = t;
+            r.ms_per_frame = s * 1e3;
+            r.ns_per_ball_frame = s * 1e9 / static_cast<double>(nb);
+            rows.push_back(r);
+            fmt::print("threads {:>3}: {:>8} walls {:>8} balls {:>9.3f} ms/frame, speed-up {:.2f}\n", t, r.walls, nb,
+                       r.ms_per_frame, one / s);
+        }
+    }
+
+    // CSV, gnuplot data and chart.
+    std::filesystem::create_directories(out_dir);
+    const std::string csv_path = out_dir + "/scale.csv";
+    {
+        auto csv = fmt::output_file(csv_path);
+        csv.print("sweep,method,walls,balls,threads,ms_per_frame,ns_per_ball_frame,hits_per_ball_frame,tunnels,"
+                  "checked_ball_frames\n");
+        for (const Row& r : rows)
+            csv.print("{},{},{},{},{},{},{},{},{},{}\n", r.sweep, r.method, r.walls, r.balls, r.threads, r.ms_per_frame,
+                      r.ns_per_ball_frame, r.hits_per_ball_frame, r.tunnels, r.checked_ball_frames);
+    }
+    const std::vector<std::string> methods{"robust+grid", "robust+bvh", "robust-brute", "box2d-2.4.1"};
+    {
+        auto dat = fmt::output_file(out_dir + "/scale.dat");
+        for (const char* sweep : {"walls", "balls"})
+            for (const std::string& m : methods) {
+                dat.print("# {} {}\n", sweep, m);
+                bool any = false;
+                for (const Row& r : rows)
+                    if (r.sweep == sweep && r.method == m) {
+                        dat.print("{} {}\n", std::string_view(sweep) == "walls" ? r.walls : r.balls, r.ns_per_ball_frame);
+                        any = true;
+                    }
+                if (!any) dat.print("nan nan\n");
+                dat.print("\n\n");
+            }
+    }
+    {
+        auto gp = fmt::output_file(out_dir + "/scale.gp");
+        gp.print("set terminal pngcairo size 1400,560 font ',11'\nset output '{}/scale.png'\n", out_dir);
+        gp.print("set multiplot layout 1,2 title 'ricochet bench scale{}: ns per ball-frame (one thread, shared "
+                 "machine)'\nset logscale xy\nset grid\nset ylabel 'ns per ball-frame'\nset key top left\n",
+                 quick ? " --quick" : "");
+        for (int s = 0; s < 2; ++s) {
+            gp.print("set xlabel '{}'\n", s == 0 ? fmt::format("walls ({} balls)", sweep_balls) : std::string("balls (10^4-wall maze)"));
+            gp.print("plot ");
+            for (std::size_t m = 0; m < methods.size(); ++m)
+                gp.print("{}'{}/scale.dat' index {} with linespoints lw 2 title '{}'", m ? ", " : "", out_dir,
+                         s * 4 + static_cast<int>(m), methods[m]);
+            gp.print("\n");
+        }
+        gp.print("unset multiplot\n");
+    }
+    const std::string cmd = fmt::format("gnuplot '{}/scale.gp'", out_dir);
+    if (std::system(cmd.c_str()) != 0) fmt::print("gnuplot failed; the data is in {}\n", csv_path);
+    fmt::print("wrote {}, {}/scale.png\n", csv_path, out_dir);
+
+    long long robust_tunnels = 0;
+    for (const Row& r : rows)
+        if (r.method == "robust+grid" && r.tunnels > 0) robust_tunnels += r.tunnels;
+    return robust_tunnels == 0 ? 0 : 1;
+}
+
+}  // namespace ricochet
