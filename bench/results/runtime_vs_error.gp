@@ -4,10 +4,11 @@ set multiplot layout 1,2 title "ricochet bench --quick: run time against error, 
 set logscale xy
 set grid
 set xlabel "ns per sweep query (geometric mean over workloads)"
-set ylabel "wrong hit decisions per million queries vs exact (0 drawn at 0.1)"
-set key off
+set ylabel "wrong hit decisions per million (0 at 0.1)"
+set key top right
 set offsets graph 0.05, graph 0.15, graph 0.12, graph 0.05
-plot 'bench/results/runtime_vs_error.dat' using 2:3 with points pt 7 ps 1.5, '' using 2:3:1 with labels offset 0,1
-set ylabel "max contact point error on uniform + far, ulps (0 drawn at 0.1)"
-plot 'bench/results/runtime_vs_error.dat' using 2:4 with points pt 7 ps 1.5, '' using 2:4:1 with labels offset 0,1
+names = "lecture-float lecture-double robust exact box2d chipmunk cgal"
+plot for [i=1:words(names)] 'bench/results/runtime_vs_error.dat' index (i-1) using 2:3 with points pt (4+i) ps 2 lw 2 title word(names, i)
+set ylabel "max contact error, uniform + far (ulps of scale; 0 at 0.1)"
+plot for [i=1:words(names)] 'bench/results/runtime_vs_error.dat' index (i-1) using 2:4 with points pt (4+i) ps 2 lw 2 title word(names, i)
 unset multiplot
