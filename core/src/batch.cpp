@@ -42,24 +42,26 @@ namespace {
 // Shewchuk's bound for a 2×2 determinant of differences, |det − fl(det)| ≤ k_ccw·(|l| + |r|).
 constexpr double k_eps = 0x1p-53;
 constexpr double k_ccw = (3.0 + 16.0 * k_eps) * k_eps;
-// Below this magnitude a product may have underflowed: the filter declines.
+// Below this magnitude a product may have underflowed: the filter declines (predicates.cpp's k_tiny).
 constexpr double k_tiny = 0x1p-900;
 
-/// The filtered sign of l − r in eight lanes: pos/neg masks of the rounded value, and certain where
-/// |l − r| > k_ccw·(|l| + |r|) and |l| + |r| ≥ k_tiny, exactly as exact::orient's filter decides
-/// (ordered compares: a NaN lane is never certain).
+/// The filtered sign of l − r in eight lanes: neg where the rounded value is negative, certain where
+/// the filter vouches for that sign. exact::orient's filter vouches iff |l − r| > k_ccw·(|l| + |r|) and
+/// |l| + |r| ≥ k_tiny; here the two tests are folded into |l − r| > max(k_ccw·(|l| + |r|), k_tiny), which
+/// vouches for a subset of those lanes (|l − r| ≤ |l| + |r| and rounding is monotonic, so sum < k_tiny
+/// implies |l − r| < k_tiny), never for more. A lane it declines goes to the exact predicates, so the
+/// decision is the same either way; NaN lanes compare false and are declined too. A certain value is
+/// never zero, so its sign is just neg or not.
 struct Signs {
-    __mmask8 pos, neg, certain;
+    __mmask8 neg, certain;
 };
 
 [[gnu::target("avx512f"), gnu::always_inline]] inline Signs filtered(__m512d l, __m512d r) {
     const __m512d value = _mm512_sub_pd(l, r);
     const __m512d sum = _mm512_add_pd(_mm512_abs_pd(l), _mm512_abs_pd(r));
-    const __m512d bound = _mm512_mul_pd(_mm512_set1_pd(k_ccw), sum);
-    const __mmask8 certain = _mm512_cmp_pd_mask(_mm512_abs_pd(value), bound, _CMP_GT_OQ) &
-                             _mm512_cmp_pd_mask(sum, _mm512_set1_pd(k_tiny), _CMP_GE_OQ);
-    const __m512d zero = _mm512_setzero_pd();
-    return {_mm512_cmp_pd_mask(value, zero, _CMP_GT_OQ), _mm512_cmp_pd_mask(value, zero, _CMP_LT_OQ), certain};
+    const __m512d bound = _mm512_max_pd(_mm512_mul_pd(_mm512_set1_pd(k_ccw), sum), _mm512_set1_pd(k_tiny));
+    return {_mm512_cmp_pd_mask(value, _mm512_setzero_pd(), _CMP_LT_OQ),
+            _mm512_cmp_pd_mask(_mm512_abs_pd(value), bound, _CMP_GT_OQ)};
 }
 
 /// Eight lanes of the leg test; writes eight Miss codes to out and returns the mask of lanes the filter
@@ -80,18 +82,16 @@ struct Signs {
     // orient(q, b, P0) = (q − P0) × (b − P0); orient(q, b, P1) = (q − P1) × (b − P1).
     const Signs o0 = filtered(_mm512_mul_pd(dqx, dby), _mm512_mul_pd(dqy, dbx));
     const Signs o1 = filtered(_mm512_mul_pd(eqx, eby), _mm512_mul_pd(eqy, ebx));
-    // side = −orient: Inside (sq < 0) where orient > 0, Outside where orient < 0.
-    const __mmask8 inside = oq.pos & ob.pos, outside = oq.neg & ob.neg;
-    const __mmask8 zq = static_cast<__mmask8>(~(oq.pos | oq.neg)), zb = static_cast<__mmask8>(~(ob.pos | ob.neg));
+    // On certain lanes (no zeros): side = −orient, so Inside (sq < 0) where orient > 0.
+    const __mmask8 inside = static_cast<__mmask8>(~oq.neg & ~ob.neg), outside = oq.neg & ob.neg;
     // before P0 iff sign(orient(q, b, P0)) = −sq = sign(orient(P0, P1, q)); past P1 iff sign(orient(q, b, P1)) = sq.
-    const __mmask8 before = (o0.pos & oq.pos) | (o0.neg & oq.neg);
-    const __mmask8 past = (o1.pos & oq.neg) | (o1.neg & oq.pos);
-    // Lowest priority first, so that each later blend overrides: test_leg's order reversed.
+    const __mmask8 before = static_cast<__mmask8>(~(o0.neg ^ oq.neg));
+    const __mmask8 past = o1.neg ^ oq.neg;
+    // Lowest priority first, so that each later blend overrides: test_leg's order reversed. (Parallel
+    // and leaving need a zero side, which the filter never certifies: those lanes go to the fallback.)
     __m512i code = _mm512_set1_epi64(static_cast<long long>(Miss::none));
     code = _mm512_mask_blend_epi64(past, code, _mm512_set1_epi64(static_cast<long long>(Miss::past_p1)));
     code = _mm512_mask_blend_epi64(before, code, _mm512_set1_epi64(static_cast<long long>(Miss::before_p0)));
-    code = _mm512_mask_blend_epi64(zq, code, _mm512_set1_epi64(static_cast<long long>(Miss::leaving)));
-    code = _mm512_mask_blend_epi64(zq & zb, code, _mm512_set1_epi64(static_cast<long long>(Miss::parallel)));
     code = _mm512_mask_blend_epi64(outside, code, _mm512_set1_epi64(static_cast<long long>(Miss::both_outside)));
     code = _mm512_mask_blend_epi64(inside, code, _mm512_set1_epi64(static_cast<long long>(Miss::both_inside)));
     // Degenerate: a zero-length leg, b = q.
