@@ -114,6 +114,8 @@ int orient(Vec2 a, Vec2 b, Vec2 c) {
     // (a − c) × (b − c) equals (b − a) × (c − a): the same signed double area.
     const Filtered f = orient_filtered(a, b, c);
     if (f.certain()) return sign(f.value);
+    // Both products have an exactly-zero factor (x − y = 0 exactly iff x = y): the area is exactly 0.
+    if ((a.x == c.x || b.y == c.y) && (a.y == c.y || b.x == c.x)) return 0;
     return orient_exact(a, b, c);
 }
 
