@@ -33,7 +33,7 @@ inline constexpr double k_float_margin = 0x1p-18;
 
 /// How a WallGrid is laid out.
 struct GridOptions {
-    double cell_size = 0.0;         ///< side of a cell; 0 chooses one (about one wall per cell)
+    double cell_size = 0.0;         ///< side of a cell; 0 chooses one (about four cells per wall)
     double margin = k_grid_margin;  ///< relative margin, see the header comment
     std::size_t max_cells = std::size_t{1} << 24;  ///< cap on nx·ny (memory)
 };
