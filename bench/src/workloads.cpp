@@ -104,6 +104,18 @@ SweepWorkload angle_workload(double angle, std::size_t n, std::uint64_t seed) {
     });
 }
 
+SweepWorkload one_wall_workload(const std::string& kind, const Wall& w, std::size_t n, std::uint64_t seed) {
+    Rng r(seed);
+    if (kind == "grazing")
+        return generate(kind, n, [&](SweepQuery& q) {
+            const double len = length(edge(w));
+            const double a = r.uniform(-0.3, 0.9), b = r.uniform(0.1, 1.3);
+            const double sgn = r.unit() < 0.5 ? -1.0 : 1.0;
+            return make_query(off_wall(w, a, sgn * 1e-12 * len), off_wall(w, b, -sgn * 1e-12 * len), w, q);
+        });
+    return generate(kind, n, [&](SweepQuery& q) { return make_query(in_box(r, 1.0), point_on_wall(w, r.unit()), w, q); });
+}
+
 std::vector<SweepWorkload> sweep_workloads(std::size_t n, std::uint64_t seed) {
     std::vector<SweepWorkload> out;
     Rng r(seed);

@@ -67,6 +67,10 @@ SweepWorkload offset_workload(double offset, std::size_t n, std::uint64_t seed);
 /// Grazing sweeps whose leg makes an angle of about angle radians with the wall (stability sweep over angle).
 SweepWorkload angle_workload(double angle, std::size_t n, std::uint64_t seed);
 
+/// Many balls against the one wall w (for the batched path): kind "end-on-wall" (every Be the double
+/// nearest a point of w) or "grazing" (every leg crossing w's line by 1e-12 of its length).
+SweepWorkload one_wall_workload(const std::string& kind, const Wall& w, std::size_t n, std::uint64_t seed);
+
 /// A query from a start and an end point: v = Be − Bs; false if fl(Bs + v) ≠ Be (the caller retries).
 bool make_query(Vec2 bs, Vec2 be, const Wall& w, SweepQuery& out);
 
