@@ -2,7 +2,10 @@
 // The heavy lifting is in bench/ (the ricochet_bench library); this file only wires the options.
 #include "commands.hpp"
 
+#include <exception>
 #include <memory>
+
+#include <fmt/format.h>
 
 #include "ricochet_bench/bench.hpp"
 
@@ -31,9 +34,15 @@ void register_bench(CLI::App& app) {
 
     cmd->callback([cmd, stab, fr, opt, frames] {
         int rc = 0;
-        if (stab->parsed()) rc = ricochet::bench::run_stability(*opt);
-        else if (fr->parsed()) rc = ricochet::bench::run_frames(*opt, *frames);
-        else rc = ricochet::bench::run_bench(*opt);
+        try {
+            if (stab->parsed()) rc = ricochet::bench::run_stability(*opt);
+            else if (fr->parsed()) rc = ricochet::bench::run_frames(*opt, *frames);
+            else rc = ricochet::bench::run_bench(*opt);
+        } catch (const std::exception& e) {
+            // An output folder or file that cannot be written (the only failure a run can meet).
+            fmt::print(stderr, "{}: error: {}\n", opt->out_dir, e.what());
+            throw Exit{2};
+        }
         (void)cmd;
         if (rc != 0) throw Exit{rc};
     });
