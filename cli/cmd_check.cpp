@@ -52,11 +52,21 @@ bool any_fuzz_target_built() {
     return false;
 }
 
+/// Seconds of fuzzing at the end of `check`: RICOCHET_CHECK_FUZZ_SECONDS if set to a number, else 20.
+int default_fuzz_seconds() {
+    const char* env = std::getenv("RICOCHET_CHECK_FUZZ_SECONDS");
+    if (!env || !*env) return 20;
+    char* end = nullptr;
+    const long v = std::strtol(env, &end, 10);
+    return (*end == '\0' && v >= 0 && v <= 86400) ? static_cast<int>(v) : 20;
+}
+
 }  // namespace
 
 void register_check(CLI::App& app) {
     struct Options {
-        int fuzz_time = 20;
+        // RICOCHET_CHECK_FUZZ_SECONDS sets the default (README); --fuzz-time overrides it.
+        int fuzz_time = default_fuzz_seconds();
         bool no_properties = false;
     };
     auto opt = std::make_shared<Options>();

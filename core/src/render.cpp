@@ -149,9 +149,15 @@ std::string render_svg(const Scene& scene, const CheckedRun& run, const RenderOp
             }
         std::string text = f.str();
         if (text.size() > 140) text = text.substr(0, 137) + "...";
-        for (auto& ch : text)
-            if (ch == '<' || ch == '>' || ch == '&') ch = ' ';
-        fmt::format_to(it, "<text x=\"8\" y=\"18\" fill=\"red\">{}</text>\n", text);
+        // XML-escape the message: it quotes path pieces like "(0, 8) -> (-4, 9)".
+        std::string escaped;
+        for (char ch : text) {
+            if (ch == '<') escaped += "&lt;";
+            else if (ch == '>') escaped += "&gt;";
+            else if (ch == '&') escaped += "&amp;";
+            else escaped += ch;
+        }
+        fmt::format_to(it, "<text x=\"8\" y=\"18\" fill=\"red\">{}</text>\n", escaped);
     }
     out += "</svg>\n";
     return out;
