@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "ricochet_bench/bench.hpp"
+#include "scale_bench.hpp"
 
 namespace ricochet::cli {
 
@@ -31,12 +32,19 @@ void register_bench(CLI::App& app) {
     CLI::App* fr = cmd->add_subcommand("frames", "One ball in a closed box, robust kernel: ball-frames per second");
     fr->add_option("--frames", *frames, "Frames per run")->capture_default_str();
     fr->add_flag("--smoke", opt->smoke, "One run");
+    // Issue 7's scaling benchmark (bench/scale, ricochet_scale): walls and balls from 10 to 10^6.
+    auto threads = std::make_shared<unsigned>(0);
+    CLI::App* sc = cmd->add_subcommand("scale", "Per-frame cost as walls and balls grow: brute force, grid, BVH, Box2D");
+    sc->add_flag("--quick", opt->quick, "Smaller scenes");
+    sc->add_option("--threads", *threads, "Worker threads (0: all cores)")->capture_default_str();
+    sc->add_option("--out", opt->out_dir, "Folder for the CSV and the chart")->capture_default_str();
 
-    cmd->callback([cmd, stab, fr, opt, frames] {
+    cmd->callback([cmd, stab, fr, sc, opt, frames, threads] {
         int rc = 0;
         try {
             if (stab->parsed()) rc = ricochet::bench::run_stability(*opt);
             else if (fr->parsed()) rc = ricochet::bench::run_frames(*opt, *frames);
+            else if (sc->parsed()) rc = ricochet::run_scale_bench(opt->quick, *threads, opt->out_dir);
             else rc = ricochet::bench::run_bench(*opt);
         } catch (const std::exception& e) {
             // An output folder or file that cannot be written (the only failure a run can meet).
