@@ -40,10 +40,8 @@ namespace {
 #ifdef RICOCHET_BATCH_AVX512
 // The filter constants of predicates.cpp, restated (they must stay equal to those):
 // Shewchuk's bound for a 2×2 determinant of differences, |det − fl(det)| ≤ k_ccw·(|l| + |r|).
-constexpr double k_eps = 0x1p-53;
-constexpr double k_ccw = (3.0 + 16.0 * k_eps) * k_eps;
-// Below this magnitude a product may have underflowed: the filter declines (predicates.cpp's k_tiny).
-constexpr double k_tiny = 0x1p-900;
+using exact::k_ccw;
+using exact::k_tiny;
 
 /// The filtered sign of l − r in eight lanes: neg where the rounded value is negative, certain where
 /// the filter vouches for that sign. exact::orient's filter vouches iff |l − r| > k_ccw·(|l| + |r|) and

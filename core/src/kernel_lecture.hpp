@@ -134,7 +134,7 @@ FrameStatus step_ball(Ball& ball, std::span<const Wall> walls, std::vector<HitEv
         bool found = false;
         std::uint32_t best = 0;
         LegResult<Real> hit{};
-        for (std::uint32_t i : detail::candidates(walls, index, a, b, scratch.candidates)) {
+        for (std::uint32_t i : detail::candidates(walls, index, a, b, scratch.candidates, scratch.all_walls)) {
             if (i == last) continue;
             const LegResult<Real> r = sweep_leg(pos, d, to<Real>(walls[i].p0), to<Real>(walls[i].p1));
             if (r.miss != Miss::none) continue;

@@ -95,7 +95,7 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
         bool found = false;
         std::uint32_t best = 0;
         int best_sb = 0;
-        for (std::uint32_t i : detail::candidates(walls, index, q, b, scratch.candidates)) {
+        for (std::uint32_t i : detail::candidates(walls, index, q, b, scratch.candidates, scratch.all_walls)) {
             const Leg leg = test_leg(q, b, walls[i]);
             if (leg.miss != Miss::none) continue;
             if (found) {

@@ -9,15 +9,18 @@
 namespace ricochet::detail {
 
 std::span<const std::uint32_t> candidates(std::span<const Wall> walls, const WallIndex* index, Vec2 a, Vec2 b,
-                                          std::vector<std::uint32_t>& scratch) {
-    scratch.clear();
+                                          std::vector<std::uint32_t>& out, std::vector<std::uint32_t>& all) {
     if (index != nullptr) {
-        index->query(a, b, scratch);
-    } else {
-        scratch.resize(walls.size());
-        std::iota(scratch.begin(), scratch.end(), std::uint32_t{0});
+        out.clear();
+        index->query(a, b, out);
+        return out;
     }
-    return scratch;
+    // Every wall: the list 0..n−1 is built once per scratch, not once per leg.
+    if (all.size() != walls.size()) {
+        all.resize(walls.size());
+        std::iota(all.begin(), all.end(), std::uint32_t{0});
+    }
+    return all;
 }
 
 bool on_closed_segment(Vec2 p, const Wall& w) {
@@ -39,7 +42,7 @@ bool arrive(Vec2 q, Vec2 r, const BallMemory& before, std::span<const Wall> wall
         return true;
     }
     out.count = 0;
-    for (std::uint32_t i : candidates(walls, index, q, r, scratch.touching)) {
+    for (std::uint32_t i : candidates(walls, index, q, r, scratch.touching, scratch.all_walls)) {
         const Wall& w = walls[i];
         if (exact::side(r, w) != 0 || !on_closed_segment(r, w)) continue;
         const int from = exact::side(q, w);
@@ -61,7 +64,7 @@ bool piece_allowed(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wal
         const Contact& c = memory.contacts[k];
         if (exact::side(r, walls[c.wall]) == -c.side) return false;
     }
-    for (std::uint32_t i : candidates(walls, index, q, r, scratch.candidates)) {
+    for (std::uint32_t i : candidates(walls, index, q, r, scratch.candidates, scratch.all_walls)) {
         const Wall& w = walls[i];
         const int sq = exact::side(q, w);
         const int sr = exact::side(r, w);

@@ -10,9 +10,9 @@
 
 namespace ricochet::detail {
 
-/// Walls to try for the segment a → b: every wall, or what the index says.
+/// Walls to try for the segment a → b: every wall (all, filled once), or what the index says (into out).
 std::span<const std::uint32_t> candidates(std::span<const Wall> walls, const WallIndex* index, Vec2 a, Vec2 b,
-                                          std::vector<std::uint32_t>& scratch);
+                                          std::vector<std::uint32_t>& out, std::vector<std::uint32_t>& all);
 
 /// True if p lies on the closed segment of w, given that it lies on w's line.
 bool on_closed_segment(Vec2 p, const Wall& w);

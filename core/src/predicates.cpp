@@ -10,14 +10,8 @@
 namespace ricochet::exact {
 namespace {
 
-// Unit roundoff of double: every basic operation is exact up to a factor (1 ± k_eps).
-constexpr double k_eps = 0x1p-53;
-// Shewchuk's bound for a 2×2 determinant of differences: |det − fl(det)| ≤ k_ccw·(|l| + |r|).
-constexpr double k_ccw = (3.0 + 16.0 * k_eps) * k_eps;
 // Generous bound for a sum of squares of differences (each square off by ≤ 3ε, sums ≤ 2ε more).
 constexpr double k_sq = 8.0 * k_eps;
-// Below this magnitude a product may have underflowed: the filter declines and the exact path decides.
-constexpr double k_tiny = 0x1p-900;
 // Expansion arithmetic is exact when no product underflows or overflows: every non-zero input lies
 // in [2^-450, 2^450], so products lie in [2^-900, 2^900] with all 106 bits representable.
 constexpr double k_exp_min = 0x1p-450;

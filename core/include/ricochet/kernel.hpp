@@ -152,6 +152,7 @@ enum class FrameStatus : std::uint8_t {
 struct StepScratch {
     std::vector<std::uint32_t> candidates;
     std::vector<std::uint32_t> touching;
+    std::vector<std::uint32_t> all_walls;  ///< 0, 1, …, n − 1: every wall, when there is no index
 };
 
 /// Steps one ball through one frame among walls: earliest hit, bounce, search again from the hit

@@ -10,6 +10,14 @@
 
 namespace ricochet::exact {
 
+/// Unit roundoff of double: every basic operation is exact up to a factor (1 ± k_eps).
+inline constexpr double k_eps = 0x1p-53;
+/// Shewchuk's bound for a 2×2 determinant of differences: |det − fl(det)| ≤ k_ccw·(|l| + |r|), where
+/// l and r are the two rounded products. A filter may vouch for sign(fl(det)) only beyond it.
+inline constexpr double k_ccw = (3.0 + 16.0 * k_eps) * k_eps;
+/// Below this magnitude a product may have underflowed: filters decline and the exact path decides.
+inline constexpr double k_tiny = 0x1p-900;
+
 /// sign((b − a) × (c − a)): +1 if a, b, c turn counter-clockwise, −1 clockwise, 0 collinear.
 int orient(Vec2 a, Vec2 b, Vec2 c);
 /// sign of BC = n·(p − P0) with n = (e_y, −e_x): +1 Outside, −1 Inside, 0 On. Equals −orient(P0, P1, p).
