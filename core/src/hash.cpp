@@ -33,17 +33,27 @@ void encode_event(const Event& e, unsigned char (&r)[k_event_record_size]) {
 RunHasher::RunHasher() : state_(XXH64_createState()) { XXH64_reset(static_cast<XXH64_state_t*>(state_), 0); }
 RunHasher::~RunHasher() { XXH64_freeState(static_cast<XXH64_state_t*>(state_)); }
 
+void RunHasher::flush() const {
+    XXH64_update(static_cast<XXH64_state_t*>(state_), buffer_, used_);
+    used_ = 0;
+}
+
 void RunHasher::add(const Event& event) {
+    if (used_ + k_event_record_size > sizeof buffer_) flush();
     unsigned char record[k_event_record_size];
     encode_event(event, record);
-    XXH64_update(static_cast<XXH64_state_t*>(state_), record, k_event_record_size);
+    std::memcpy(buffer_ + used_, record, k_event_record_size);
+    used_ += k_event_record_size;
 }
 
 void RunHasher::add(std::span<const Event> events) {
     for (const Event& e : events) add(e);
 }
 
-std::uint64_t RunHasher::digest() const { return XXH64_digest(static_cast<const XXH64_state_t*>(state_)); }
+std::uint64_t RunHasher::digest() const {
+    flush();
+    return XXH64_digest(static_cast<const XXH64_state_t*>(state_));
+}
 
 std::uint64_t hash_events(std::span<const Event> events) {
     RunHasher h;

@@ -45,6 +45,11 @@ public:
     std::uint64_t digest() const;
 
 private:
+    void flush() const;
+    // Records are batched so XXH64_update sees 4 KiB at a time (a 56-byte update per event costs
+    // more than the hashing itself); the digest is the same as hashing record by record.
+    mutable unsigned char buffer_[k_event_record_size * 73];
+    mutable std::size_t used_ = 0;
     void* state_;  // XXH64_state_t*
 };
 
