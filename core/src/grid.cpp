@@ -138,6 +138,23 @@ void WallGrid::query(Vec2 a, Vec2 b, std::vector<std::uint32_t>& out) const {
     if (cells > 1) dedupe_tail(out, base);
 }
 
+void WallGrid::prefetch(Vec2 p, int stage, std::span<const Wall> walls) const {
+    if (wall_count_ == 0) return;
+    const std::size_t c = static_cast<std::size_t>(clamp_floor((p.x - ox_) * inv_, 0, nx_ - 1)) * ny_ +
+                          static_cast<std::size_t>(clamp_floor((p.y - oy_) * inv_, 0, ny_ - 1));
+    if (stage == 0) {
+        __builtin_prefetch(&start_[c]);
+        return;
+    }
+    const std::uint32_t first = start_[c], last = start_[c + 1];
+    if (first == last) return;
+    if (stage == 1) {
+        __builtin_prefetch(&items_[first]);
+        return;
+    }
+    for (std::uint32_t k = first; k < last && k < first + 4; ++k) __builtin_prefetch(&walls[items_[k]]);
+}
+
 // ---------------------------------------------------------------------------------------------
 // WallBvh
 

@@ -13,7 +13,18 @@ void ParallelStepper::run_part(Part& part, KernelId k, std::span<Ball> balls, st
     part.hits.clear();
     part.offset.clear();
     part.offset.push_back(0);
+    // With a grid too big for the caches, fetch the cells of the balls a few steps ahead: each ball's
+    // cell entry, wall list and walls are cache misses otherwise (measured, 10^6-wall maze: ~820 →
+    // ~320 ns per ball-frame; below 8 MB the hints only cost, ~10%). Results are unaffected.
+    const auto* grid = dynamic_cast<const WallGrid*>(index);
+    if (grid != nullptr && grid->bytes() + walls.size_bytes() < (std::size_t{8} << 20)) grid = nullptr;
+    constexpr std::size_t k_ahead = 8;
     for (std::size_t i = part.begin; i < part.end; ++i) {
+        if (grid != nullptr) {
+            if (i + 3 * k_ahead < part.end) grid->prefetch(balls[i + 3 * k_ahead].pos, 0, walls);
+            if (i + 2 * k_ahead < part.end) grid->prefetch(balls[i + 2 * k_ahead].pos, 1, walls);
+            if (i + k_ahead < part.end) grid->prefetch(balls[i + k_ahead].pos, 2, walls);
+        }
         Ball& b = balls[i];
         // A ball at rest does no sweep. Only for robust is skipping step_ball bit-identical: it stops
         // at v = 0 before touching anything, whereas the lecture kernels round the position through

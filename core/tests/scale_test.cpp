@@ -219,6 +219,17 @@ TEST(Scale, ThreadCountsAllGiveTheSameHash) {
         EXPECT_EQ(hash_events(run_scaled(s, KernelId::robust, 30, {.threads = t})), one) << t << " threads";
 }
 
+TEST(Scale, BigGridWithCacheHintsSameBits) {
+    // A 176 000-wall maze: the grid is past the size where ParallelStepper issues cache hints.
+    Rng rng(16);
+    const Scene s = maze(rng, 420, 3000, 0.0);
+    const WallGrid grid(s.walls);
+    ASSERT_GT(grid.bytes() + s.walls.size() * sizeof(Wall), std::size_t{8} << 20);
+    const auto plain = run_world(s, KernelId::robust, 8, &grid);
+    EXPECT_EQ(hash_events(run_scaled(s, KernelId::robust, 8, {.threads = 1})), hash_events(plain));
+    EXPECT_EQ(hash_events(run_scaled(s, KernelId::robust, 8, {.threads = 2})), hash_events(plain));
+}
+
 /// Closed segments ab and pq meet (exactly).
 bool segments_meet(Vec2 a, Vec2 b, Vec2 p, Vec2 q) {
     const int o1 = exact::orient(a, b, p), o2 = exact::orient(a, b, q);

@@ -53,6 +53,11 @@ public:
     std::uint32_t rows() const { return ny_; }
     /// Wall references stored in all cells together (a wall crossing k cells counts k times).
     std::size_t references() const { return items_.size(); }
+    /// Bytes of the cell table and wall lists.
+    std::size_t bytes() const { return (start_.size() + items_.size()) * sizeof(std::uint32_t); }
+    /// Cache hints for a query that will start at p, in three stages issued some balls apart:
+    /// stage 0 fetches the cell's entry, 1 its wall list, 2 those walls. Changes no result.
+    void prefetch(Vec2 p, int stage, std::span<const Wall> walls) const;
 
 private:
     template <class F>
