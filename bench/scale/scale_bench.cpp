@@ -13,6 +13,8 @@
 #include <random>
 #include <thread>
 
+#include <time.h>
+
 #include "box2d_peer.hpp"
 #include "ricochet/grid.hpp"
 #include "ricochet/parallel.hpp"
@@ -69,23 +71,40 @@ std::vector<Ball> make_balls(std::size_t count, int n, std::uint64_t seed) {
     return balls;
 }
 
-/// Median seconds per frame: frames run in chunks of at least ~2 ms, until budget seconds have
-/// passed (at least 3 chunks, after one warm-up frame).
-double time_per_frame(const std::function<void()>& frame, double budget) {
+/// Seconds per frame: wall-clock and this thread's CPU time (on a shared machine the CPU time leaves
+/// out the time the thread waited for a core).
+struct FrameTime {
+    double wall = 0, cpu = 0;
+};
+
+double thread_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+/// Median seconds per frame (wall and CPU, each its own median): frames run in chunks of at least
+/// ~2 ms, until budget seconds have passed (at least 3 chunks, after one warm-up frame).
+FrameTime time_per_frame(const std::function<void()>& frame, double budget) {
     auto t0 = Clock::now();
     frame();
     const double first = std::chrono::duration<double>(Clock::now() - t0).count();
     const int chunk = std::max(1, static_cast<int>(std::ceil(2e-3 / std::max(first, 1e-9))));
-    std::vector<double> per_frame;
+    std::vector<double> wall, cpu;
     const auto start = Clock::now();
-    while (per_frame.size() < 3 || (std::chrono::duration<double>(Clock::now() - start).count() < budget &&
-                                    per_frame.size() < 200)) {
+    while (wall.size() < 3 ||
+           (std::chrono::duration<double>(Clock::now() - start).count() < budget && wall.size() < 200)) {
         t0 = Clock::now();
+        const double c0 = thread_cpu_seconds();
         for (int i = 0; i < chunk; ++i) frame();
-        per_frame.push_back(std::chrono::duration<double>(Clock::now() - t0).count() / chunk);
+        cpu.push_back((thread_cpu_seconds() - c0) / chunk);
+        wall.push_back(std::chrono::duration<double>(Clock::now() - t0).count() / chunk);
     }
-    std::nth_element(per_frame.begin(), per_frame.begin() + per_frame.size() / 2, per_frame.end());
-    return per_frame[per_frame.size() / 2];
+    const auto median = [](std::vector<double>& v) {
+        std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+        return v[v.size() / 2];
+    };
+    return {median(wall), median(cpu)};
 }
 
 /// True if the piece q → r goes strictly from one side of a wall to the other through its closed
@@ -107,6 +126,7 @@ struct Row {
     std::size_t walls = 0, balls = 0;
     unsigned threads = 1;
     double ms_per_frame = 0, ns_per_ball_frame = 0;
+    double cpu_ns_per_ball_frame = 0;  // this thread's CPU time (one-thread rows)
     double hits_per_ball_frame = -1;  // from the checked frames, -1 if not checked
     long long tunnels = -1;           // pieces crossing a wall in the checked frames, -1 if not checked
     std::size_t checked_ball_frames = 0;
@@ -133,12 +153,13 @@ void measure(const Config& cfg, const std::string& sweep, int n, std::size_t bal
         r.balls = ball_count;
         return r;
     };
-    const auto finish = [&](Row r, double seconds) {
-        r.ms_per_frame = seconds * 1e3;
-        r.ns_per_ball_frame = seconds * 1e9 / static_cast<double>(ball_count);
+    const auto finish = [&](Row r, FrameTime t) {
+        r.ms_per_frame = t.wall * 1e3;
+        r.ns_per_ball_frame = t.wall * 1e9 / static_cast<double>(ball_count);
+        r.cpu_ns_per_ball_frame = t.cpu * 1e9 / static_cast<double>(ball_count);
         rows.push_back(r);
-        fmt::print("{:<7} {:>8} walls {:>8} balls  {:<13} {:>10.4f} ms/frame {:>9.1f} ns/ball-frame", r.sweep, r.walls,
-                   r.balls, r.method, r.ms_per_frame, r.ns_per_ball_frame);
+        fmt::print("{:<7} {:>8} walls {:>8} balls  {:<13} {:>10.4f} ms/frame {:>9.1f} ns/ball-frame ({:>7.1f} CPU)",
+                   r.sweep, r.walls, r.balls, r.method, r.ms_per_frame, r.ns_per_ball_frame, r.cpu_ns_per_ball_frame);
         if (r.tunnels >= 0)
             fmt::print("  {:.3f} hits/ball-frame, {} tunnels in {} checked ball-frames", r.hits_per_ball_frame,
                        r.tunnels, r.checked_ball_frames);
@@ -180,8 +201,7 @@ void measure(const Config& cfg, const std::string& sweep, int n, std::size_t bal
         ParallelStepper stepper(1);
         Row r = base(method);
         if (check) check_ours(r);
-        const double s = time_per_frame([&] { stepper.step(KernelId::robust, balls, mem, walls, index); }, cfg.budget);
-        finish(r, s);
+        finish(r, time_per_frame([&] { stepper.step(KernelId::robust, balls, mem, walls, index); }, cfg.budget));
     };
     ours("robust+grid", &grid, true);
     const bool walls_sweep = sweep == "walls";
@@ -219,12 +239,11 @@ void measure(const Config& cfg, const std::string& sweep, int n, std::size_t bal
             r.checked_ball_frames = cb * static_cast<std::size_t>(cfg.check_frames);
             r.hits_per_ball_frame = static_cast<double>(h) / static_cast<double>(r.checked_ball_frames);
         }
-        const double s = time_per_frame(
-            [&] {
-                for (FloatBall& b : fb) peer.step(b, nullptr);
-            },
-            cfg.budget);
-        finish(r, s);
+        finish(r, time_per_frame(
+                      [&] {
+                          for (FloatBall& b : fb) peer.step(b, nullptr);
+                      },
+                      cfg.budget));
     }
 }
 
@@ -264,7 +283,7 @@ int run_scale_bench(bool quick, unsigned threads, const std::string& out_dir) {
             std::vector<BallMemory> mem(nb);
             ParallelStepper stepper(t);
             const double s =
-                time_per_frame([&] { stepper.step(KernelId::robust, balls, mem, walls, &grid); }, cfg.budget);
+                time_per_frame([&] { stepper.step(KernelId::robust, balls, mem, walls, &grid); }, cfg.budget).wall;
             if (t == 1) one = s;
             Row r;
             r.sweep = "threads";
@@ -285,11 +304,12 @@ int run_scale_bench(bool quick, unsigned threads, const std::string& out_dir) {
     const std::string csv_path = out_dir + "/scale.csv";
     {
         auto csv = fmt::output_file(csv_path);
-        csv.print("sweep,method,walls,balls,threads,ms_per_frame,ns_per_ball_frame,hits_per_ball_frame,tunnels,"
-                  "checked_ball_frames\n");
+        csv.print("sweep,method,walls,balls,threads,ms_per_frame,ns_per_ball_frame,cpu_ns_per_ball_frame,"
+                  "hits_per_ball_frame,tunnels,checked_ball_frames\n");
         for (const Row& r : rows)
-            csv.print("{},{},{},{},{},{},{},{},{},{}\n", r.sweep, r.method, r.walls, r.balls, r.threads, r.ms_per_frame,
-                      r.ns_per_ball_frame, r.hits_per_ball_frame, r.tunnels, r.checked_ball_frames);
+            csv.print("{},{},{},{},{},{},{},{},{},{},{}\n", r.sweep, r.method, r.walls, r.balls, r.threads, r.ms_per_frame,
+                      r.ns_per_ball_frame, r.cpu_ns_per_ball_frame, r.hits_per_ball_frame, r.tunnels,
+                      r.checked_ball_frames);
     }
     const std::vector<std::string> methods{"robust+grid", "robust+bvh", "robust-brute", "box2d-2.4.1"};
     {
