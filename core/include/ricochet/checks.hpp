@@ -35,9 +35,9 @@ double speed_rel_bound(KernelId kernel);
 
 /// The first broken invariant of a run.
 struct CheckFailure {
-    Check check = Check::no_tunnel;
-    std::int64_t frame = 0;
-    std::uint32_t ball = 0;
+    Check check = Check::no_tunnel;  ///< the invariant that broke
+    std::int64_t frame = 0;          ///< the first frame it broke in
+    std::uint32_t ball = 0;          ///< the ball it broke for
     std::string message;  ///< expected against actual, for people
     /// "CHECK at frame F ball I: MESSAGE".
     std::string str() const;
@@ -68,9 +68,9 @@ Scene mirror_x(const Scene& scene);
 
 /// Outcome of replaying one log against its checks and expect lines.
 struct ReplayResult {
-    bool passed = false;
+    bool passed = false;  ///< every check and expect line held (or the expected failure reproduced)
     std::string message;  ///< one line: why it failed, or what it checked
-    CheckedRun run;
+    CheckedRun run;       ///< the run itself (events not kept)
 };
 
 /// Replays scene (its kernel unless overridden, its frames): checks, then expect failure / hash / states.

@@ -33,10 +33,12 @@ void encode_event(const Event& event, unsigned char (&record)[k_event_record_siz
 /// Streaming run hash: add events in order, then digest.
 class RunHasher {
 public:
+    /// An empty hash (XXH64, seed 0).
     RunHasher();
+    /// Frees the XXH64 state.
     ~RunHasher();
-    RunHasher(const RunHasher&) = delete;
-    RunHasher& operator=(const RunHasher&) = delete;
+    RunHasher(const RunHasher&) = delete;             ///< owns its state: not copyable
+    RunHasher& operator=(const RunHasher&) = delete;  ///< owns its state: not copyable
     /// Adds one event's record.
     void add(const Event& event);
     /// Adds events in order.
