@@ -1,0 +1,27 @@
+#!/bin/bash -eu
+# Builds every ricochet fuzz target with the engine's compilers and flags ($CC $CXX $CFLAGS $CXXFLAGS
+# $LIB_FUZZING_ENGINE) into $OUT, each with <target>_seed_corpus.zip and <target>.dict.
+# ClusterFuzzLite/OSS-Fuzz run it in their builder image; fuzz/clusterfuzzlite_test.sh runs it locally.
+SRC_DIR="${RICOCHET_SRC:-$SRC/ricochet}"
+BUILD="${WORK:-/tmp}/ricochet-fuzz-build"
+TARGETS="parser static sweep scene"
+
+# -ffp-contract=off comes from the project; the engine's sanitizer flags arrive in CFLAGS/CXXFLAGS.
+cmake -S "$SRC_DIR" -B "$BUILD" -G Ninja \
+  -DCMAKE_C_COMPILER="$CC" -DCMAKE_CXX_COMPILER="$CXX" \
+  -DCMAKE_C_FLAGS="$CFLAGS" -DCMAKE_CXX_FLAGS="$CXXFLAGS" \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DRICOCHET_TESTS=OFF -DRICOCHET_BENCH=OFF \
+  -DRICOCHET_FUZZ_ENGINE="$LIB_FUZZING_ENGINE"
+cmake --build "$BUILD" -j"$(nproc)" --target $(for t in $TARGETS; do printf 'fuzz_%s ' "$t"; done)
+
+for t in $TARGETS; do
+  cp "$BUILD/fuzz/fuzz_$t" "$OUT/$t"
+  cp "$SRC_DIR/fuzz/$t.dict" "$OUT/$t.dict"
+  rm -f "$OUT/${t}_seed_corpus.zip"
+  # Seeds: the committed regression inputs; the parser also starts from every replay log.
+  (cd "$SRC_DIR/fuzz/corpus/$t" && zip -q -r "$OUT/${t}_seed_corpus.zip" .)
+  if [ "$t" = parser ]; then
+    (cd "$SRC_DIR/replays" && zip -q -r "$OUT/${t}_seed_corpus.zip" . -i '*.scene')
+  fi
+done
