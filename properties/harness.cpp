@@ -1,0 +1,243 @@
+// The property harness (harness.hpp).
+//
+// Why we record the failing case ourselves: RapidCheck calls the property again for every shrink it
+// tries, so writing a log from inside the property would save every intermediate case. Its shrinker
+// keeps the current counterexample and tries its shrinks in turn; a shrink that still fails becomes the
+// new current one; it stops when every shrink of the current one passes. The failing calls therefore
+// come in order of ever smaller cases and the last failing call is the minimal one (this version also
+// replays that minimal case once more at the end, see rapidcheck/BeforeMinimalTestCase.h). So the
+// property only remembers its latest failing scene, and run_property saves that one after
+// checkProperty has returned, then reads the saved log back and checks that it still fails.
+#include "harness.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string_view>
+
+#include "ricochet/checks.hpp"
+#include "ricochet/scene_log.hpp"
+
+namespace ricochet {
+
+void showValue(const Scene& scene, std::ostream& os) { os << "\n" << write_scene_log(scene); }
+
+}  // namespace ricochet
+
+namespace ricochet::props {
+namespace {
+
+std::atomic<long long> g_total_cases{0};
+/// The labels of the case being generated, or nullptr outside one.
+thread_local std::set<std::string>* g_case_tags = nullptr;
+
+/// Prints the total number of generated cases when the test program ends.
+class CaseCounter : public ::testing::Environment {
+public:
+    void TearDown() override {
+        fmt::print("ricochet properties: {} cases generated in total (kernels:", total_cases());
+        for (KernelId k : kernels_under_test()) fmt::print(" {}", kernel_name(k));
+        fmt::print(")\n");
+    }
+};
+[[maybe_unused]] ::testing::Environment* const g_counter = ::testing::AddGlobalTestEnvironment(new CaseCounter);
+
+/// True if RC_PARAMS sets key (then RapidCheck's configuration wins over our default).
+bool rc_params_set(std::string_view key) {
+    const char* env = std::getenv("RC_PARAMS");
+    return env != nullptr && std::string_view(env).find(key) != std::string_view::npos;
+}
+
+std::vector<std::string> words(std::string_view s) {
+    std::vector<std::string> out;
+    std::istringstream in{std::string(s)};
+    for (std::string w; in >> w;) out.push_back(w);
+    return out;
+}
+
+/// True if one of the scene's `from` lines reads `property NAME ...`.
+bool names_property(const Scene& s, std::string_view name) {
+    return std::any_of(s.provenance.begin(), s.provenance.end(), [&](const std::string& from) {
+        const auto w = words(from);
+        return w.size() >= 2 && w[0] == "property" && w[1] == name;
+    });
+}
+
+/// Runs the statement, turning an unexpected exception into a failure of the property's check.
+std::optional<Failure> judge(const Property& p, KernelId k, const Scene& s) {
+    try {
+        return p.statement(k, s);
+    } catch (const std::exception& e) {
+        return Failure{p.check, fmt::format("the statement threw: {}", e.what())};
+    }
+}
+
+/// Replays every saved log in replay_dir() that names p, under kernel k. Returns how many it replayed.
+int replay_saved(const Property& p, KernelId k) {
+    const std::filesystem::path dir = replay_dir();
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) return 0;
+    std::vector<std::filesystem::path> logs;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+        if (entry.path().extension() == ".scene") logs.push_back(entry.path());
+    std::sort(logs.begin(), logs.end());  // a fixed order, whatever the file system's
+    int replayed = 0;
+    for (const auto& path : logs) {
+        auto parsed = read_scene_log(path);
+        if (const auto* d = std::get_if<Diagnostic>(&parsed)) {
+            // Not ours to judge: another harness may keep deliberately broken logs there.
+            fmt::print("note: skipping {}: {}\n", path.string(), d->str());
+            continue;
+        }
+        Scene s = std::get<Scene>(std::move(parsed));
+        if (!names_property(s, p.name)) continue;
+        ++replayed;
+        // The log's case is replayed against the kernel under test: a case that once broke some kernel
+        // stays a regression test for every kernel the property is claimed for.
+        s.kernel = k;
+        if (const auto f = judge(p, k, s))
+            ADD_FAILURE() << fmt::format("saved log {} breaks {} under {} again: {}: {}", path.string(), p.name,
+                                         kernel_name(k), check_name(f->check), f->message);
+    }
+    return replayed;
+}
+
+/// Saves the minimal failing case as a scene log; returns a report for the test's failure message.
+std::string save_failure(const Property& p, KernelId k, std::uint64_t seed, const Scene& found, const Failure& f) {
+    Scene log = found;
+    log.kernel = k;
+    log.checks = {f.check};
+    log.expect_hash.reset();
+    log.expect_states.clear();
+    log.expect_failure.reset();  // replay must show the failure, not expect it
+    log.provenance = {fmt::format("property {} seed {}", p.name, seed)};
+    std::string error;
+    const auto path = save_scene_log_once(replay_dir(), p.name, log, &error);
+    if (!path) return fmt::format("could not save the case: {}", error);
+    std::string report = fmt::format("minimal case saved as {}", path->string());
+    // Read the saved log back: it must still break the property, and replay should see the failure.
+    auto parsed = read_scene_log(*path);
+    if (const auto* d = std::get_if<Diagnostic>(&parsed)) return report + fmt::format(" (UNREADABLE: {})", d->str());
+    const Scene back = std::get<Scene>(std::move(parsed));
+    const auto again = judge(p, k, back);
+    report += again ? "; re-running the saved log breaks the property again"
+                    : "; WARNING: the saved log does NOT break the property when re-run";
+    const ReplayResult replay = replay_scene(back);
+    report += fmt::format("; `ricochet replay` says: {} ({})", replay.passed ? "passed" : "FAILED", replay.message);
+    return report;
+}
+
+}  // namespace
+
+std::vector<KernelId> kernels_under_test() {
+    const char* env = std::getenv("RICOCHET_KERNEL");
+    if (env == nullptr || *env == '\0') return {KernelId::robust, KernelId::exact};
+    std::vector<KernelId> out;
+    std::string_view rest = env;
+    while (!rest.empty()) {
+        const auto comma = rest.find(',');
+        const std::string_view name = rest.substr(0, comma);
+        if (name == "all") {
+            out.assign(k_all_kernels.begin(), k_all_kernels.end());
+        } else if (const auto k = parse_kernel(name)) {
+            out.push_back(*k);
+        } else {
+            fmt::print(stderr, "RICOCHET_KERNEL: error: no kernel called '{}' (lecture-float, lecture-double, "
+                               "robust, exact, all)\n", name);
+            std::exit(2);
+        }
+        rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+    }
+    return out;
+}
+
+std::filesystem::path replay_dir() {
+    const char* env = std::getenv("RICOCHET_REPLAY_DIR");
+    if (env != nullptr && *env != '\0') return env;
+    return RICOCHET_DEFAULT_REPLAY_DIR;
+}
+
+void tag(std::string_view label) {
+    if (g_case_tags != nullptr) g_case_tags->emplace(label);
+}
+
+std::string str(Vec2 p) { return fmt::format("({}, {})", p.x, p.y); }
+std::string str(const Wall& w) { return fmt::format("wall {} -> {}", str(w.p0), str(w.p1)); }
+
+long long total_cases() { return g_total_cases.load(); }
+
+std::string kernel_param_name(const ::testing::TestParamInfo<KernelId>& info) {
+    std::string n(kernel_name(info.param));
+    std::replace(n.begin(), n.end(), '-', '_');
+    return n;
+}
+
+void run_property(const Property& p, KernelId k) {
+    const auto start = std::chrono::steady_clock::now();
+    const int replayed = replay_saved(p, k);
+
+    rc::detail::TestParams params = rc::detail::configuration().testParams;
+    if (!rc_params_set("max_success")) params.maxSuccess = p.default_max_success;
+    rc::detail::TestMetadata metadata;
+    metadata.id = fmt::format("{}/{}", p.name, kernel_name(k));
+    metadata.description = metadata.id;
+
+    struct Found {
+        Scene scene;
+        Failure failure;
+    };
+    std::optional<Found> last;  // the latest failing case: after shrinking, the minimal one
+    std::map<std::string, long> tally;  // label -> cases carrying it
+    long cases = 0;
+    const auto property = [&] {
+        Scene s = *p.gen;
+        s.kernel = k;
+        std::set<std::string> labels;
+        g_case_tags = &labels;
+        auto f = judge(p, k, s);
+        g_case_tags = nullptr;
+        ++cases;
+        for (const auto& l : labels) ++tally[l];
+        if (f) {
+            const std::string message = fmt::format("{}: {}", check_name(f->check), f->message);
+            last = Found{std::move(s), std::move(*f)};
+            RC_FAIL(message);
+        }
+    };
+    const rc::detail::TestResult result = rc::detail::checkTestable(property, metadata, params);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    if (result.is<rc::detail::SuccessResult>()) {
+        const auto* ok = &result.get<rc::detail::SuccessResult>();
+        g_total_cases += ok->numSuccess;
+        std::string table;
+        for (const auto& [label, n] : tally)
+            table += fmt::format("  {:6.2f}% {}\n", 100.0 * double(n) / double(std::max(cases, 1L)), label);
+        fmt::print("{} [{}]: OK, {} cases, {} saved logs replayed, {:.2f} s, seed {}\n{}", p.name, kernel_name(k),
+                   ok->numSuccess, replayed, seconds, params.seed, table);
+        std::fflush(stdout);
+        return;
+    }
+    std::ostringstream ss;
+    rc::detail::printResultMessage(result, ss);
+    if (result.is<rc::detail::FailureResult>()) {
+        const auto* bad = &result.get<rc::detail::FailureResult>();
+        g_total_cases += bad->numSuccess;
+        const std::string saved =
+            last ? save_failure(p, k, params.seed, last->scene, last->failure) : "no failing case was recorded";
+        ADD_FAILURE() << fmt::format("{} [{}] fails after {} cases ({:.2f} s, seed {}); {}\n{}", p.name,
+                                     kernel_name(k), bad->numSuccess, seconds, params.seed, saved, ss.str());
+        return;
+    }
+    ADD_FAILURE() << fmt::format("{} [{}]: {}", p.name, kernel_name(k), ss.str());
+}
+
+}  // namespace ricochet::props

@@ -1,0 +1,87 @@
+// The property harness: which kernels are under test, how a property is run (saved logs first, then
+// RapidCheck), and how its shrunk counterexample becomes a scene log.
+#pragma once
+
+#include <gtest/gtest.h>  // before rapidcheck/gtest.h, which uses it
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ricochet/kernel.hpp"
+#include "ricochet/scene.hpp"
+
+namespace ricochet {
+/// Shows a Scene in RapidCheck's counterexample as the scene log it would be saved as.
+void showValue(const Scene& scene, std::ostream& os);
+}  // namespace ricochet
+
+namespace ricochet::props {
+
+/// The kernels RICOCHET_KERNEL names (one name, or several separated by commas); robust and exact if unset.
+std::vector<KernelId> kernels_under_test();
+
+/// The folder failures are saved into and saved logs are replayed from: RICOCHET_REPLAY_DIR, else replays/.
+std::filesystem::path replay_dir();
+
+/// Why a case broke a property: the scene-log check it breaks and what was expected against what happened.
+struct Failure {
+    Check check = Check::no_tunnel;
+    std::string message;
+};
+
+/// A property's statement: nothing if the scene satisfies it under the kernel, else the failure. Must be a
+/// pure function of (kernel, scene): it is also run on saved logs, so it may not rely on how the generator
+/// built the scene. A scene the statement does not apply to (a precondition fails) passes.
+using Statement = std::function<std::optional<Failure>(KernelId, const Scene&)>;
+
+/// A property: its name (as logs spell it in `from property NAME`), its main check, its generator and
+/// statement, and how many cases a default run generates per kernel.
+struct Property {
+    std::string name;
+    Check check = Check::no_tunnel;  ///< the check a log of this property names if the statement throws
+    rc::Gen<Scene> gen;
+    Statement statement;
+    int default_max_success = 1000;
+};
+
+/// Runs p against kernel k as the current GoogleTest test: first every saved log in replay_dir() that
+/// names p, then RapidCheck's search. A failure is reported through GoogleTest and its minimal case saved.
+void run_property(const Property& p, KernelId k);
+
+/// Cases generated (RapidCheck successes) so far in this process, over every property and kernel.
+long long total_cases();
+
+/// GoogleTest's parameter name for a kernel ("lecture_float", "robust", ...).
+std::string kernel_param_name(const ::testing::TestParamInfo<KernelId>& info);
+
+/// Marks the current case with label (each label counted once per case). The harness prints, per
+/// property and kernel, the share of generated cases carrying each label. RapidCheck's own RC_TAG /
+/// RC_CLASSIFY table counts every combination of labels, which with a dozen labels per case is
+/// unreadable; these are its marginals. No effect outside a generated case (e.g. replaying a log).
+void tag(std::string_view label);
+/// tag(label) if cond.
+inline void classify(bool cond, std::string_view label) {
+    if (cond) tag(label);
+}
+
+/// "(x, y)" with both numbers in shortest round-trip form.
+std::string str(Vec2 p);
+/// "wall (x0, y0) -> (x1, y1)".
+std::string str(const Wall& w);
+/// A failure of check c with a message.
+inline std::optional<Failure> fail(Check c, std::string message) { return Failure{c, std::move(message)}; }
+
+}  // namespace ricochet::props
+
+/// Declares the per-kernel GoogleTest suite SUITE: TEST_P(SUITE, Name) { run_property(make(), GetParam()); }.
+#define RICOCHET_PROPERTY_SUITE(SUITE)                                                                         \
+    class SUITE : public ::testing::TestWithParam<::ricochet::KernelId> {};                                    \
+    INSTANTIATE_TEST_SUITE_P(Kernels, SUITE, ::testing::ValuesIn(::ricochet::props::kernels_under_test()),     \
+                             ::ricochet::props::kernel_param_name)
