@@ -211,8 +211,10 @@ private:
             if (e.kind != Event::Kind::state) continue;
             const double v0 = std::hypot(before[e.ball].vel.x, before[e.ball].vel.y);
             const double v1 = std::hypot(e.vel.x, e.vel.y);
-            // | |v1| − |v0| | ≤ ((1+b)^n − 1)·|v0| + 4·2^−53·|v0| (hypot's own rounding on both sides).
-            const double allowed = (std::pow(1.0 + b, bounces) - 1.0) * v0 + 0x1p-51 * v0;
+            // | |v1| − |v0| | ≤ ((1+b)^n − 1)·|v0| + n·a + 4·2^−53·|v0| + 2^−1073 (hypot's own rounding on
+            // both sides, relative and, for subnormal speeds, absolute); a = k_speed_abs_bound.
+            const double allowed = (std::pow(1.0 + b, bounces) - 1.0) * v0 + bounces * k_speed_abs_bound +
+                                   0x1p-51 * v0 + 0x1p-1073;
             if (std::fabs(v1 - v0) > allowed)
                 return CheckFailure{Check::speed, f, e.ball,
                                     fmt::format("|v| went from {} to {} over {} bounce(s): relative change {:.3g}, "

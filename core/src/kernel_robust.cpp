@@ -53,12 +53,19 @@ bool point_in_circle(Vec2 p, const Circle& c) { return exact::point_circle(p, c)
 bool circles_overlap(const Circle& a, const Circle& b) { return exact::circle_circle(a, b) <= 0; }
 
 Vec2 reflect(Vec2 v, const Wall& w) {
-    // v' = v − 2(v·n̂)n̂ = v − (2(v·n)/(n·n))·n: no square root.
     const Vec2 n = normal(w);
-    const double nn = dot(n, n);
-    if (nn == 0.0) return v;
-    const double k = 2.0 * dot(v, n) / nn;
-    return v - k * n;
+    const double big = std::max(std::fabs(n.x), std::fabs(n.y));
+    // Degenerate: a zero-length wall has no normal.
+    if (big == 0.0) return v;
+    // m = n·2^-k with its larger component in [1, 2): exact, and m·m can neither overflow nor underflow,
+    // so n̂ = m/|m| is good to a few ulps for walls of any length. sqrt is correctly rounded: the same
+    // bits everywhere (std::hypot is not required to be).
+    const int k = std::ilogb(big);
+    const Vec2 m{std::ldexp(n.x, -k), std::ldexp(n.y, -k)};
+    const double len = std::sqrt(dot(m, m));
+    const Vec2 u{m.x / len, m.y / len};
+    // v' = v − 2(v·n̂)n̂; with |n̂| ≈ 1 no intermediate underflows before v itself does.
+    return v - (2.0 * dot(v, u)) * u;
 }
 
 Sweep sweep(Vec2 bs, Vec2 v, const Wall& w) {
