@@ -125,7 +125,7 @@ long first_hit_oracle(Vec2 bs, Vec2 be, std::span<const Wall> walls) {
         if (expected_miss(bs, be, w) != Miss::none) continue;
         // n·(Bs + s(Be − Bs) − P0) = 0  ⇒  s = BC(Bs)/(BC(Bs) − BC(Be)), BC up to the factor 1/|n|.
         const mpq_class ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
-        const auto bc = [&](Vec2 p) { return ey * (Q(p.x) - Q(w.p0.x)) - ex * (Q(p.y) - Q(w.p0.y)); };
+        const auto bc = [&](Vec2 p) -> mpq_class { return ey * (Q(p.x) - Q(w.p0.x)) - ex * (Q(p.y) - Q(w.p0.y)); };
         const mpq_class a = bc(bs), b = bc(be);
         const mpq_class s = a / (a - b);
         if (best < 0 || s < best_s) {
