@@ -77,16 +77,25 @@ bool rects_overlap_oracle(const Rect& a, const Rect& b) {
            std::max(a.bottom, b.bottom) <= std::min(a.top, b.top);
 }
 
-bool speed_within(Vec2 v, Vec2 w, int m, double b) {
+bool speed_within(Vec2 v, Vec2 w, int m, double b, double a) {
+    // (1 − b)^m·|v| − m·a ≤ |w| ≤ (1 + b)^m·|v| + m·a. |v| is irrational in general: it is bracketed by a
+    // 256-bit square root widened by 2^−200 relative, far below b; everything else is exact (GMP).
     const mpq_class vv = Q(v.x) * Q(v.x) + Q(v.y) * Q(v.y);
     const mpq_class ww = Q(w.x) * Q(w.x) + Q(w.y) * Q(w.y);
     mpq_class lo = 1, hi = 1;
-    // (1 ± b)^(2m) bounds the squares.
-    for (int i = 0; i < 2 * m; ++i) {
+    for (int i = 0; i < m; ++i) {
         lo *= 1 - Q(b);
         hi *= 1 + Q(b);
     }
-    return lo * vv <= ww && ww <= hi * vv;
+    const mpq_class abs_part = Q(a) * m;
+    if (sgn(abs_part) == 0) return lo * lo * vv <= ww && ww <= hi * hi * vv;
+    mpf_class root(vv, 256);
+    root = sqrt(root);
+    const mpq_class slack = mpq_class(1, 1) / (mpq_class(1) << 200);
+    const mpq_class vhi = mpq_class(root) * (1 + slack), vlo = mpq_class(root) * (1 - slack);
+    const mpq_class upper = hi * vhi + abs_part, lower = lo * vlo - abs_part;
+    if (ww > upper * upper) return false;
+    return sgn(lower) <= 0 || ww >= lower * lower;
 }
 
 bool sum_exact(double a, double b) { return Q(a + b) == Q(a) + Q(b); }

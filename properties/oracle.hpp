@@ -34,8 +34,9 @@ bool point_in_rect_oracle(Vec2 p, const Rect& r);
 /// Closed rectangles intersect.
 bool rects_overlap_oracle(const Rect& a, const Rect& b);
 
-/// (1 − b)^m·|v| ≤ |w| ≤ (1 + b)^m·|v|, decided exactly on squares (GMP).
-bool speed_within(Vec2 v, Vec2 w, int m, double b);
+/// (1 − b)^m·|v| − m·a ≤ |w| ≤ (1 + b)^m·|v| + m·a (m bounces, relative bound b, absolute bound a per
+/// bounce), decided exactly up to a 2^−200 relative bracket of |v| (GMP).
+bool speed_within(Vec2 v, Vec2 w, int m, double b, double a);
 /// True if a + b is computed exactly in double.
 bool sum_exact(double a, double b);
 /// 2D cross product's sign of two directions, exactly: sign(a × b).
