@@ -12,6 +12,7 @@
 
 #include "kernel_impl.hpp"
 #include "path.hpp"
+#include "ricochet/predicates.hpp"
 
 namespace ricochet::exact_kernel {
 namespace {
@@ -84,6 +85,13 @@ QV reflect(const QV& v, const QWall& w) {
     return v - Q(2 * dot(v, n) / nn) * n;
 }
 
+/// p lies on w's line and within its closed segment (on the line, the segment is its bounding box).
+bool on_segment(const QV& p, const QWall& w) {
+    if (sgn(bc(p, w)) != 0) return false;
+    const auto within = [](const Q& v, const Q& a, const Q& b) { return (a <= v && v <= b) || (b <= v && v <= a); };
+    return within(p.x, w.p0.x, w.p1.x) && within(p.y, w.p0.y, w.p1.y);
+}
+
 struct QContact {
     std::uint32_t wall;
     int side;
@@ -128,6 +136,7 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
     };
     std::vector<QHit> path;
     QV q = qv(ball.pos), v = qv(ball.vel);
+    int last_from = 0;  // the side the last bounce met its wall from
     Q rest = 1, now = 0;
     std::vector<QContact> contacts;
     for (std::uint8_t k = 0; k < memory.count; ++k) contacts.push_back({memory.contacts[k].wall, memory.contacts[k].side});
@@ -160,8 +169,9 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
             }
         }
         if (!first) {
+            // A contact stays while the ball slides along its wall's line on the closed segment.
+            std::erase_if(contacts, [&](const QContact& c) { return !on_segment(b, qwalls[c.wall]); });
             q = b;
-            contacts.clear();
             break;
         }
         const Q s = *first;
@@ -172,6 +182,12 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
         // while v' points through them; if one is still crossed, go straight back.
         std::vector<QContact> arrived;
         for (std::uint32_t i : at_first) arrived.push_back({i, sgn(bc(q, qwalls[i]))});
+        last_from = arrived.front().side;
+        // Contacts the ball slid along to get here are kept, with the side it first came from.
+        for (const QContact& c : contacts)
+            if (on_segment(x, qwalls[c.wall]) &&
+                std::none_of(arrived.begin(), arrived.end(), [&](const QContact& a) { return a.wall == c.wall; }))
+                arrived.push_back(c);
         QV w = reflect(v, qwalls[at_first.front()]);
         for (const QContact& c : arrived)
             if (sgn(dot(w, qwalls[c.wall].n())) == -c.side) w = reflect(w, qwalls[c.wall]);
@@ -186,20 +202,38 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
     // The printed path: each rational point rounded, each rounded piece checked.
     Vec2 p = ball.pos;
     BallMemory mem = memory;
-    auto visit = [&](const QV& target) {
-        const Vec2 x = detail::make_safe(p, nearest(target), mem, walls, nullptr, scratch);
+    // The last wall bounced off, kept on its side until the next bounce (BallMemory).
+    std::uint32_t bounced_wall = memory.bounced_wall;
+    detail::Keep bounced{memory.bounced_from != 0 ? &walls[memory.bounced_wall] : nullptr, memory.bounced_from};
+    auto visit = [&](const QV& target, const Wall* hit) {
+        const detail::Keep met{hit, hit != nullptr ? exact::side(p, *hit) : 0};
+        const Vec2 x = detail::make_safe(p, nearest(target), mem, walls, nullptr, scratch, met, bounced);
+        if (hit != nullptr) bounced = met;
         BallMemory arrived;
         detail::arrive(p, x, mem, walls, nullptr, scratch, arrived);
         mem = arrived;
         p = x;
     };
     for (const QHit& h : path) {
-        visit(h.point);
+        visit(h.point, &walls[h.wall]);
+        bounced_wall = h.wall;
         hits.push_back({h.wall, nearest(h.t), p});
     }
-    visit(q);
-    ball = {p, nearest(v)};
+    visit(q, nullptr);
+    // v' points strictly back to the side the last bounce came from; rounding a grazing v' can lose that,
+    // so the rounded velocity is moved by ulps towards that side until it holds again.
+    Vec2 vel = nearest(v);
+    if (!path.empty() && last_from != 0) {
+        const Wall& w = walls[path.back().wall];
+        const Vec2 n = normal(w);
+        for (int i = 0; i < 64 && exact::direction_side(vel, w) != last_from; ++i)
+            vel = {n.x == 0 ? vel.x : std::nextafter(vel.x, n.x * last_from > 0 ? INFINITY : -INFINITY),
+                   n.y == 0 ? vel.y : std::nextafter(vel.y, n.y * last_from > 0 ? INFINITY : -INFINITY)};
+    }
+    ball = {p, vel};
     memory = mem;
+    memory.bounced_from = static_cast<std::int8_t>(bounced.from);
+    memory.bounced_wall = bounced_wall;
     return status;
 }
 

@@ -81,6 +81,9 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
     Vec2 q = ball.pos, v = ball.vel;
     double rest = 1.0, now = 0.0;
     FrameStatus status = FrameStatus::ok;
+    // The last wall bounced off, kept on its side until the next bounce (BallMemory).
+    std::uint32_t bounced_wall = memory.bounced_wall;
+    detail::Keep bounced{memory.bounced_from != 0 ? &walls[memory.bounced_wall] : nullptr, memory.bounced_from};
     for (int bounce = 0;; ++bounce) {
         // A ball at rest does no sweep; a motion below an ulp of the position does not move it.
         if (v == Vec2{}) break;
@@ -101,7 +104,7 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
         // The earliest hit: exact ordering of crossings, the lowest index on a tie.
         bool found = false;
         std::uint32_t best = 0;
-        int best_sb = 0;
+        int best_sq = 0, best_sb = 0;
         for (std::uint32_t i : detail::candidates(walls, index, q, b, scratch.candidates, scratch.all_walls)) {
             const Leg leg = test_leg(q, b, walls[i]);
             if (leg.miss != Miss::none) continue;
@@ -111,16 +114,35 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
             }
             found = true;
             best = i;
+            best_sq = leg.sq;
             best_sb = leg.sb;
         }
         if (!found) {
-            // No wall meets q → b, so no wall is crossed and none is touched from a side.
-            q = b;
-            memory.count = 0;
+            // No wall meets q → b, so no wall is crossed and none is touched from a side. Straight on from a
+            // bounce the ball stays on the side it met that wall from: an end point rounded just across its
+            // line (beyond an end) is walked back.
+            const Vec2 end = bounced.wall != nullptr && exact::side(b, *bounced.wall) == -bounced.from
+                                 ? detail::make_safe(q, b, memory, walls, index, scratch, bounced)
+                                 : b;
+            // A contact stays while the ball slides along its wall's line on the closed segment.
+            BallMemory kept;
+            if (end != b) {
+                // Walked back: work out afresh which walls the new end lies on.
+                detail::arrive(q, end, memory, walls, index, scratch, kept);
+            }
+            for (std::uint8_t k = 0; k < memory.count && end == b; ++k) {
+                const Wall& w = walls[memory.contacts[k].wall];
+                if (exact::side(end, w) == 0 && detail::on_closed_segment(end, w)) kept.contacts[kept.count++] = memory.contacts[k];
+            }
+            memory = kept;
+            q = end;
             break;
         }
         const double s = crossing(q, b, walls[best], best_sb);
-        const Vec2 x = detail::make_safe(q, best_sb == 0 ? b : q + s * (b - q), memory, walls, index, scratch);
+        const Vec2 x = detail::make_safe(q, best_sb == 0 ? b : q + s * (b - q), memory, walls, index, scratch,
+                                         {&walls[best], best_sq}, bounced);
+        bounced = {&walls[best], best_sq};
+        bounced_wall = best;
         BallMemory arrived;
         detail::arrive(q, x, memory, walls, index, scratch, arrived);  // make_safe guarantees it fits
         now += s * rest;
@@ -134,11 +156,16 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
         }
         for (std::uint8_t k = 0; k < arrived.count; ++k)
             if (exact::direction_side(w, walls[arrived.contacts[k].wall]) == -arrived.contacts[k].side) w = -v;
+        // The ball leaves the wall it hit towards the side it came from: a grazing v whose rounded reflection
+        // does not point strictly back goes straight back instead (v crossed the line, so −v points back).
+        if (exact::direction_side(w, walls[best]) != best_sq) w = -v;
         v = w;
         rest *= 1.0 - s;
         q = x;
         memory = arrived;
     }
+    memory.bounced_from = static_cast<std::int8_t>(bounced.from);
+    memory.bounced_wall = bounced_wall;
     ball = {q, v};
     return status;
 }

@@ -46,8 +46,15 @@ bool arrive(Vec2 q, Vec2 r, const BallMemory& before, std::span<const Wall> wall
         const Wall& w = walls[i];
         if (exact::side(r, w) != 0 || !on_closed_segment(r, w)) continue;
         const int from = exact::side(q, w);
-        // Arriving along the wall's line is no crossing: nothing to remember.
-        if (from == 0) continue;
+        // Arriving along the wall's line: keep the side it had come from if it was lying on this wall
+        // already (sliding along it), else there is nothing to remember.
+        if (from == 0) {
+            const Contact* kept = find_contact(before, i);
+            if (kept == nullptr) continue;
+            if (out.count == out.contacts.size()) return false;
+            out.contacts[out.count++] = *kept;
+            continue;
+        }
         if (out.count == out.contacts.size()) return false;
         out.contacts[out.count++] = {i, static_cast<std::int8_t>(from)};
     }
@@ -78,14 +85,21 @@ bool piece_allowed(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wal
 }
 
 Vec2 make_safe(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wall> walls, const WallIndex* index,
-               StepScratch& scratch) {
-    if (piece_allowed(q, r, memory, walls, index, scratch)) return r;
+               StepScratch& scratch, Keep a, Keep b) {
+    const auto ok = [&](Vec2 c) {
+        // A nearly parallel leg can round a point just past a line while the piece to it passes the line
+        // beyond the wall's end: no tunnel, but the ball would sit on a wall's far side after bouncing off it.
+        for (const Keep& k : {a, b})
+            if (k.wall != nullptr && k.from != 0 && exact::side(c, *k.wall) == -k.from) return false;
+        return piece_allowed(q, c, memory, walls, index, scratch);
+    };
+    if (ok(r)) return r;
     // Walk back towards q: a rounding error of a few ulps is undone by the first steps; the last
     // step, f = 0, is q itself, where the ball already is.
     const Vec2 d = r - q;
     for (double f : {1 - 0x1p-50, 1 - 0x1p-46, 1 - 0x1p-40, 1 - 0x1p-30, 1 - 0x1p-20, 1 - 0x1p-10, 0.5, 0.0}) {
         const Vec2 c = f == 0.0 ? q : q + f * d;
-        if (piece_allowed(q, c, memory, walls, index, scratch)) return c;
+        if (ok(c)) return c;
     }
     return q;
 }

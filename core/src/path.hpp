@@ -24,13 +24,22 @@ bool piece_allowed(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wal
                    StepScratch& scratch);
 
 /// The contacts after the piece q → r: each wall whose closed segment holds r and whose line q is off,
-/// with q's side; before, unchanged, if r = q. Returns false if more walls meet at r than BallMemory holds.
+/// with q's side, and each contact of before whose closed segment still holds r (the ball slid along
+/// it); before, unchanged, if r = q. Returns false if more walls meet at r than BallMemory holds.
 bool arrive(Vec2 q, Vec2 r, const BallMemory& before, std::span<const Wall> walls, const WallIndex* index,
             StepScratch& scratch, BallMemory& out);
 
-/// r, or the first point on the way back towards q whose piece q → r is allowed (q itself at worst).
+/// A wall the ball bounced off and the side it met it from: until the next bounce the ball moves straight
+/// into that side's half-plane, so no printed point may lie on the far side.
+struct Keep {
+    const Wall* wall = nullptr;
+    int from = 0;
+};
+
+/// r, or the first point on the way back towards q whose piece q → r is allowed (q itself at worst) and
+/// which lies on no kept wall's far side.
 Vec2 make_safe(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wall> walls, const WallIndex* index,
-               StepScratch& scratch);
+               StepScratch& scratch, Keep a = {}, Keep b = {});
 
 /// The contact on wall w in memory, or nullptr.
 const Contact* find_contact(const BallMemory& memory, std::uint32_t w);

@@ -37,8 +37,9 @@ std::optional<std::uint32_t> TunnelChecker::advance(std::size_t i, Vec2 next) {
             tunnel = st.last_side != 0 && st.touched && sr != st.last_side;
             st = {static_cast<std::int8_t>(sr), false};
         } else {
-            // Moves along the line: no side to remember.
-            st = {0, false};
+            // Moves along the line: it keeps the side it came from, and stays on the wall while it stays on
+            // the closed segment; sliding off the segment's end, it may go round to either side.
+            st.touched = st.touched && detail::on_closed_segment(next, wall);
         }
         if (tunnel && !found) found = static_cast<std::uint32_t>(w);
     }

@@ -152,6 +152,25 @@ TEST(Frames, BounceKeepsSpeedAndSide) {
     }
 }
 
+TEST(Tunnel, SlidingAlongTheWallKeepsTheSideItCameFrom) {
+    // Arrive on the floor from above, slide along it on the segment, leave below: a tunnel.
+    const std::vector<Wall> floor{{{0, 0}, {10, 0}}};
+    const std::vector<Ball> start{{{1, 1}, {0, 0}}};
+    TunnelChecker through(floor, start);
+    EXPECT_FALSE(through.advance(0, {2, 0}));
+    EXPECT_FALSE(through.advance(0, {3, 0}));
+    EXPECT_EQ(through.advance(0, {4, -1}), std::optional<std::uint32_t>{0});
+    // Slide off the segment's end first: going round it is no tunnel.
+    TunnelChecker round(floor, start);
+    EXPECT_FALSE(round.advance(0, {9, 0}));
+    EXPECT_FALSE(round.advance(0, {11, 0}));
+    EXPECT_FALSE(round.advance(0, {12, -1}));
+    // Starting on the wall, either side is fine.
+    const std::vector<Ball> on{{{5, 0}, {0, 0}}};
+    TunnelChecker free(floor, on);
+    EXPECT_FALSE(free.advance(0, {5, -1}));
+}
+
 TEST(Frames, SpeedBoundHolds) {
     // | |v'| − |v| | ≤ k_speed_rel_bound·|v| + k_speed_abs_bound for one reflection, measured with 256-bit
     // GMP floats, on walls of every length and velocities down to the subnormal range.

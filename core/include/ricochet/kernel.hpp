@@ -30,7 +30,8 @@
 // polyline of its printed points: start, hit points, end, frame after frame. It tunnels through a
 // wall if a piece of the path goes from one open side of the wall's line to the other through the
 // closed segment, or if the path arrives on the closed segment from one side and its next piece
-// leaves it to the other side. A ball that starts on a wall, or reached it by moving along its line,
+// leaves it to the other side, even after sliding along the wall's line on the segment in between.
+// A ball that starts on a wall, or reached the segment by sliding along its line from beyond an end,
 // may leave it to either side.
 //
 // Accepted range: every coordinate, radius and velocity component finite with magnitude at most
@@ -127,6 +128,11 @@ struct Contact {
 struct BallMemory {
     std::array<Contact, 4> contacts{};
     std::uint8_t count = 0;
+    /// The last wall bounced off and the side (±1) it was met from; 0: none yet. Moving straight on
+    /// from a bounce the ball stays in that side's half-plane, so until its next bounce no printed point
+    /// may lie on that wall's far side, even beyond the wall's ends.
+    std::int8_t bounced_from = 0;
+    std::uint32_t bounced_wall = 0;
 };
 
 /// A bounce during a frame: the wall, the frame time t_i and the point B_i.
