@@ -9,6 +9,7 @@
 #include "harness.hpp"
 #include "oracle.hpp"
 #include "ricochet/hash.hpp"
+#include "ricochet/parallel.hpp"
 #include "ricochet/scene_log.hpp"
 #include "ricochet/world.hpp"
 #include "sweep_oracle.hpp"
@@ -226,6 +227,26 @@ std::optional<Failure> translation(KernelId k, const Scene& s) {
 }
 
 /// The same scene stepped twice, and by two worlds in lockstep, gives the same events and the same hash.
+/// The broad phase and threads change nothing (issue 7): a wall grid, a static-shape index and 2 threads give
+/// run_scene's events bit for bit, so the same hash.
+std::optional<Failure> broad_phase(KernelId k, const Scene& s) {
+    classify_legs(s);
+    const auto plain = run(s, k, s.frames);
+    if (!plain) return std::nullopt;
+    ScaleOptions options{.broad_phase = true, .threads = 2};
+    if (k == KernelId::lecture_float) options.grid.margin = k_float_margin;
+    std::vector<Event> scaled;
+    try {
+        scaled = run_scene_scaled(s, k, s.frames, options);
+    } catch (const StepFailure& e) {
+        return fail(Check::deterministic, fmt::format("with the broad phase the run stopped: {}", e.what()));
+    }
+    if (scaled != *plain || hash_events(scaled) != hash_events(*plain))
+        return fail(Check::deterministic, fmt::format("the broad phase with 2 threads changes the run: hash {} against {}",
+                                                      format_hash(hash_events(scaled)), format_hash(hash_events(*plain))));
+    return std::nullopt;
+}
+
 std::optional<Failure> determinism(KernelId k, const Scene& s) {
     classify_legs(s);
     const auto a = run(s, k, s.frames);
@@ -321,6 +342,10 @@ TEST_P(Scenes, SceneSymmetry) {
 
 TEST_P(Scenes, TranslationInvariance) {
     run_property({"TranslationInvariance", Check::symmetry, gen::moving_scene(1), translation, 1500}, GetParam());
+}
+
+TEST_P(Scenes, BroadPhaseSameBits) {
+    run_property({"BroadPhaseSameBits", Check::deterministic, gen::moving_scene(6), broad_phase, 200}, GetParam());
 }
 
 TEST_P(Scenes, Determinism) {
