@@ -1,6 +1,8 @@
 // Many balls on N threads, and the World that skips what a scene does not need (parallel.hpp).
 #include "ricochet/parallel.hpp"
 
+#include "overlaps.hpp"
+
 #include <algorithm>
 #include <thread>
 
@@ -91,24 +93,13 @@ void ScaledWorld::append_overlaps(std::vector<Event>& out) const {
     if (circles_.empty() && rects_.empty()) return;
     for (std::size_t i = 0; i < balls_.size(); ++i) {
         const Vec2 p = balls_[i].pos;
-        const auto ball = static_cast<std::uint32_t>(i);
+        detail::ShapeIds ids;
         if (statics_) {
             // One cell lookup; its lists are in index order, as the brute-force loop visits them.
             const StaticIndex::Candidates c = statics_->query(p);
-            for (std::uint32_t k : c.circles)
-                if (point_in_circle(kernel_, p, circles_[k]))
-                    out.push_back({Event::Kind::overlap, frame_, ball, Event::Shape::circle, k, {}, {}});
-            for (std::uint32_t k : c.rects)
-                if (point_in_rect(kernel_, p, rects_[k]))
-                    out.push_back({Event::Kind::overlap, frame_, ball, Event::Shape::rect, k, {}, {}});
-            continue;
+            ids = {c.circles, c.rects};
         }
-        for (std::uint32_t k = 0; k < circles_.size(); ++k)
-            if (point_in_circle(kernel_, p, circles_[k]))
-                out.push_back({Event::Kind::overlap, frame_, ball, Event::Shape::circle, k, {}, {}});
-        for (std::uint32_t k = 0; k < rects_.size(); ++k)
-            if (point_in_rect(kernel_, p, rects_[k]))
-                out.push_back({Event::Kind::overlap, frame_, ball, Event::Shape::rect, k, {}, {}});
+        detail::append_ball_overlaps(out, kernel_, frame_, static_cast<std::uint32_t>(i), p, circles_, rects_, ids);
     }
 }
 

@@ -1,6 +1,8 @@
 // World: stepping a scene frame by frame into events (order documented in world.hpp).
 #include "ricochet/world.hpp"
 
+#include "overlaps.hpp"
+
 #include <fmt/format.h>
 
 namespace ricochet {
@@ -22,18 +24,34 @@ World::World(const Scene& scene, KernelId kernel, const WallIndex* index)
       balls_(scene.balls),
       memories_(scene.balls.size()) {}
 
+namespace detail {
+
+void append_ball_overlaps(std::vector<Event>& out, KernelId kernel, std::int64_t frame, std::uint32_t ball, Vec2 p,
+                          std::span<const Circle> circles, std::span<const Rect> rects, const ShapeIds& ids) {
+    // Visits ids if given, else 0..n−1: either way in ascending order.
+    const auto each = [](std::optional<std::span<const std::uint32_t>> given, std::size_t n, auto&& visit) {
+        if (given) {
+            for (std::uint32_t k : *given) visit(k);
+        } else {
+            for (std::uint32_t k = 0; k < n; ++k) visit(k);
+        }
+    };
+    each(ids.circles, circles.size(), [&](std::uint32_t k) {
+        if (point_in_circle(kernel, p, circles[k]))
+            out.push_back({Event::Kind::overlap, frame, ball, Event::Shape::circle, k, {}, {}});
+    });
+    each(ids.rects, rects.size(), [&](std::uint32_t k) {
+        if (point_in_rect(kernel, p, rects[k]))
+            out.push_back({Event::Kind::overlap, frame, ball, Event::Shape::rect, k, {}, {}});
+    });
+}
+
+}  // namespace detail
+
 void World::append_overlaps(std::vector<Event>& out) const {
-    for (std::size_t i = 0; i < balls_.size(); ++i) {
-        const Vec2 p = balls_[i].pos;
-        for (std::size_t c = 0; c < circles_.size(); ++c)
-            if (point_in_circle(kernel_, p, circles_[c]))
-                out.push_back({Event::Kind::overlap, frame_, static_cast<std::uint32_t>(i), Event::Shape::circle,
-                               static_cast<std::uint32_t>(c), {}, {}});
-        for (std::size_t r = 0; r < rects_.size(); ++r)
-            if (point_in_rect(kernel_, p, rects_[r]))
-                out.push_back({Event::Kind::overlap, frame_, static_cast<std::uint32_t>(i), Event::Shape::rect,
-                               static_cast<std::uint32_t>(r), {}, {}});
-    }
+    for (std::size_t i = 0; i < balls_.size(); ++i)
+        detail::append_ball_overlaps(out, kernel_, frame_, static_cast<std::uint32_t>(i), balls_[i].pos, circles_,
+                                     rects_);
 }
 
 void World::start(std::vector<Event>& out) const {
