@@ -1,5 +1,4 @@
-// Broad phase for static geometry: a uniform grid over the walls, walked along each leg (WallGrid,
-// the default), and a point index over the static circles and rectangles (StaticIndex).
+// WallGrid: the default broad phase for walls, a uniform grid walked along each leg.
 //
 // Conservative by construction. Let G(p) = (p − o)·inv be the grid coordinate of a real point p
 // (o, inv doubles; the map is exact over the reals) and cell(p) = ⌊G(p)⌋. A wall is registered in,
@@ -68,54 +67,6 @@ private:
     std::uint32_t nx_ = 0, ny_ = 0;
     std::vector<std::uint32_t> start_;  // CSR: cell c holds items_[start_[c] .. start_[c + 1])
     std::vector<std::uint32_t> items_;
-};
-
-/// A bounding-volume tree (AABB tree, median split, 4 walls a leaf) over a scene's walls: the
-/// alternative to WallGrid, measured against it by `ricochet bench scale`. Same conservative margin.
-class WallBvh final : public WallIndex {
-public:
-    /// Builds the tree over walls.
-    explicit WallBvh(std::span<const Wall> walls, double margin = k_grid_margin);
-    /// Appends every wall in a leaf whose box (inflated) the segment a → b may touch.
-    void query(Vec2 a, Vec2 b, std::vector<std::uint32_t>& out) const override;
-    /// Nodes in the tree.
-    std::size_t nodes() const { return nodes_.size(); }
-
-private:
-    struct Node {
-        double lo_x, lo_y, hi_x, hi_y;
-        std::uint32_t first;  // leaf: first item; inner: index of the left child (right = first + 1)
-        std::uint32_t count;  // leaf: item count; inner: 0
-    };
-    void build(std::span<const Wall> walls, std::uint32_t slot, std::uint32_t first, std::uint32_t count);
-    std::vector<Node> nodes_;
-    std::vector<std::uint32_t> items_;
-    double margin_;
-};
-
-/// Which static shapes may hold a point: a uniform grid over the circles' and rectangles' boxes,
-/// inflated by 2^-18 of their magnitude so that every kernel's test (lecture-float included) is
-/// covered. Lists come back in index order, so overlap events come out as the brute-force loop
-/// makes them.
-class StaticIndex {
-public:
-    /// Builds the index (empty shapes: every query answers nothing at once).
-    StaticIndex(std::span<const Circle> circles, std::span<const Rect> rects);
-    /// The circles and rectangles that may hold p, each in increasing index order.
-    struct Candidates {
-        std::span<const std::uint32_t> circles;
-        std::span<const std::uint32_t> rects;
-    };
-    /// One cell lookup.
-    Candidates query(Vec2 p) const;
-    /// True if there are no static shapes at all (the overlap pass can be skipped).
-    bool empty() const { return empty_; }
-
-private:
-    bool empty_ = true;
-    double ox_ = 0, oy_ = 0, inv_ = 1;
-    std::uint32_t nx_ = 0, ny_ = 0;
-    std::vector<std::uint32_t> circle_start_, circle_items_, rect_start_, rect_items_;
 };
 
 }  // namespace ricochet
