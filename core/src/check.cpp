@@ -1,7 +1,9 @@
-// Scene model helpers: the names of checks.
-#include "ricochet/scene.hpp"
+// The names of the checks.
+#include "ricochet/check.hpp"
 
 #include <array>
+#include <optional>
+#include <string_view>
 
 namespace ricochet {
 
