@@ -13,6 +13,7 @@
 
 #include "commands.hpp"
 #include "ricochet/checks.hpp"
+#include "ricochet/format.hpp"
 #include "ricochet/scene_log.hpp"
 
 namespace ricochet::cli {
@@ -106,10 +107,10 @@ void register_check(CLI::App& app) {
             for (KernelId k : k_all_kernels) {
                 const CheckedRun run = run_checked(scene, k, scene.frames, scene.checks, quiet);
                 const bool ok = !run.failure && !run.error;
-                fmt::print("{:15} {}\n", kernel_name(k),
+                fmt::print("{:15} {}\n", k,
                            ok ? "every check held"
                               : run.failure ? run.failure->str() : run.error->message());
-                line += fmt::format(" {}={}", kernel_name(k), ok ? "ok" : "broken");
+                line += fmt::format(" {}={}", k, ok ? "ok" : "broken");
                 // The lecture kernels are expected to break; the robust and exact kernels may not.
                 if (!ok && (k == KernelId::robust || k == KernelId::exact)) failed = true;
             }

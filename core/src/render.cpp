@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "ricochet/format.hpp"
+
 namespace ricochet {
 
 namespace {
@@ -69,7 +71,7 @@ std::string render_svg(const Scene& scene, const CheckedRun& run, const RenderOp
                    "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
                    width, height, width, height);
     fmt::format_to(it, "<text x=\"8\" y=\"{:.1f}\">kernel {}, frames {}..{}, x in [{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}]</text>\n",
-                   height - 10, kernel_name(scene.kernel), first, last, x0, x1, y0, y1);
+                   height - 10, scene.kernel, first, last, x0, x1, y0, y1);
     // Statics first, so paths are drawn over them.
     for (std::size_t i = 0; i < scene.rects.size(); ++i) {
         const Rect& r = scene.rects[i];

@@ -1,0 +1,38 @@
+// Bit-for-bit equality of core values. operator== treats −0 and +0 as equal; the run hash and the
+// scene-log round trip do not, so whoever compares "the same bits" uses these.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+
+#include "ricochet/event.hpp"
+#include "ricochet/shapes.hpp"
+
+namespace ricochet {
+
+struct Scene;
+
+/// True if a and b have the same IEEE-754 bit pattern.
+inline bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+/// Both components the same bits.
+inline bool same_bits(Vec2 a, Vec2 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y); }
+/// Position and velocity the same bits.
+inline bool same_bits(const Ball& a, const Ball& b) { return same_bits(a.pos, b.pos) && same_bits(a.vel, b.vel); }
+/// Both end points the same bits.
+inline bool same_bits(const Wall& a, const Wall& b) { return same_bits(a.p0, b.p0) && same_bits(a.p1, b.p1); }
+/// Centre and radius the same bits.
+inline bool same_bits(const Circle& a, const Circle& b) { return same_bits(a.c, b.c) && same_bits(a.r, b.r); }
+/// Every side the same bits.
+inline bool same_bits(const Rect& a, const Rect& b) {
+    return same_bits(a.left, b.left) && same_bits(a.bottom, b.bottom) && same_bits(a.right, b.right) &&
+           same_bits(a.top, b.top);
+}
+/// The same fields and the same bits: the same run-hash record (hash.hpp).
+inline bool same_bits(const Event& a, const Event& b) {
+    return a.kind == b.kind && a.frame == b.frame && a.ball == b.ball && a.shape == b.shape && a.index == b.index &&
+           same_bits(a.pos, b.pos) && same_bits(a.vel, b.vel);
+}
+/// True if a and b hold the same bits (operator== treats −0 and +0 as equal; this does not).
+bool same_bits(const Scene& a, const Scene& b);
+
+}  // namespace ricochet
