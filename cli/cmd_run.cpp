@@ -1,9 +1,11 @@
-// `ricochet run LOG [--kernel K] [--frames N]`: the run's events as scene-log.md prints them.
+// `ricochet run LOG [--kernel K] [--frames N]`: the run's events as docs/scene-log.md prints them, stepped
+// with the default WorldOptions (the broad phase on, one thread).
 #include <cstdio>
 
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "ricochet/event.hpp"
 #include "ricochet/world.hpp"
 
 namespace ricochet::cli {

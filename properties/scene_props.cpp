@@ -9,7 +9,6 @@
 #include "harness.hpp"
 #include "oracle.hpp"
 #include "ricochet/hash.hpp"
-#include "ricochet/parallel.hpp"
 #include "ricochet/scene_log.hpp"
 #include "ricochet/world.hpp"
 #include "sweep_oracle.hpp"
@@ -19,9 +18,9 @@ namespace {
 
 /// Every event of the scene's run under k, or nothing if a ball left the accepted range (a documented
 /// outcome that no property here is about).
-std::optional<std::vector<Event>> run(const Scene& s, KernelId k, std::int64_t frames) {
+std::optional<std::vector<Event>> run(const Scene& s, KernelId k, std::int64_t frames, WorldOptions options = {}) {
     try {
-        return run_scene(s, k, frames);
+        return run_scene(s, k, frames, options);
     } catch (const StepFailure&) {
         tag("a ball left the accepted range");
         return std::nullopt;
@@ -227,17 +226,16 @@ std::optional<Failure> translation(KernelId k, const Scene& s) {
 }
 
 /// The same scene stepped twice, and by two worlds in lockstep, gives the same events and the same hash.
-/// The broad phase and threads change nothing (issue 7): a wall grid, a static-shape index and 2 threads give
-/// run_scene's events bit for bit, so the same hash.
+/// The broad phase and threads change nothing: a wall grid, a static-shape index and 2 threads give the
+/// events of BroadPhase::none on one thread bit for bit, so the same hash.
 std::optional<Failure> broad_phase(KernelId k, const Scene& s) {
     classify_legs(s);
-    const auto plain = run(s, k, s.frames);
+    const auto plain = run(s, k, s.frames, {.broad_phase = BroadPhase::none, .threads = 1});
     if (!plain) return std::nullopt;
-    ScaleOptions options{.broad_phase = true, .threads = 2};
-    if (k == KernelId::lecture_float) options.grid.margin = k_float_margin;
+    const WorldOptions options{.broad_phase = BroadPhase::grid, .threads = 2};
     std::vector<Event> scaled;
     try {
-        scaled = run_scene_scaled(s, k, s.frames, options);
+        scaled = run_scene(s, k, s.frames, options);
     } catch (const StepFailure& e) {
         return fail(Check::deterministic, fmt::format("with the broad phase the run stopped: {}", e.what()));
     }

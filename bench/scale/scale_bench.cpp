@@ -16,9 +16,9 @@
 #include <time.h>
 
 #include "box2d_peer.hpp"
-#include "ricochet/grid.hpp"
-#include "ricochet/parallel.hpp"
 #include "ricochet/predicates.hpp"
+#include "ricochet/wall_grid.hpp"
+#include "ricochet/world.hpp"
 
 namespace ricochet {
 
@@ -194,23 +194,28 @@ void measure(const Config& cfg, const std::string& sweep, int n, std::size_t bal
         r.hits_per_ball_frame = static_cast<double>(h) / static_cast<double>(r.checked_ball_frames);
     };
 
-    // Ours: robust kernel, one thread, with the grid, the BVH, and brute force.
-    const auto ours = [&](const char* method, const WallIndex* index, bool check) {
-        std::vector<Ball> balls = start;
-        std::vector<BallMemory> mem(ball_count);
-        ParallelStepper stepper(1);
+    // Ours: a World under the robust kernel, one thread, with the grid, the BVH, and brute force; a
+    // frame's time includes making its events, as every user of World pays it.
+    Scene scene;
+    scene.walls = walls;
+    scene.balls = start;
+    const auto ours = [&](const char* method, BroadPhase broad_phase, bool check) {
+        World world(scene, KernelId::robust, {.broad_phase = broad_phase, .threads = 1});
+        std::vector<Event> events;
         Row r = base(method);
         if (check) check_ours(r);
-        finish(r, time_per_frame([&] { stepper.step(KernelId::robust, balls, mem, walls, index); }, cfg.budget));
+        finish(r, time_per_frame(
+                      [&] {
+                          events.clear();
+                          (void)world.step(events);
+                      },
+                      cfg.budget));
     };
-    ours("robust+grid", &grid, true);
+    ours("robust+grid", BroadPhase::grid, true);
     const bool walls_sweep = sweep == "walls";
-    if (walls_sweep || !cfg.quick) {
-        const WallBvh bvh(walls);
-        ours("robust+bvh", &bvh, false);
-    }
+    if (walls_sweep || !cfg.quick) ours("robust+bvh", BroadPhase::bvh, false);
     if (static_cast<double>(walls.size()) * static_cast<double>(ball_count) <= cfg.brute_limit)
-        ours("robust-brute", nullptr, false);
+        ours("robust-brute", BroadPhase::none, false);
 
     if (scale::box2d_available()) {
         const scale::Box2dPeer peer(walls);
@@ -272,18 +277,23 @@ int run_scale_bench(bool quick, unsigned threads, const std::string& out_dir) {
         const int n = lattice_for(10000);
         const std::vector<Wall> walls = make_maze(n, 1000 + static_cast<std::uint64_t>(n));
         const std::size_t nb = 100000;
-        const std::vector<Ball> start = make_balls(nb, n, 2000 + nb);
-        const WallGrid grid(walls);
+        Scene scene;
+        scene.walls = walls;
+        scene.balls = make_balls(nb, n, 2000 + nb);
         std::vector<unsigned> counts;
         for (unsigned t = 1; t < max_threads; t *= 2) counts.push_back(t);
         counts.push_back(max_threads);
         double one = 0;
         for (unsigned t : counts) {
-            std::vector<Ball> balls = start;
-            std::vector<BallMemory> mem(nb);
-            ParallelStepper stepper(t);
-            const double s =
-                time_per_frame([&] { stepper.step(KernelId::robust, balls, mem, walls, &grid); }, cfg.budget).wall;
+            World world(scene, KernelId::robust, {.broad_phase = BroadPhase::grid, .threads = t});
+            std::vector<Event> events;
+            const double s = time_per_frame(
+                                 [&] {
+                                     events.clear();
+                                     (void)world.step(events);
+                                 },
+                                 cfg.budget)
+                                 .wall;
             if (t == 1) one = s;
             Row r;
             r.sweep = "threads";

@@ -1,5 +1,6 @@
-// The broad phase and the threads change nothing: the same events and run hash with and without the
-// wall grid (and the BVH), and on N threads as on one, for lecture-double and robust, on random
+// The broad phase and the threads change nothing: World with BroadPhase::none on one thread and World
+// with the wall grid (or the BVH) on N threads give the same events and run hash, for lecture-double
+// and robust (and lecture-float and exact with the rules World picks for them), on random
 // mazes, closed boxes, random segment soups and far-from-origin copies, with balls aimed at wall end
 // points and corners. And the index contract itself: every wall that meets a segment is returned.
 #include <fmt/format.h>
@@ -8,10 +9,11 @@
 #include <cmath>
 #include <random>
 
-#include "ricochet/grid.hpp"
+#include "ricochet/bvh.hpp"
 #include "ricochet/hash.hpp"
-#include "ricochet/parallel.hpp"
 #include "ricochet/predicates.hpp"
+#include "ricochet/static_index.hpp"
+#include "ricochet/wall_grid.hpp"
 #include "ricochet/world.hpp"
 
 namespace ricochet {
@@ -120,21 +122,19 @@ Scene soup(Rng& rng, int walls, int balls) {
     return s;
 }
 
-std::vector<Event> run_world(const Scene& scene, KernelId k, std::int64_t frames, const WallIndex* index) {
-    World world(scene, k, index);
+std::vector<Event> run_world(const Scene& scene, KernelId k, std::int64_t frames, WorldOptions options) {
+    World world(scene, k, options);
     std::vector<Event> events;
     world.start(events);
     for (std::int64_t f = 0; f < frames; ++f) world.step(events);
     return events;
 }
 
-std::vector<Event> run_scaled(const Scene& scene, KernelId k, std::int64_t frames, ScaleOptions options) {
-    ScaledWorld world(scene, k, options);
-    std::vector<Event> events;
-    world.start(events);
-    for (std::int64_t f = 0; f < frames; ++f) world.step(events);
-    return events;
-}
+/// The reference: every wall tried, every shape tested, one thread.
+constexpr WorldOptions k_plain{.broad_phase = BroadPhase::none, .threads = 1};
+
+/// World with broad phase b on t threads.
+constexpr WorldOptions with(BroadPhase b, unsigned t) { return {.broad_phase = b, .threads = t}; }
 
 /// The first event where a and b differ, for the failure message.
 std::string first_difference(const std::vector<Event>& a, const std::vector<Event>& b) {
@@ -143,18 +143,16 @@ std::string first_difference(const std::vector<Event>& a, const std::vector<Even
     return fmt::format("lengths {} vs {}", a.size(), b.size());
 }
 
-/// Brute force, the grid (in World and in ScaledWorld on 1 and 3 threads) and the BVH agree.
+/// Brute force on one thread, the grid on 1 and 3 threads, the BVH, and brute force on 3 threads agree.
 void expect_same_runs(const Scene& scene, KernelId k, std::int64_t frames) {
-    const std::vector<Event> brute = run_world(scene, k, frames, nullptr);
+    const std::vector<Event> brute = run_world(scene, k, frames, k_plain);
     std::size_t hits = 0;
     for (const Event& e : brute) hits += e.kind == Event::Kind::hit;
-    const WallGrid grid(scene.walls);
-    const WallBvh bvh(scene.walls);
-    const auto with_grid = run_world(scene, k, frames, &grid);
-    const auto with_bvh = run_world(scene, k, frames, &bvh);
-    const auto scaled1 = run_scaled(scene, k, frames, {.broad_phase = true, .threads = 1});
-    const auto scaled3 = run_scaled(scene, k, frames, {.broad_phase = true, .threads = 3});
-    const auto brute3 = run_scaled(scene, k, frames, {.broad_phase = false, .threads = 3});
+    const auto with_grid = run_world(scene, k, frames, with(BroadPhase::grid, 1));
+    const auto with_bvh = run_world(scene, k, frames, with(BroadPhase::bvh, 1));
+    const auto scaled1 = run_world(scene, k, frames, {});  // the defaults: the grid, one thread
+    const auto scaled3 = run_world(scene, k, frames, with(BroadPhase::grid, 3));
+    const auto brute3 = run_world(scene, k, frames, with(BroadPhase::none, 3));
     ASSERT_GT(hits, 0u) << "the scene must bounce for the comparison to mean something";
     const std::uint64_t h = hash_events(brute);
     EXPECT_EQ(hash_events(with_grid), h) << first_difference(brute, with_grid);
@@ -196,38 +194,41 @@ INSTANTIATE_TEST_SUITE_P(Kernels, ScaleKernels, ::testing::Values(KernelId::lect
                          });
 
 TEST(Scale, LectureFloatWithFloatMargin) {
-    // lecture-float rounds to 2^-24: with k_float_margin the grid still returns every wall it can hit.
+    // lecture-float rounds to 2^-24: World gives its grid k_float_margin, and the grid still returns
+    // every wall it can hit.
     Rng rng(11);
     const Scene s = maze(rng, 12, 200, 0.0);
-    const auto brute = run_world(s, KernelId::lecture_float, 40, nullptr);
-    const WallGrid grid(s.walls, {.margin = k_float_margin});
-    EXPECT_EQ(hash_events(run_world(s, KernelId::lecture_float, 40, &grid)), hash_events(brute));
+    const auto brute = run_world(s, KernelId::lecture_float, 40, k_plain);
+    EXPECT_EQ(hash_events(run_world(s, KernelId::lecture_float, 40, {})), hash_events(brute));
+    EXPECT_EQ(hash_events(run_world(s, KernelId::lecture_float, 40, with(BroadPhase::grid, 2))), hash_events(brute));
 }
 
-TEST(Scale, ExactKernelThroughScaledWorld) {
+TEST(Scale, ExactKernelWithBroadPhaseAndThreads) {
     Rng rng(12);
     const Scene s = closed_box(rng, 5, 30, 10.0);
-    EXPECT_EQ(hash_events(run_scaled(s, KernelId::exact, 10, {.threads = 2})),
-              hash_events(run_world(s, KernelId::exact, 10, nullptr)));
+    EXPECT_EQ(World(s, KernelId::exact).wall_index(), nullptr);  // exact tries every wall: no grid built
+    EXPECT_EQ(hash_events(run_world(s, KernelId::exact, 10, with(BroadPhase::grid, 2))),
+              hash_events(run_world(s, KernelId::exact, 10, k_plain)));
 }
 
 TEST(Scale, ThreadCountsAllGiveTheSameHash) {
     Rng rng(13);
     const Scene s = maze(rng, 30, 2000, 0.0);
-    const std::uint64_t one = hash_events(run_scaled(s, KernelId::robust, 30, {.threads = 1}));
+    const std::uint64_t one = hash_events(run_world(s, KernelId::robust, 30, with(BroadPhase::grid, 1)));
     for (unsigned t : {2u, 3u, 4u, 7u, 16u})
-        EXPECT_EQ(hash_events(run_scaled(s, KernelId::robust, 30, {.threads = t})), one) << t << " threads";
+        EXPECT_EQ(hash_events(run_world(s, KernelId::robust, 30, with(BroadPhase::grid, t))), one) << t << " threads";
 }
 
 TEST(Scale, BigGridWithCacheHintsSameBits) {
-    // A 176 000-wall maze: the grid is past the size where ParallelStepper issues cache hints.
+    // A 176 000-wall maze: the grid is past the size where World issues cache hints.
     Rng rng(16);
     const Scene s = maze(rng, 420, 3000, 0.0);
     const WallGrid grid(s.walls);
     ASSERT_GT(grid.bytes() + s.walls.size() * sizeof(Wall), std::size_t{8} << 20);
-    const auto plain = run_world(s, KernelId::robust, 8, &grid);
-    EXPECT_EQ(hash_events(run_scaled(s, KernelId::robust, 8, {.threads = 1})), hash_events(plain));
-    EXPECT_EQ(hash_events(run_scaled(s, KernelId::robust, 8, {.threads = 2})), hash_events(plain));
+    // The reference without cache hints: the BVH (brute force would take minutes here).
+    const auto plain = run_world(s, KernelId::robust, 8, with(BroadPhase::bvh, 1));
+    EXPECT_EQ(hash_events(run_world(s, KernelId::robust, 8, with(BroadPhase::grid, 1))), hash_events(plain));
+    EXPECT_EQ(hash_events(run_world(s, KernelId::robust, 8, with(BroadPhase::grid, 2))), hash_events(plain));
 }
 
 /// Closed segments ab and pq meet (exactly).

@@ -1,18 +1,28 @@
 // World: a scene's balls stepped frame by frame by one kernel into events, in the order of
-// scene-log.md: per frame, per ball its hits in order then its state; then the overlaps of every
-// ball (ball-major, circles before rects, each in index order) after all balls have moved.
+// docs/scene-log.md: per frame, per ball its hits in order then its state; then the overlaps of
+// every ball (ball-major, circles before rects, each in index order) after all balls have moved.
 // Frame 0 is the initial states followed by the initial overlaps.
+//
+// The options change how fast, never what: every broad phase and every thread count gives the same
+// events bit for bit (scale_test and the BroadPhaseSameBits property check it against
+// BroadPhase::none on one thread). Balls are independent within a frame, so each thread steps a
+// contiguous range of balls with its own scratch and hit buffer, and the results are read back in
+// ball order.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "ricochet/bvh.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/scene.hpp"
+#include "ricochet/static_index.hpp"
+#include "ricochet/wall_grid.hpp"
 
 namespace ricochet {
 
@@ -38,12 +48,34 @@ private:
     StepError error_;
 };
 
+/// How a World finds the walls a leg may hit and the shapes a ball may lie in.
+enum class BroadPhase : std::uint8_t {
+    none,  ///< every wall tried, every shape tested: the plain reference
+    grid,  ///< a WallGrid over the walls and a StaticIndex over the circles and rectangles
+    bvh,   ///< a WallBvh over the walls and a StaticIndex (the grid's alternative, for measuring)
+};
+
+/// How a World steps: none of it changes an event's bits.
+struct WorldOptions {
+    BroadPhase broad_phase = BroadPhase::grid;  ///< on by default
+    unsigned threads = 1;                       ///< threads stepping the balls (0 is taken as 1)
+    GridOptions grid{};                         ///< the wall grid's layout (the World raises the margin
+                                                ///< to k_float_margin for lecture-float)
+};
+
+namespace detail {
+class ParallelStepper;
+}  // namespace detail
+
 /// A scene's state under one kernel, stepped a frame at a time.
 class World {
 public:
-    /// Copies the scene's entities and initial balls; index (optional) must outlive the World and
-    /// index the scene's walls.
-    World(const Scene& scene, KernelId kernel, const WallIndex* index = nullptr);
+    /// Copies the scene's entities and initial balls and builds the indices options and kernel call for.
+    World(const Scene& scene, KernelId kernel, WorldOptions options = {});
+    /// Frees the stepper.
+    ~World();
+    World(World&&) noexcept;             ///< moves the state and indices
+    World& operator=(World&&) noexcept;  ///< moves the state and indices
 
     /// Appends frame 0's events: every ball's initial state, then the initial overlaps.
     void start(std::vector<Event>& out) const;
@@ -63,30 +95,30 @@ public:
     std::uint64_t bounce_limited() const { return bounce_limited_; }
     /// The scene's walls.
     std::span<const Wall> walls() const { return walls_; }
+    /// The wall index in use, or null (BroadPhase::none, no walls, or the exact kernel).
+    const WallIndex* wall_index() const;
+    /// What this world skips for its scene, one clause each, for a run to print.
+    std::string skipped() const;
 
 private:
     void append_overlaps(std::vector<Event>& out) const;
 
     KernelId kernel_;
-    const WallIndex* index_;
     std::vector<Wall> walls_;
     std::vector<Circle> circles_;
     std::vector<Rect> rects_;
     std::vector<Ball> balls_;
     std::vector<BallMemory> memories_;
-    StepScratch scratch_;
-    std::vector<HitEvent> hits_;
+    std::optional<WallGrid> grid_;
+    std::optional<WallBvh> bvh_;
+    std::optional<StaticIndex> statics_;
+    bool prefetch_ = false;  // the grid is past the size where cache hints pay (world.cpp)
+    std::unique_ptr<detail::ParallelStepper> stepper_;
     std::int64_t frame_ = 0;
     std::uint64_t bounce_limited_ = 0;
 };
 
 /// Every event of frames 0..frames under kernel. Throws StepFailure if a ball leaves the accepted range.
-std::vector<Event> run_scene(const Scene& scene, KernelId kernel, std::int64_t frames);
-
-/// One event as `ricochet run` prints it (no newline): `state F I X Y VX VY`, `hit F I W X Y`,
-/// `overlap F I circle|rect K`, numbers in shortest round-trip form.
-std::string format_event(const Event& event);
-/// Appends format_event(event) and a newline to out (no temporary string).
-void append_event_line(std::string& out, const Event& event);
+std::vector<Event> run_scene(const Scene& scene, KernelId kernel, std::int64_t frames, WorldOptions options = {});
 
 }  // namespace ricochet

@@ -1,0 +1,45 @@
+// Internal to World: many balls stepped one frame on a fixed number of threads, a static partition
+// by ball index. Each part has its own scratch and hit buffer; hits are read back in ball order, so
+// the thread count changes no result.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ricochet/kernel.hpp"
+#include "ricochet/wall_grid.hpp"
+
+namespace ricochet::detail {
+
+/// Steps every ball one frame on threads() threads.
+class ParallelStepper {
+public:
+    /// threads ≥ 1 (0 is taken as 1); 1 steps on the calling thread.
+    explicit ParallelStepper(unsigned threads = 1);
+    /// Threads used.
+    unsigned threads() const { return threads_; }
+    /// Steps ball i with memory i for every i. index may be null (every wall is tried). prefetch, if
+    /// given, is the grid behind index: its cells are fetched a few balls ahead (results unchanged).
+    void step(KernelId k, std::span<Ball> balls, std::span<BallMemory> memories, std::span<const Wall> walls,
+              const WallIndex* index, const WallGrid* prefetch);
+    /// Ball i's hits in the last step, in order.
+    std::span<const HitEvent> hits(std::size_t i) const;
+    /// Ball i's status in the last step.
+    FrameStatus status(std::size_t i) const { return status_[i]; }
+
+private:
+    struct Part {
+        std::size_t begin = 0, end = 0;
+        StepScratch scratch;
+        std::vector<HitEvent> hits;
+        std::vector<std::uint32_t> offset;  // ball begin + j has hits[offset[j] .. offset[j + 1])
+    };
+    void run_part(Part& part, KernelId k, std::span<Ball> balls, std::span<BallMemory> memories,
+                  std::span<const Wall> walls, const WallIndex* index, const WallGrid* prefetch);
+    unsigned threads_;
+    std::vector<Part> parts_;
+    std::vector<FrameStatus> status_;
+};
+
+}  // namespace ricochet::detail
