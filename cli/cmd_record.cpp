@@ -6,8 +6,9 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "ricochet/checks.hpp"
+#include "ricochet/format.hpp"
 #include "ricochet/hash.hpp"
+#include "ricochet/record.hpp"
 #include "ricochet/scene_log.hpp"
 
 namespace ricochet::cli {
@@ -63,7 +64,7 @@ void register_record(CLI::App& app) {
         }
         fmt::print("recorded {}: hash {}, {} expect state line(s){}\n", *log, format_hash(run.hash),
                    scene.expect_states.size(),
-                   run.failure ? fmt::format(", expect failure {} {} ({})", check_name(run.failure->check),
+                   run.failure ? fmt::format(", expect failure {} {} ({})", run.failure->check,
                                              run.failure->frame, run.failure->message)
                                : std::string());
     });

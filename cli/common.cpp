@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "ricochet/checks.hpp"
+#include "ricochet/replay.hpp"
 #include "ricochet/hash.hpp"
 #include "ricochet/scene_log.hpp"
 

@@ -24,6 +24,7 @@
 #include <string_view>
 
 #include "ricochet/checks.hpp"
+#include "ricochet/replay.hpp"
 #include "ricochet/scene_log.hpp"
 
 namespace ricochet {

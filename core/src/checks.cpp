@@ -1,15 +1,13 @@
-// The `check` invariants, run frame by frame alongside a World (definitions in checks.hpp), replay
-// against expect lines, and recording of expect lines.
+// The `check` invariants, run frame by frame alongside a World (definitions in checks.hpp).
 #include "ricochet/checks.hpp"
 
 #include <algorithm>
-#include <array>
-#include <bit>
 #include <cmath>
-#include <set>
 
 #include <fmt/format.h>
 
+#include "ricochet/bits.hpp"
+#include "ricochet/format.hpp"
 #include "ricochet/hash.hpp"
 #include "ricochet/tunnel.hpp"
 
@@ -26,7 +24,7 @@ double speed_rel_bound(KernelId kernel) {
 }
 
 std::string CheckFailure::str() const {
-    return fmt::format("{} broke at frame {} ball {}: {}", check_name(check), frame, ball, message);
+    return fmt::format("{} broke at frame {} ball {}: {}", check, frame, ball, message);
 }
 
 Scene mirror_x(const Scene& scene) {
@@ -53,8 +51,6 @@ Event mirrored(Event e) {
     e.vel.x = -e.vel.x;
     return e;
 }
-
-std::string sides(int s) { return s > 0 ? "outside" : s < 0 ? "inside" : "on"; }
 
 /// Runs the checks of one frame; holds the per-check state between frames.
 class Checker {
@@ -123,10 +119,9 @@ private:
             if (w && !found) {
                 const Wall& wall = scene_.walls[*w];
                 found = CheckFailure{Check::no_tunnel, f, e.ball,
-                                     fmt::format("the path piece ({}, {}) -> ({}, {}) goes through wall {} ({} {} {} {}); "
+                                     fmt::format("the path piece {} -> {} goes through wall {} ({}); "
                                                  "expected no piece to cross a wall",
-                                                 q.x, q.y, e.pos.x, e.pos.y, *w, wall.p0.x, wall.p0.y, wall.p1.x,
-                                                 wall.p1.y)};
+                                                 q, e.pos, *w, wall)};
             }
         }
         return found;
@@ -141,17 +136,12 @@ private:
             // Symmetry compares values (−0 == +0: x − x is +0 in both runs); determinism compares bits
             // through the hash record.
             bool same = expected == actual;
-            if (!mirror && same) {
-                unsigned char a[k_event_record_size], b[k_event_record_size];
-                encode_event(expected, a);
-                encode_event(actual, b);
-                same = std::equal(a, a + k_event_record_size, b);
-            }
+            if (!mirror && same) same = same_bits(expected, actual);
             if (!same)
                 return CheckFailure{c, f, events[j].ball,
                                     fmt::format("{} gives '{}', expected '{}'",
                                                 mirror ? "the run mirrored across x = 0" : "a second run",
-                                                format_event(actual), format_event(expected))};
+                                                actual, expected)};
         }
         if (events.size() != other.size()) {
             const std::uint32_t ball = n < events.size() ? events[n].ball : other[n].ball;
@@ -169,9 +159,9 @@ private:
             const auto fail = [&](std::string m) { return CheckFailure{Check::boundary, f, e.ball, std::move(m)}; };
             // A radius-0 circle and a zero-size rect are the point itself: touching counts.
             if (!point_in_circle(kernel_, p, Circle{p, 0.0}))
-                return fail(fmt::format("({}, {}) is not in the radius-0 circle at itself; expected inside", p.x, p.y));
+                return fail(fmt::format("{} is not in the radius-0 circle at itself; expected inside", p));
             if (!point_in_rect(kernel_, p, Rect{p.x, p.y, p.x, p.y}))
-                return fail(fmt::format("({}, {}) is not in the zero-size rect at itself; expected inside", p.x, p.y));
+                return fail(fmt::format("{} is not in the zero-size rect at itself; expected inside", p));
             for (std::size_t c = 0; c < scene_.circles.size(); ++c) {
                 const bool a = point_in_circle(kernel_, p, scene_.circles[c]);
                 const bool b = circles_overlap(kernel_, Circle{p, 0.0}, scene_.circles[c]);
@@ -190,13 +180,13 @@ private:
             if (e.vel == Vec2{}) continue;
             for (std::size_t w = 0; w < scene_.walls.size(); ++w) {
                 const Side s = classify(kernel_, p, scene_.walls[w]);
+                const int sign = sign_of(s);  // +1 outside, −1 inside, 0 on
                 const Miss m = sweep(kernel_, p, e.vel, scene_.walls[w]).miss;
-                const bool bad = (s == Side::On && (m == Miss::both_inside || m == Miss::both_outside)) ||
-                                 (s == Side::Inside && m == Miss::both_outside) ||
-                                 (s == Side::Outside && m == Miss::both_inside);
+                const bool bad = (sign == 0 && (m == Miss::both_inside || m == Miss::both_outside)) ||
+                                 (sign < 0 && m == Miss::both_outside) || (sign > 0 && m == Miss::both_inside);
                 if (bad)
-                    return fail(fmt::format("classify says ({}, {}) is {} wall {} but the sweep from it says {}",
-                                            p.x, p.y, sides(sign_of(s)), w, miss_name(m)));
+                    return fail(fmt::format("classify says {} is {} wall {} but the sweep from it says {}", p, s, w,
+                                            m));
             }
         }
         return std::nullopt;
@@ -247,10 +237,8 @@ private:
                     return w ? fmt::format("wall {}", *w) : std::string("no wall");
                 };
                 return CheckFailure{Check::oracle, f, static_cast<std::uint32_t>(i),
-                                    fmt::format("from ({}, {}) moving ({}, {}) the kernel hits {} first, the exact "
-                                                "kernel hits {}",
-                                                before[i].pos.x, before[i].pos.y, before[i].vel.x, before[i].vel.y,
-                                                name(first[i]), name(want))};
+                                    fmt::format("from {} moving {} the kernel hits {} first, the exact kernel hits {}",
+                                                before[i].pos, before[i].vel, name(first[i]), name(want))};
             }
         }
         return std::nullopt;
@@ -309,118 +297,6 @@ CheckedRun run_checked(const Scene& scene, KernelId kernel, std::int64_t frames,
         if (run.failure) checker.reset();
     }
     run.hash = hasher.digest();
-    return run;
-}
-
-namespace {
-
-std::string state_text(const Ball& b) { return fmt::format("{} {} {} {}", b.pos.x, b.pos.y, b.vel.x, b.vel.y); }
-
-bool same_ball_bits(const Ball& a, const Ball& b) {
-    const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
-    return bits(a.pos.x) == bits(b.pos.x) && bits(a.pos.y) == bits(b.pos.y) && bits(a.vel.x) == bits(b.vel.x) &&
-           bits(a.vel.y) == bits(b.vel.y);
-}
-
-}  // namespace
-
-ReplayResult replay_scene(const Scene& scene, std::optional<KernelId> kernel) {
-    ReplayResult result;
-    // Expect states by frame, so the run's states are compared as they stream past.
-    std::vector<ExpectState> expects = scene.expect_states;
-    std::stable_sort(expects.begin(), expects.end(),
-                     [](const ExpectState& a, const ExpectState& b) { return a.frame < b.frame; });
-    std::size_t next = 0;
-    std::optional<std::string> diverged;
-    std::int64_t last_matched_frame = -1;
-    CheckOptions options;
-    options.keep_events = false;
-    options.on_frame = [&](std::span<const Event> events) {
-        if (events.empty() || next >= expects.size()) return;
-        std::int64_t f = -1;
-        for (const Event& e : events)
-            if (e.kind == Event::Kind::state) f = e.frame;
-        while (next < expects.size() && expects[next].frame == f) {
-            const ExpectState& x = expects[next++];
-            for (const Event& e : events)
-                if (e.kind == Event::Kind::state && e.ball == x.ball) {
-                    const Ball got{e.pos, e.vel};
-                    if (!same_ball_bits(got, x.state) && !diverged)
-                        diverged = fmt::format("first diverging frame {}: ball {} expected state {}, got {}", f,
-                                               x.ball, state_text(x.state), state_text(got));
-                    else if (!diverged)
-                        last_matched_frame = f;
-                }
-        }
-    };
-    const KernelId k = kernel.value_or(scene.kernel);
-    result.run = run_checked(scene, k, scene.frames, scene.checks, options);
-    const CheckedRun& run = result.run;
-
-    std::vector<std::string> problems;
-    if (run.error) problems.push_back(run.error->message());
-    if (diverged) problems.push_back(*diverged);
-    if (scene.expect_failure) {
-        const ExpectFailure& want = *scene.expect_failure;
-        if (!run.failure)
-            problems.push_back(fmt::format("expected {} to break first at frame {}, but every check held",
-                                           check_name(want.check), want.frame));
-        else if (run.failure->check != want.check || run.failure->frame != want.frame)
-            problems.push_back(fmt::format("expected {} to break first at frame {}, got {}", check_name(want.check),
-                                           want.frame, run.failure->str()));
-    } else if (run.failure) {
-        problems.push_back(fmt::format("invariant {}", run.failure->str()));
-    }
-    if (scene.expect_hash && *scene.expect_hash != run.hash && !run.error) {
-        std::string where = diverged ? std::string()
-                            : last_matched_frame >= 0
-                                ? fmt::format(" (expect states match through frame {}: the divergence is after it, or "
-                                              "in a hit or overlap)",
-                                              last_matched_frame)
-                                : std::string(" (no expect state to name the frame)");
-        problems.push_back(fmt::format("hash expected {}, got {}{}", format_hash(*scene.expect_hash),
-                                       format_hash(run.hash), where));
-    }
-    result.passed = problems.empty();
-    if (result.passed) {
-        result.message = fmt::format("{} frames, hash {}", run.frames_run, format_hash(run.hash));
-        if (scene.expect_failure)
-            result.message += fmt::format(", expected failure reproduced: {}", run.failure->str());
-    } else {
-        for (std::size_t i = 0; i < problems.size(); ++i) {
-            if (i) result.message += "; ";
-            result.message += problems[i];
-        }
-    }
-    return result;
-}
-
-CheckedRun record_expectations(Scene& scene) {
-    const std::size_t nb = scene.balls.size();
-    const std::int64_t frames = scene.frames;
-    // Which frames get `expect state` lines: every frame for small runs, else 8 spread frames and the last.
-    std::set<std::int64_t> chosen;
-    if (static_cast<double>(frames + 1) * static_cast<double>(nb) <= 64.0) {
-        for (std::int64_t f = 0; f <= frames; ++f) chosen.insert(f);
-    } else {
-        for (std::int64_t k = 1; k <= 8; ++k) chosen.insert(frames * k / 8);
-        chosen.insert(frames);
-    }
-    const std::uint32_t balls_recorded = static_cast<std::uint32_t>(std::min<std::size_t>(nb, 8));
-    std::vector<ExpectState> states;
-    CheckOptions options;
-    options.keep_events = false;
-    options.on_frame = [&](std::span<const Event> events) {
-        for (const Event& e : events)
-            if (e.kind == Event::Kind::state && e.ball < balls_recorded && chosen.count(e.frame))
-                states.push_back({e.frame, e.ball, Ball{e.pos, e.vel}});
-    };
-    CheckedRun run = run_checked(scene, scene.kernel, frames, scene.checks, options);
-    if (run.error) return run;
-    scene.expect_hash = run.hash;
-    scene.expect_failure.reset();
-    if (run.failure) scene.expect_failure = ExpectFailure{run.failure->check, run.failure->frame};
-    scene.expect_states = std::move(states);
     return run;
 }
 

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include "ricochet/checks.hpp"
+#include "ricochet/record.hpp"
+#include "ricochet/replay.hpp"
 #include "ricochet/hash.hpp"
 #include "ricochet/scene_log.hpp"
 #include "ricochet/world.hpp"

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "ricochet/check.hpp"
 #include "ricochet/scene.hpp"
 #include "ricochet/world.hpp"
 
@@ -59,27 +60,12 @@ struct CheckOptions {
 };
 
 /// Runs frames 0..frames of scene under kernel, asserting checks on every frame. After the first failure
-/// the remaining checks are skipped but the run goes on (the hash covers the whole run).
+/// the remaining checks are skipped but the run goes on (the hash covers the whole run). Every World here
+/// (the run's, the mirrored one and the twin) steps with the default WorldOptions, as `ricochet run` does.
 CheckedRun run_checked(const Scene& scene, KernelId kernel, std::int64_t frames, std::span<const Check> checks,
                        const CheckOptions& options = {});
 
 /// The scene mirrored across x = 0: every x coordinate and x velocity negated (walls keep their direction).
 Scene mirror_x(const Scene& scene);
-
-/// Outcome of replaying one log against its checks and expect lines.
-struct ReplayResult {
-    bool passed = false;  ///< every check and expect line held (or the expected failure reproduced)
-    std::string message;  ///< one line: why it failed, or what it checked
-    CheckedRun run;       ///< the run itself (events not kept)
-};
-
-/// Replays scene (its kernel unless overridden, its frames): checks, then expect failure / hash / states.
-/// A log with `expect failure C F` passes only if C fails first at frame F.
-ReplayResult replay_scene(const Scene& scene, std::optional<KernelId> kernel = std::nullopt);
-
-/// Fills scene's expect lines from a run: expect hash, expect failure (if a check failed), expect state
-/// for every ball at a spread of frames (all frames if frames+1 times balls ≤ 64, else 8 spread frames and
-/// the last). Returns the run (its error set if it could not finish; then nothing is filled).
-CheckedRun record_expectations(Scene& scene);
 
 }  // namespace ricochet
