@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "ricochet/checks.hpp"
+#include "ricochet/format.hpp"
 #include "ricochet/record.hpp"
 #include "ricochet/replay.hpp"
 #include "ricochet/hash.hpp"
@@ -55,6 +56,54 @@ TEST(World, LeavingTheRangeIsAnError) {
     const CheckedRun run = run_checked(s, KernelId::robust, 5, {});
     ASSERT_TRUE(run.error);
     EXPECT_EQ(run.frames_run, 2);
+}
+
+TEST(World, PicksItsIndicesFromItsOptionsAndKernel) {
+    const Scene s = lecture_pinball();
+    const World grid(s, KernelId::robust);  // the defaults: broad phase on
+    EXPECT_NE(grid.wall_index(), nullptr);
+    EXPECT_NE(grid.skipped().find("uniform-grid"), std::string::npos) << grid.skipped();
+    EXPECT_NE(grid.skipped().find("one cell lookup"), std::string::npos) << grid.skipped();
+    const World bvh(s, KernelId::robust, {.broad_phase = BroadPhase::bvh});
+    EXPECT_NE(bvh.wall_index(), nullptr);
+    EXPECT_NE(bvh.skipped().find("BVH"), std::string::npos) << bvh.skipped();
+    const World none(s, KernelId::robust, {.broad_phase = BroadPhase::none});
+    EXPECT_EQ(none.wall_index(), nullptr);
+    EXPECT_EQ(none.skipped().find("one cell lookup"), std::string::npos) << none.skipped();
+    // The exact kernel tries every wall: no index is built for it.
+    EXPECT_EQ(World(s, KernelId::exact).wall_index(), nullptr);
+}
+
+TEST(World, CountsBounceLimitedBallsOnAnyThreadCount) {
+    // Ball 0 flies 100 units a frame between walls 1 apart: past k_max_bounces in frame 1. Ball 1 rests.
+    Scene s;
+    s.walls = {{{0, -10}, {0, 10}}, {{1, 10}, {1, -10}}};
+    s.balls = {{{0.5, 0}, {100, 0.25}}, {{0.25, 0}, {0, 0}}};
+    for (unsigned threads : {1u, 2u}) {
+        World w(s, KernelId::robust, {.threads = threads});
+        std::vector<Event> events;
+        w.start(events);
+        EXPECT_EQ(w.bounce_limited(), 0u);
+        ASSERT_FALSE(w.step(events));
+        EXPECT_EQ(w.bounce_limited(), 1u) << threads << " threads";
+        std::size_t hits = 0;
+        for (const Event& e : events) hits += e.kind == Event::Kind::hit && e.ball == 0;
+        EXPECT_EQ(hits, static_cast<std::size_t>(k_max_bounces));
+    }
+}
+
+TEST(Format, CoreTypesPrintInShortestRoundTripForm) {
+    EXPECT_EQ(fmt::format("{}", Vec2{1, -0.1}), "(1, -0.1)");
+    EXPECT_EQ(fmt::format("{}", Wall{{0, 1}, {2.5, -0.0}}), "0 1 2.5 -0");
+    EXPECT_EQ(fmt::format("{}", Ball{{1e300, 2}, {3, 0x1p-1074}}), "1e+300 2 3 5e-324");
+    EXPECT_EQ(fmt::format("{}", Circle{{1, 2}, 0.5}), "1 2 0.5");
+    EXPECT_EQ(fmt::format("{}", Rect{-1, -2, 3, 4}), "-1 -2 3 4");
+    EXPECT_EQ(fmt::format("[{:>8}]", KernelId::exact), "[   exact]");
+    EXPECT_EQ(fmt::format("{} {}", Check::no_tunnel, Miss::both_inside), "no-tunnel both-inside");
+    EXPECT_EQ(fmt::format("{} {} {}", side_from_sign(1), side_from_sign(-1), side_from_sign(0)), "outside inside on");
+    const Event overlap{Event::Kind::overlap, 3, 1, Event::Shape::circle, 7, {}, {}};
+    EXPECT_EQ(fmt::format("{}", overlap), "overlap 3 1 circle 7");
+    EXPECT_EQ(format_event(overlap), "overlap 3 1 circle 7");
 }
 
 TEST(Hash, RecordLayoutIsAsDocumented) {
