@@ -191,9 +191,9 @@ private:
             for (std::size_t w = 0; w < scene_.walls.size(); ++w) {
                 const Side s = classify(kernel_, p, scene_.walls[w]);
                 const Miss m = sweep(kernel_, p, e.vel, scene_.walls[w]).miss;
-                const bool bad = (s == Side::On && (m == Miss::both_inside || m == Miss::both_outside)) ||
-                                 (s == Side::Inside && m == Miss::both_outside) ||
-                                 (s == Side::Outside && m == Miss::both_inside);
+                const bool bad = (s == Side::on && (m == Miss::both_inside || m == Miss::both_outside)) ||
+                                 (s == Side::inside && m == Miss::both_outside) ||
+                                 (s == Side::outside && m == Miss::both_inside);
                 if (bad)
                     return fail(fmt::format("classify says ({}, {}) is {} wall {} but the sweep from it says {}",
                                             p.x, p.y, sides(sign_of(s)), w, miss_name(m)));

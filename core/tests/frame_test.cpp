@@ -38,7 +38,7 @@ class Frames : public ::testing::TestWithParam<KernelId> {};
 INSTANTIATE_TEST_SUITE_P(Kernels, Frames, ::testing::ValuesIn(k_all_kernels));
 
 TEST_P(Frames, BoxWallsPointOutward) {
-    for (const Wall& w : box()) EXPECT_EQ(classify(GetParam(), {5, 5}, w), Side::Inside);
+    for (const Wall& w : box()) EXPECT_EQ(classify(GetParam(), {5, 5}, w), Side::inside);
 }
 
 TEST_P(Frames, ThePinballBouncesAndSpendsTheRestOfTheFrame) {
@@ -147,7 +147,7 @@ TEST(Frames, BounceKeepsSpeedAndSide) {
             EXPECT_LE(std::fabs(after - before), k_speed_rel_bound * before + 4e-16 * before);
             const Side from = classify(KernelId::exact, start, w);
             const Side to = classify(KernelId::exact, s.ball.pos, w);
-            EXPECT_TRUE(to == from || to == Side::On) << kernel_name(k) << " case " << i;
+            EXPECT_TRUE(to == from || to == Side::on) << kernel_name(k) << " case " << i;
         }
     }
 }

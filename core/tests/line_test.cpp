@@ -25,7 +25,7 @@ TEST(Line, PointNormalEquationAndBC) {
     // At P1, n̂ = (0.8, −0.6) is rounded and BC = 0.8·3 − 0.6·4 comes out 4.4e-16, not 0: the
     // lecture's BC is a rounded value, which is why robust decides sides with exact predicates.
     EXPECT_NEAR(boundary_condition({4, 5}, w), 0.0, 1e-15);
-    EXPECT_EQ(classify(KernelId::robust, {4, 5}, w), Side::On);
+    EXPECT_EQ(classify(KernelId::robust, {4, 5}, w), Side::on);
     // BC = n̂·(P − P0): (5, 1) − (1, 1) = (4, 0), n̂·(4, 0) = 3.2, outside.
     EXPECT_DOUBLE_EQ(boundary_condition({5, 1}, w), 3.2);
     EXPECT_DOUBLE_EQ(boundary_condition({1, 6}, w), -3.0);
@@ -39,12 +39,12 @@ INSTANTIATE_TEST_SUITE_P(Kernels, Classify, ::testing::ValuesIn(k_all_kernels));
 TEST_P(Classify, OutsideInsideOn) {
     const KernelId k = GetParam();
     const Wall w{{0, 0}, {10, 0}};  // normal (0, −10): outside is below
-    EXPECT_EQ(classify(k, {5, -1}, w), Side::Outside);
-    EXPECT_EQ(classify(k, {5, 1}, w), Side::Inside);
-    EXPECT_EQ(classify(k, {5, 0}, w), Side::On);
-    EXPECT_EQ(classify(k, {-50, 0}, w), Side::On);  // on the line, beyond the segment
+    EXPECT_EQ(classify(k, {5, -1}, w), Side::outside);
+    EXPECT_EQ(classify(k, {5, 1}, w), Side::inside);
+    EXPECT_EQ(classify(k, {5, 0}, w), Side::on);
+    EXPECT_EQ(classify(k, {-50, 0}, w), Side::on);  // on the line, beyond the segment
     // Reversing the wall flips the normal and the side.
-    EXPECT_EQ(classify(k, {5, -1}, Wall{{10, 0}, {0, 0}}), Side::Inside);
+    EXPECT_EQ(classify(k, {5, -1}, Wall{{10, 0}, {0, 0}}), Side::inside);
 }
 
 TEST(Classify, RobustIsExactOnTheLine) {
@@ -52,16 +52,16 @@ TEST(Classify, RobustIsExactOnTheLine) {
     // irrational, so its rounded BC need not be 0; robust and exact must say On.
     const Wall w{{0.5, 0.25}, {1.25, 0.5}};
     const Vec2 p{2.0, 0.75};
-    EXPECT_EQ(classify(KernelId::robust, p, w), Side::On);
-    EXPECT_EQ(classify(KernelId::exact, p, w), Side::On);
+    EXPECT_EQ(classify(KernelId::robust, p, w), Side::on);
+    EXPECT_EQ(classify(KernelId::exact, p, w), Side::on);
     // One ulp off the line, both see the same strict side.
     const Vec2 up{2.0, std::nextafter(0.75, 1.0)};
-    EXPECT_EQ(classify(KernelId::robust, up, w), Side::Inside);
-    EXPECT_EQ(classify(KernelId::exact, up, w), Side::Inside);
+    EXPECT_EQ(classify(KernelId::robust, up, w), Side::inside);
+    EXPECT_EQ(classify(KernelId::exact, up, w), Side::inside);
     // Far from the origin, where the lecture's products lose every low bit.
     const Wall far{{1e15, 1e15}, {1e15 + 4, 1e15 + 2}};
-    EXPECT_EQ(classify(KernelId::robust, {1e15 + 8, 1e15 + 4}, far), Side::On);
-    EXPECT_EQ(classify(KernelId::robust, {1e15 + 8, 1e15 + 4.125}, far), Side::Inside);
+    EXPECT_EQ(classify(KernelId::robust, {1e15 + 8, 1e15 + 4}, far), Side::on);
+    EXPECT_EQ(classify(KernelId::robust, {1e15 + 8, 1e15 + 4.125}, far), Side::inside);
 }
 
 }  // namespace
