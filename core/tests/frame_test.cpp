@@ -54,6 +54,31 @@ TEST_P(Frames, ThePinballBouncesAndSpendsTheRestOfTheFrame) {
     EXPECT_EQ(s.status, FrameStatus::ok);
 }
 
+TEST_P(Frames, ABallAtRestStaysWithItsMemory) {
+    // First a frame ending exactly on the right wall after a bounce off the top one, so robust and exact
+    // remember a contact and a bounce; then the ball at rest: nothing moves, nothing is hit or forgotten.
+    BallMemory memory;
+    Stepped s = step(GetParam(), {{9, 9}, {1, 2}}, box(), &memory);
+    const BallMemory before = memory;
+    if (GetParam() == KernelId::robust || GetParam() == KernelId::exact) {
+        ASSERT_EQ(before.count, 1);  // lying on the right wall
+        ASSERT_NE(before.bounced_from, 0);
+    }
+    const Vec2 at = s.ball.pos;
+    s = step(GetParam(), {at, {0, 0}}, box(), &memory);
+    EXPECT_EQ(s.status, FrameStatus::ok);
+    EXPECT_EQ(s.ball.pos, at);
+    EXPECT_TRUE(s.hits.empty());
+    EXPECT_EQ(s.ball.vel, (Vec2{0, 0}));
+    EXPECT_EQ(memory.count, before.count);
+    for (std::uint8_t i = 0; i < memory.count; ++i) {
+        EXPECT_EQ(memory.contacts[i].wall, before.contacts[i].wall);
+        EXPECT_EQ(memory.contacts[i].side, before.contacts[i].side);
+    }
+    EXPECT_EQ(memory.bounced_from, before.bounced_from);
+    EXPECT_EQ(memory.bounced_wall, before.bounced_wall);
+}
+
 TEST_P(Frames, SeveralBouncesInOneFrame) {
     // Fast enough to cross the box twice: (5, 5) + (25, 0) bounces off x = 10 then x = 0.
     const Stepped s = step(GetParam(), {{5, 5}, {25, 0}}, box());

@@ -33,6 +33,32 @@ TEST(Line, PointNormalEquationAndBC) {
     EXPECT_EQ(boundary_condition({9, 9}, Wall{{2, 2}, {2, 2}}), 0.0);
 }
 
+TEST(Line, FormulasInFloat) {
+    // The same formulas in float, as lecture-float reads them: e = (3, 4), n = (4, −3), |n| = 5 exactly.
+    const Vec2T<float> p0{1, 1}, p1{4, 5};
+    EXPECT_EQ(edge(p0, p1), (Vec2T<float>{3, 4}));
+    EXPECT_EQ(normal(p0, p1), (Vec2T<float>{4, -3}));
+    EXPECT_EQ(unit_normal(p0, p1), (Vec2T<float>{0.8f, -0.6f}));
+    // BC = n̂·(P − P0) = 0.8f·4 − 0.6f·0 at (5, 1), rounded in float.
+    EXPECT_EQ(boundary_condition(Vec2T<float>{5, 1}, p0, unit_normal(p0, p1)), 0.8f * 4.0f);
+    EXPECT_EQ(side_of_line(Vec2T<float>{5, 1}, p0, p1), Side::outside);
+    EXPECT_EQ(side_of_line(Vec2T<float>{1, 6}, p0, p1), Side::inside);
+    EXPECT_EQ(side_of_line(p0, p0, p1), Side::on);
+    // Degenerate: a zero-length segment has no normal; every point is on its "line".
+    EXPECT_EQ(unit_normal(p0, p0), (Vec2T<float>{0, 0}));
+    EXPECT_EQ(side_of_line(Vec2T<float>{9, 9}, p0, p0), Side::on);
+}
+
+TEST(Line, FloatRoundsWhereDoubleDoesNot) {
+    // 1 + 2^-30 is a double but rounds to 1 in float: lecture-double sees the point off the line y = 1,
+    // lecture-float (every input rounded to float first) sees it on the line.
+    const Wall w{{0, 1}, {10, 1}};
+    const Vec2 p{5, 1 + 0x1p-30};
+    EXPECT_EQ(side_of_line(vec_cast<float>(p), vec_cast<float>(w.p0), vec_cast<float>(w.p1)), Side::on);
+    EXPECT_EQ(classify(KernelId::lecture_float, p, w), Side::on);
+    EXPECT_EQ(classify(KernelId::lecture_double, p, w), Side::inside);
+}
+
 class Classify : public ::testing::TestWithParam<KernelId> {};
 INSTANTIATE_TEST_SUITE_P(Kernels, Classify, ::testing::ValuesIn(k_all_kernels));
 
