@@ -1,5 +1,6 @@
 // Kernels: four numeric implementations of the lecture's collision tests behind one interface,
-// chosen by name at run time.
+// chosen by name at run time. Each is a type with the functions of KernelOps, entered once in the
+// kernel registry under its name (below); a plug-in kernel joins the same registry.
 //
 //   lecture-float, lecture-double  the lecture's formulas as written (unit normal n̂, BC, the five
 //                                  tests, t_i), in float or double. The baseline; not fixed.
