@@ -227,7 +227,7 @@ std::optional<Failure> translation(KernelId k, const Scene& s) {
 }
 
 /// The same scene stepped twice, and by two worlds in lockstep, gives the same events and the same hash.
-/// The broad phase and threads change nothing (issue 7): a wall grid, a static-shape index and 2 threads give
+/// The broad phase and threads change nothing: a wall grid, a static-shape index and 2 threads give
 /// run_scene's events bit for bit, so the same hash.
 std::optional<Failure> broad_phase(KernelId k, const Scene& s) {
     classify_legs(s);
