@@ -1,4 +1,4 @@
-// `ricochet run LOG [--kernel K] [--frames N]`: the run's events as scene-log.md prints them.
+// `ricochet run LOG [--kernel K] [--frames N]`: the run's events as docs/scene-log.md specifies them.
 #include <cstdio>
 
 #include <fmt/format.h>
