@@ -15,6 +15,7 @@
 
 #include "cache.hpp"
 #include "fuzz_common.hpp"
+#include "ricochet/replay.hpp"
 #include "process.hpp"
 #include "ricochet/checks.hpp"
 #include "ricochet/scene_log.hpp"

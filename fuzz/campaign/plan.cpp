@@ -41,7 +41,7 @@ bool known_target(const std::string& t) {
 
 std::optional<Plan> make_plan(const CampaignOptions& opt) {
     if (!parse_kernel(opt.kernel)) {
-        fmt::print(stderr, "ricochet fuzz: error: unknown kernel '{}' (lecture-float, lecture-double, robust, exact)\n", opt.kernel);
+        fmt::print(stderr, "ricochet fuzz: error: unknown kernel '{}' ({})\n", opt.kernel, kernel_names());
         return std::nullopt;
     }
     Plan plan;
