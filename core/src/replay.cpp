@@ -69,6 +69,18 @@ ReplayResult replay_scene(const Scene& scene, std::optional<KernelId> kernel) {
         problems.push_back(fmt::format("hash expected {}, got {}{}", format_hash(*scene.expect_hash),
                                        format_hash(run.hash), where));
     }
+    // A saved failure log records what its run showed (`found`): say when this run shows something else.
+    // A record only: the verdict above stands.
+    std::optional<std::string> drift;
+    if (scene.found) {
+        const Found& was = *scene.found;
+        const std::string found = fmt::format("found {} at frame {} ball {}", was.check, was.frame, was.ball);
+        if (!run.failure)
+            drift = fmt::format("{} when saved, but every check holds now", found);
+        else if (run.failure->check != was.check || run.failure->frame != was.frame || run.failure->ball != was.ball)
+            drift = fmt::format("{} when saved, now {} at frame {} ball {}", found, run.failure->check,
+                                run.failure->frame, run.failure->ball);
+    }
     result.passed = problems.empty();
     if (result.passed) {
         result.message = fmt::format("{} frames, hash {}", run.frames_run, format_hash(run.hash));
@@ -80,6 +92,7 @@ ReplayResult replay_scene(const Scene& scene, std::optional<KernelId> kernel) {
             result.message += problems[i];
         }
     }
+    if (drift) result.message += "; " + *drift;
     return result;
 }
 

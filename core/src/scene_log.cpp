@@ -5,10 +5,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <system_error>
+#include <variant>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -80,18 +83,57 @@ bool write_file_atomically(const std::filesystem::path& path, std::string_view t
     return true;
 }
 
-std::optional<std::filesystem::path> save_scene_log_once(const std::filesystem::path& dir, std::string_view prefix,
-                                                         const Scene& scene, std::string* error) {
+namespace {
+
+/// The saved log of the case with content id `id` directly in dir: `name` if it exists, else any readable
+/// *.scene of the same content id (in name order, so the answer does not depend on the file system).
+std::optional<std::filesystem::path> find_case(const std::filesystem::path& dir, const std::string& name,
+                                               const std::string& id) {
+    std::error_code ec;
+    if (std::filesystem::exists(dir / name, ec)) return dir / name;
+    std::vector<std::filesystem::path> logs;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+        if (e.path().extension() == ".scene" && e.is_regular_file(ec)) logs.push_back(e.path());
+    std::sort(logs.begin(), logs.end());
+    for (const auto& path : logs) {
+        const SceneOrDiagnostic parsed = read_scene_log(path);
+        // A log that does not read (a deliberately malformed one, say) is no case.
+        if (const Scene* s = std::get_if<Scene>(&parsed); s != nullptr && scene_content_id(*s) == id) return path;
+    }
+    return std::nullopt;
+}
+
+std::optional<SavedLog> save_once(const std::filesystem::path& dir, std::string_view prefix, const Scene& scene,
+                                  std::string_view text, std::string* error) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) {
         if (error) *error = fmt::format("{}: cannot create the folder: {}", dir.string(), ec.message());
         return std::nullopt;
     }
-    const std::filesystem::path path = dir / fmt::format("{}-{}.scene", prefix, scene_content_id(scene));
-    if (std::filesystem::exists(path, ec)) return path;
-    if (!write_file_atomically(path, write_scene_log(scene), error)) return std::nullopt;
-    return path;
+    const std::string id = scene_content_id(scene);
+    const std::string name = fmt::format("{}-{}.scene", prefix, id);
+    if (auto known = find_case(dir, name, id)) return SavedLog{*known, false};
+    const std::filesystem::path path = dir / name;
+    if (!write_file_atomically(path, text, error)) return std::nullopt;
+    return SavedLog{path, true};
+}
+
+}  // namespace
+
+std::optional<SavedLog> save_scene_log_once(const std::filesystem::path& dir, std::string_view prefix,
+                                            const Scene& scene, std::string* error) {
+    return save_once(dir, prefix, scene, write_scene_log(scene), error);
+}
+
+std::optional<SavedLog> save_scene_log_once(const std::filesystem::path& dir, std::string_view prefix,
+                                            std::string_view text, std::string* error) {
+    const SceneOrDiagnostic parsed = parse_scene_log(text, fmt::format("{}-*.scene", prefix));
+    if (const auto* d = std::get_if<Diagnostic>(&parsed)) {
+        if (error) *error = fmt::format("not a scene log: {}", d->str());
+        return std::nullopt;
+    }
+    return save_once(dir, prefix, std::get<Scene>(parsed), text, error);
 }
 
 }  // namespace ricochet

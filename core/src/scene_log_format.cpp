@@ -1,6 +1,7 @@
 // The scene-log text format (format 1, docs/scene-log.md): the reader and the canonical writer.
 #include "ricochet/scene_log_format.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <vector>
@@ -269,6 +270,20 @@ private:
             } else {
                 fail(what, fmt::format("unknown expectation '{}' (hash, state or failure)", what.text));
             }
+        } else if (name == "found") {
+            expected_ = "CHECK F BALL";
+            if (scene_.found) fail(d, "duplicate 'found'");
+            const Token& t = arg(1, "check name");
+            const auto c = parse_check(t.text);
+            if (!c) fail(t, fmt::format("unknown check '{}'", t.text));
+            const std::int64_t f = integer(2, "frame");
+            if (f < 0) fail(tokens_[2], fmt::format("negative frame {}", f));
+            const std::int64_t ball = integer(3, "ball index");
+            if (ball < 0 || ball >= static_cast<std::int64_t>(k_max_entities))
+                fail(tokens_[3], fmt::format("ball index {} is out of range", ball));
+            no_more(4);
+            scene_.found = Found{*c, f, static_cast<std::uint32_t>(ball)};
+            found_place_ = {line_, tokens_[1].col, tokens_[2].col, tokens_[3].col};
         } else if (name == "from") {
             expected_ = "provenance words";
             arg(1, "provenance");
@@ -299,6 +314,20 @@ private:
                 throw ParseError{p.line, p.col_b, fmt::format("expect state for ball {} but the log has {} balls",
                                                               e.ball, scene_.balls.size())};
         }
+        if (scene_.found) {
+            const Found& f = *scene_.found;
+            const Place& p = found_place_;
+            if (std::find(scene_.checks.begin(), scene_.checks.end(), f.check) == scene_.checks.end())
+                throw ParseError{p.line, p.col_a,
+                                 fmt::format("found a failure of '{}' but the log has no 'check {}'", f.check, f.check)};
+            if (f.frame > scene_.frames)
+                throw ParseError{p.line, p.col_b, fmt::format("found a failure at frame {} but the log runs {} frames",
+                                                              f.frame, scene_.frames)};
+            // A failure always names a ball: ball 0 in a log without balls (a static shape against another).
+            if (f.ball >= std::max<std::size_t>(scene_.balls.size(), 1))
+                throw ParseError{p.line, p.col_c, fmt::format("found a failure for ball {} but the log has {} balls",
+                                                              f.ball, scene_.balls.size())};
+        }
         if (scene_.expect_failure) {
             const ExpectFailure& f = *scene_.expect_failure;
             bool listed = false;
@@ -318,6 +347,7 @@ private:
         int line = 0;
         int col_a = 0;
         int col_b = 0;
+        int col_c = 0;
     };
 
     std::string_view text_;
@@ -325,6 +355,7 @@ private:
     std::vector<Token> tokens_;
     std::vector<Place> state_places_;
     Place failure_place_;
+    Place found_place_;
     std::string_view expected_;
     int line_ = 0;
     int end_col_ = 1;
@@ -358,6 +389,7 @@ void write_body(std::string& out, const Scene& s, bool with_provenance_and_expec
     for (const Rect& r : s.rects) fmt::format_to(it, "rect {}\n", r);
     for (Check c : s.checks) fmt::format_to(it, "check {}\n", c);
     if (!with_provenance_and_expect) return;
+    if (s.found) fmt::format_to(it, "found {} {} {}\n", s.found->check, s.found->frame, s.found->ball);
     if (s.expect_hash) fmt::format_to(it, "expect hash {}\n", format_hash(*s.expect_hash));
     if (s.expect_failure)
         fmt::format_to(it, "expect failure {} {}\n", s.expect_failure->check, s.expect_failure->frame);

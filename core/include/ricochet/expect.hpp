@@ -21,5 +21,13 @@ struct ExpectFailure {
     std::int64_t frame = 0;
     friend bool operator==(const ExpectFailure&, const ExpectFailure&) = default;
 };
+/// `found CHECK F BALL`: the run that saved this log broke CHECK first at frame F for ball BALL. A record,
+/// not an expectation: replay's verdict does not depend on it, its message says when the run differs.
+struct Found {
+    Check check = Check::no_tunnel;
+    std::int64_t frame = 0;
+    std::uint32_t ball = 0;
+    friend bool operator==(const Found&, const Found&) = default;
+};
 
 }  // namespace ricochet

@@ -31,6 +31,7 @@ struct Scene {
     std::optional<std::uint64_t> expect_hash;
     std::vector<ExpectState> expect_states;
     std::optional<ExpectFailure> expect_failure;
+    std::optional<Found> found;                 ///< what the run that saved the log showed (`found`)
     std::vector<std::string> provenance;        ///< the words after each `from`, verbatim
     friend bool operator==(const Scene&, const Scene&) = default;  ///< by value (same_bits compares bits)
 };

@@ -19,9 +19,22 @@ SceneOrDiagnostic read_scene_log(const std::filesystem::path& path);
 /// fsync the folder. On failure returns false, sets *error (if given) and leaves path untouched.
 bool write_file_atomically(const std::filesystem::path& path, std::string_view text, std::string* error);
 
-/// Saves scene as DIR/PREFIX-ID.scene (ID = scene_content_id) unless a log of that name already exists:
-/// the same case is never saved twice. Returns the path (new or existing), or nothing with *error set.
-std::optional<std::filesystem::path> save_scene_log_once(const std::filesystem::path& dir, std::string_view prefix,
-                                                         const Scene& scene, std::string* error);
+/// Where save_scene_log_once left a case.
+struct SavedLog {
+    std::filesystem::path path;  ///< the log of the case: the one written, or the one already there
+    bool is_new = false;         ///< true if this call wrote it, false if the case was saved before
+};
+
+/// Saves scene's canonical text as DIR/PREFIX-ID.scene (ID = scene_content_id) unless the folder already
+/// holds the same case: a log of that name, or any readable *.scene directly in DIR with the same content
+/// id (whatever its name, provenance or expect lines). The same case is never saved twice. Returns where
+/// the case is and whether this call wrote it, or nothing with *error set.
+std::optional<SavedLog> save_scene_log_once(const std::filesystem::path& dir, std::string_view prefix,
+                                            const Scene& scene, std::string* error);
+
+/// As above for a log given as text: text must read as a scene log (else nothing, *error set to its
+/// diagnostic); it is saved verbatim, so its comment lines are kept.
+std::optional<SavedLog> save_scene_log_once(const std::filesystem::path& dir, std::string_view prefix,
+                                            std::string_view text, std::string* error);
 
 }  // namespace ricochet

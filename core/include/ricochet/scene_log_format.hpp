@@ -41,12 +41,12 @@ using SceneOrDiagnostic = std::variant<Scene, Diagnostic>;
 SceneOrDiagnostic parse_scene_log(std::string_view text, std::string_view filename);
 
 /// The canonical text of a scene: header, `from` lines, kernel, frames, walls, balls, circles, rects,
-/// checks, expect hash, expect failure, expect states; numbers in shortest round-trip form.
+/// checks, found, expect hash, expect failure, expect states; numbers in shortest round-trip form.
 /// parse_scene_log(write_scene_log(s)) gives s back bit for bit.
 std::string write_scene_log(const Scene& scene);
 
 /// The case's identity: 16 lowercase hex digits of xxh64 over the canonical text of the scene without
-/// its `from` and `expect` lines. Two logs of the same case have the same id.
+/// its `from`, `found` and `expect` lines. Two logs of the same case have the same id.
 std::string scene_content_id(const Scene& scene);
 
 }  // namespace ricochet
