@@ -10,6 +10,7 @@
 #include <fmt/core.h>
 
 #include "ricochet/checks.hpp"
+#include "ricochet/failure_log.hpp"
 #include "ricochet/scene_log.hpp"
 
 namespace ricochet::fuzz {
@@ -173,43 +174,27 @@ Rect ByteReader::rect() {
     return r;
 }
 
-void fail(std::string_view target, const Failure& f, Scene scene) {
+void check_scene(std::string_view target, const Scene& scene, std::span<const Check> checks) {
+    CheckOptions options;
+    options.keep_events = false;
+    const CheckedRun run = run_checked(scene, kernel_under_test(), scene.frames, checks, options);
+    if (run.failure) fail(target, scene, *run.failure);
+}
+
+void fail(std::string_view target, const Scene& scene, const CheckFailure& failure) {
     const KernelId k = kernel_under_test();
+    // kind: what the campaign tells failures apart by (with the check).
     fmt::print(stderr, "{} target={} kernel={} check={} frame={} kind={}\n  {}\n", k_failure_tag, target, kernel_name(k),
-               check_name(f.check), f.frame, f.kind, f.what);
+               check_name(failure.check), failure.frame, check_name(failure.check), failure.str());
     if (const char* out = std::getenv(k_scene_out_env); out != nullptr && *out != '\0') {
         const char* sha = std::getenv(k_sha1_env);
-        scene.kernel = k;
-        scene.provenance = {fmt::format("fuzz {} {}", target, sha != nullptr && *sha != '\0' ? sha : "unknown")};
-        // Which check does replay see break? The target's own first; if replay's version of it misses
-        // this case, the first of all checks that replay sees fail.
-        std::vector<Check> checks = {f.check};
-        CheckedRun run = run_checked(scene, k, scene.frames, checks, no_events());
-        if (!run.failure) {
-            checks = {Check::no_tunnel, Check::oracle, Check::speed, Check::boundary, Check::symmetry, Check::deterministic};
-            run = run_checked(scene, k, scene.frames, checks, no_events());
-        }
-        std::string note = fmt::format("{}: {}", f.kind, f.what);
-        if (run.failure) {
-            scene.checks = {run.failure->check};
-            // A lecture kernel's failure documents a known weakness: replay passes while it reproduces.
-            // A robust or exact failure is a bug: its log fails replay until the bug is fixed.
-            if (k == KernelId::lecture_float || k == KernelId::lecture_double)
-                scene.expect_failure = ExpectFailure{run.failure->check, run.failure->frame};
-            fmt::print(stderr, "  replay sees it: {}\n", run.failure->str());
-        } else {
-            scene.checks = {f.check};
-            note += " (replay's checks do not see this; the fuzz target's oracle is stricter)";
-            fmt::print(stderr, "  replay does not see it: the log documents the case only\n");
-        }
-        // The header, then the fuzz target's own words as a comment, then the canonical log.
-        std::string text = write_scene_log(scene);
-        const std::size_t eol = text.find('\n');
-        std::string comment;
-        for (char ch : note) comment += (ch == '\n' || ch == '\r') ? ' ' : ch;
-        text.insert(eol + 1, fmt::format("# {}\n", comment));
+        const FailureLog log = make_failure_log(
+            scene, k, fmt::format("fuzz {} {}", target, sha != nullptr && *sha != '\0' ? sha : "unknown"), failure);
+        if (!log.reproduces())
+            fmt::print(stderr, "ricochet fuzz: warning: the saved log does not reproduce this failure (its run: {})\n",
+                       log.replayed ? log.replayed->str() : std::string("every check holds"));
         std::string error;
-        if (!write_file_atomically(out, text, &error)) fmt::print(stderr, "ricochet fuzz: error: {}\n", error);
+        if (!write_file_atomically(out, log.text(), &error)) fmt::print(stderr, "ricochet fuzz: error: {}\n", error);
     }
     std::fflush(stderr);
     std::abort();

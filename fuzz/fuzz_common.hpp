@@ -1,7 +1,8 @@
 // Shared by the fuzz targets: a deterministic byte decoder that favours the numbers where
 // geometry goes wrong (small integers, dyadic fractions, values near zero, huge offsets, a few ulps
-// either side of a line), the kernel under test, and the failure report that turns an oracle
-// violation into an abort (libFuzzer saves the input) plus, on request, a scene log.
+// either side of a line), the kernel under test, and the one oracle: the decoded Scene run through the
+// shared checker (run_checked, checks.hpp); a failure aborts (libFuzzer saves the input) and, on
+// request, saves the failure log (failure_log.hpp) that `ricochet replay` reproduces.
 #pragma once
 
 #include <cstddef>
@@ -81,27 +82,13 @@ private:
 /// Keeps x in the accepted range: out-of-range or non-finite values become 0.
 double clamp_to_range(double x);
 
-/// The same wall walked the other way (normal flipped).
-inline Wall reversed(const Wall& w) { return {w.p1, w.p0}; }
+/// Runs scene under the kernel under test with checks (run_checked, no events kept) and, on the first
+/// failure, calls fail: a target's whole oracle.
+void check_scene(std::string_view target, const Scene& scene, std::span<const Check> checks);
 
-/// An oracle violation: which scene-log check it breaks, the frame, a stable kind (the campaign
-/// deduplicates on it) and a human sentence.
-struct Failure {
-    Check check = Check::oracle;
-    std::int64_t frame = 0;
-    std::string kind;
-    std::string what;
-};
-
-/// Check options that keep no events (the fuzz targets only need the verdict and the hash).
-inline CheckOptions no_events() {
-    CheckOptions o;
-    o.keep_events = false;
-    return o;
-}
-
-/// Reports f for target on stderr, writes scene (with the failed check, provenance and, for a
-/// lecture kernel, `expect failure`) to $RICOCHET_FUZZ_SCENE_OUT if set, then aborts.
-[[noreturn]] void fail(std::string_view target, const Failure& f, Scene scene);
+/// Reports failure (of scene under the kernel under test) for target on stderr, writes the failure log
+/// (make_failure_log, `from fuzz TARGET SHA1`, the note as a comment) to $RICOCHET_FUZZ_SCENE_OUT if set,
+/// then aborts.
+[[noreturn]] void fail(std::string_view target, const Scene& scene, const CheckFailure& failure);
 
 }  // namespace ricochet::fuzz

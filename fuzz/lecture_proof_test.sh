@@ -3,8 +3,8 @@
 # --runs N --seed S` (one worker, libFuzzer's -seed and -runs, no time limit) must exit 1 (a new failure),
 # leave scene logs in a temporary replay folder, each naming its input by the SHA-1 libFuzzer would name it
 # by, and `ricochet replay` must pass them (their `expect failure` reproduces) and fail them once
-# `expect failure` is removed. The scene target's oracle is replay's own checks, so whatever it finds
-# replay sees (the sweep target's oracle also finds decision errors that no replay check asserts).
+# `expect failure` is removed. Every target's oracle is replay's own checks (run_checked), so whatever it
+# finds replay sees.
 # Usage: lecture_proof_test.sh RICOCHET_EXE BIN_DIR
 set -u
 exe="$1"; bins="$2/"

@@ -1,7 +1,8 @@
 // Fuzz target `parser`: arbitrary bytes into the scene-log reader.
 // Oracle (besides ASan/UBSan/leaks/timeouts): a rejected log names a place (line and column ≥ 1)
 // and a reason; an accepted log round-trips: write(read(text)) reads back to the same scene bit for
-// bit (same_bits, so −0 and +0 differ), and writing that again gives the same text.
+// bit (same_bits, so −0 and +0 differ), and writing that again gives the same text. Neither is a
+// `check` a log can name yet, so a failure here saves no log: the input itself is the reproducer.
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>

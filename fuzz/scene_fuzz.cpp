@@ -1,12 +1,9 @@
 // Fuzz target `scene`: a whole small scene decoded from the bytes (an optional closed box, free
 // walls, balls, circles, rectangles) stepped for up to 32 frames by the kernel under test.
-// Oracle: the scene-log checks no-tunnel (exact), speed (|v| within the kernel's bound per bounce),
-// boundary and deterministic (a second World in lockstep gives the same events, hence the same hash),
-// all as `ricochet replay` asserts them (checks.hpp), so every failure replays.
+// Oracle: the shared checker (run_checked) with the checks below, exactly as `ricochet replay` runs
+// them on the saved log, so every failure replays.
 #include <cmath>
 #include <cstdint>
-
-#include <fmt/format.h>
 
 #include "fuzz_common.hpp"
 #include "ricochet/checks.hpp"
@@ -52,18 +49,15 @@ Scene decode(const std::uint8_t* data, std::size_t size) {
     return s;
 }
 
+/// The checks this target claims: no-tunnel (exact), speed (|v| within the kernel's bound per bounce),
+/// boundary and deterministic (a second World in lockstep gives the same events).
+constexpr Check k_checks[] = {Check::no_tunnel, Check::speed, Check::boundary, Check::deterministic};
+
 }  // namespace
 }  // namespace ricochet::fuzz
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    using namespace ricochet;
-    const KernelId k = fuzz::kernel_under_test();
-    const Scene scene = fuzz::decode(data, size);
-    static constexpr Check k_checks[] = {Check::no_tunnel, Check::speed, Check::boundary, Check::deterministic};
-    const CheckedRun run = run_checked(scene, k, scene.frames, k_checks, fuzz::no_events());
-    if (run.failure)
-        fuzz::fail("scene", fuzz::Failure{run.failure->check, run.failure->frame, std::string(check_name(run.failure->check)),
-                                          run.failure->str()},
-                   scene);
+    using namespace ricochet::fuzz;
+    check_scene("scene", decode(data, size), k_checks);
     return 0;
 }

@@ -24,6 +24,7 @@
 #include <string_view>
 
 #include "ricochet/checks.hpp"
+#include "ricochet/failure_log.hpp"
 #include "ricochet/replay.hpp"
 #include "ricochet/scene_log.hpp"
 
@@ -111,26 +112,33 @@ int replay_saved(const Property& p, KernelId k) {
     return replayed;
 }
 
-/// Saves the minimal failing case as a scene log; returns a report for the test's failure message.
+/// Saves the minimal failing case as a failure log (make_failure_log) when the shared checker sees the
+/// failure (what it cannot see is not saved: replay could not reproduce it); returns a report for the
+/// test's failure message.
 std::string save_failure(const Property& p, KernelId k, std::uint64_t seed, const Scene& found, const Failure& f) {
-    Scene log = found;
-    log.kernel = k;
-    log.checks = {f.check};
-    log.expect_hash.reset();
-    log.expect_states.clear();
-    log.expect_failure.reset();  // replay must show the failure, not expect it
-    log.provenance = {fmt::format("property {} seed {}", p.name, seed)};
+    Scene scene = found;
+    scene.kernel = k;
+    const Check checks[] = {f.check};
+    CheckOptions options;
+    options.keep_events = false;
+    const CheckedRun run = run_checked(scene, k, scene.frames, checks, options);
+    if (!run.failure)
+        return fmt::format("NOT saved: the shared check {} holds on this case, so replay could not reproduce it",
+                           check_name(f.check));
+    const FailureLog log = make_failure_log(scene, k, fmt::format("property {} seed {}", p.name, seed), *run.failure);
     std::string error;
-    const auto path = save_scene_log_once(replay_dir(), p.name, log, &error);
-    if (!path) return fmt::format("could not save the case: {}", error);
-    std::string report = fmt::format("minimal case saved as {}", path->string());
-    // Read the saved log back: it must still break the property, and replay should see the failure.
-    auto parsed = read_scene_log(*path);
+    const auto saved = save_scene_log_once(replay_dir(), p.name, std::string_view(log.text()), &error);
+    if (!saved) return fmt::format("could not save the case: {}", error);
+    std::string report = fmt::format("minimal case {} {}", saved->is_new ? "saved as" : "already saved as",
+                                     saved->path.string());
+    // Read the saved log back: it must still break the property, and replay must show the failure.
+    auto parsed = read_scene_log(saved->path);
     if (const auto* d = std::get_if<Diagnostic>(&parsed)) return report + fmt::format(" (UNREADABLE: {})", d->str());
     const Scene back = std::get<Scene>(std::move(parsed));
     const auto again = judge(p, k, back);
     report += again ? "; re-running the saved log breaks the property again"
                     : "; WARNING: the saved log does NOT break the property when re-run";
+    if (!log.reproduces()) report += "; WARNING: the saved log's run does not break the check at the same frame";
     const ReplayResult replay = replay_scene(back);
     report += fmt::format("; `ricochet replay` says: {} ({})", replay.passed ? "passed" : "FAILED", replay.message);
     return report;

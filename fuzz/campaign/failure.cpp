@@ -1,11 +1,13 @@
-// Turning a campaign's failures into scene logs (failure.hpp). The fuzz target writes the log itself
-// (fuzz_common.cpp's fail(): `from fuzz TARGET SHA1`, the check replay sees break, `expect failure` for
-// a lecture kernel) when RICOCHET_FUZZ_SCENE_OUT names a file; the campaign reads it back and saves it as
-// fuzz-TARGET-ID.scene through save_scene_log_once, so a case already saved is never saved twice.
+// Turning a campaign's failures into scene logs (failure.hpp). The fuzz target writes the failure log
+// itself (fuzz_common.cpp's fail(), make_failure_log: `from fuzz TARGET SHA1`, the check that failed,
+// `found`, `expect failure` for a lecture kernel) when RICOCHET_FUZZ_SCENE_OUT names a file; the campaign
+// saves it as fuzz-TARGET-ID.scene through save_scene_log_once, which tells a new case from one already
+// in the folder under any name.
 #include "failure.hpp"
 
 #include <set>
 #include <sstream>
+#include <string_view>
 #include <string>
 #include <system_error>
 #include <variant>
@@ -33,15 +35,6 @@ constexpr int k_minimize_runs = 20000;
 /// Seconds cap for -minimize_crash in a campaign by time (a campaign by runs is capped by runs only, so
 /// that it minimizes to the same input whatever the load).
 constexpr int k_minimize_seconds = 20;
-
-/// The scene logs directly in dir, by file name.
-std::set<std::string> scene_logs_in(const fs::path& dir) {
-    std::set<std::string> out;
-    std::error_code ec;
-    for (const auto& e : fs::directory_iterator(dir, ec))
-        if (e.path().extension() == ".scene") out.insert(e.path().filename().string());
-    return out;
-}
 
 /// The failure's signature (the target's failure line without its frame, or the sanitizer's summary)
 /// and the line to print; both empty if the output has neither.
@@ -101,34 +94,27 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const fs::path& re
         ++r.new_failures;
         return;
     }
-    const SceneOrDiagnostic parsed = read_scene_log(scene_out);
-    const Scene* scene = std::get_if<Scene>(&parsed);
-    if (scene == nullptr) {
-        fmt::print("    the target wrote an unreadable log: {}\n", std::get<Diagnostic>(parsed).str());
-        ++r.new_failures;
-        return;
-    }
-    // save_scene_log_once returns the existing log for a case saved before: the folder's logs before the
-    // call tell a new log from a known one.
-    const std::set<std::string> before = scene_logs_in(replay_dir);
+    // The target wrote the failure log (make_failure_log); saved verbatim, its note comment kept.
+    const std::string text = read_all(scene_out);
     std::string error;
-    const auto saved = save_scene_log_once(replay_dir, "fuzz-" + r.target, *scene, &error);
+    const auto saved = save_scene_log_once(replay_dir, "fuzz-" + r.target, std::string_view(text), &error);
     if (!saved) {
         fmt::print("    cannot save the log: {}\n", error);
         ++r.new_failures;
         return;
     }
-    if (before.contains(saved->filename().string())) {
-        fmt::print("    known: an equal log is already there: {}\n", saved->string());
+    if (!saved->is_new) {
+        fmt::print("    known: the same case is already there: {}\n", saved->path.string());
         ++r.known_failures;
         return;
     }
-    fmt::print("    scene log: {}  (ricochet replay {})\n", saved->string(), saved->string());
-    // A failure of the target's own oracle that none of replay's checks sees: the log passes replay
-    // without expecting any failure, so it documents the case but does not guard against it. Say so.
-    if (!scene->expect_failure && replay_scene(*scene).passed)
-        fmt::print("    note: replay's checks do not see this failure (the target's oracle is stricter); the log "
-                   "documents the case only\n");
+    fmt::print("    scene log: {}  (ricochet replay {})\n", saved->path.string(), saved->path.string());
+    // The contract: replay shows the failure the target saw. A log that passes replay without expecting a
+    // failure would guard against nothing: say so.
+    const SceneOrDiagnostic parsed = read_scene_log(saved->path);
+    if (const Scene* scene = std::get_if<Scene>(&parsed); scene != nullptr && !scene->expect_failure &&
+                                                         replay_scene(*scene).passed)
+        fmt::print("    note: replay's checks do not see this failure; the log documents the case only\n");
     ++r.new_failures;
 }
 
