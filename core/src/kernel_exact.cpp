@@ -13,6 +13,7 @@
 #include "kernel_impl.hpp"
 #include "path.hpp"
 #include "ricochet/predicates.hpp"
+#include "ricochet/step_trace.hpp"
 
 namespace ricochet::exact_kernel {
 namespace {
@@ -135,6 +136,8 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
         QV point;
     };
     std::vector<QHit> path;
+    // The legs are rational, not doubles: a trace gets the reflections only.
+    if (scratch.trace != nullptr) scratch.trace->legs_traced = false;
     QV q = qv(ball.pos), v = qv(ball.vel);
     int last_from = 0;  // the side the last bounce met its wall from
     Q rest = 1, now = 0;
@@ -153,6 +156,7 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
         const auto blocked = std::find_if(contacts.begin(), contacts.end(),
                                           [&](const QContact& c) { return sgn(bc(b, qwalls[c.wall])) == -c.side; });
         if (blocked != contacts.end()) {
+            if (scratch.trace != nullptr) ++scratch.trace->reflections;
             v = reflect(v, qwalls[blocked->wall]);
             continue;
         }
@@ -189,8 +193,13 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
                 std::none_of(arrived.begin(), arrived.end(), [&](const QContact& a) { return a.wall == c.wall; }))
                 arrived.push_back(c);
         QV w = reflect(v, qwalls[at_first.front()]);
+        int reflections = 1;
         for (const QContact& c : arrived)
-            if (sgn(dot(w, qwalls[c.wall].n())) == -c.side) w = reflect(w, qwalls[c.wall]);
+            if (sgn(dot(w, qwalls[c.wall].n())) == -c.side) {
+                w = reflect(w, qwalls[c.wall]);
+                ++reflections;
+            }
+        if (scratch.trace != nullptr) scratch.trace->reflections += reflections;
         for (const QContact& c : arrived)
             if (sgn(dot(w, qwalls[c.wall].n())) == -c.side) w = {-v.x, -v.y};
         v = w;

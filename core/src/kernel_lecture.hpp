@@ -7,8 +7,15 @@
 
 #include "path.hpp"
 #include "ricochet/kernel.hpp"
+#include "ricochet/step_trace.hpp"
 
 namespace ricochet::lecture {
+
+/// lecture-float's stated bound on the relative change of |v| per reflection: its unit normal and
+/// reflection round at 2^-24 per operation, a few times over; 1e-3 (about 2^-10) fails only real blunders.
+inline constexpr double k_float_speed_rel_bound = 1e-3;
+/// lecture-double's: the same formulas at 2^-53 per operation; 1e-6 fails only real blunders.
+inline constexpr double k_double_speed_rel_bound = 1e-6;
 
 /// A vector in the kernel's precision.
 template <class Real>
@@ -134,9 +141,21 @@ FrameStatus step_ball(Ball& ball, std::span<const Wall> walls, std::vector<HitEv
         bool found = false;
         std::uint32_t best = 0;
         LegResult<Real> hit{};
+        TracedLeg* traced = nullptr;
+        if (StepTrace* t = scratch.trace) {
+            // The leg as the kernel's own numbers: pos and pos + d in Real, widened to double exactly.
+            const auto first = static_cast<std::uint32_t>(t->decisions.size());
+            const std::optional<std::uint32_t> skipped =
+                last == std::numeric_limits<std::uint32_t>::max() ? std::nullopt : std::optional<std::uint32_t>(last);
+            traced = &t->legs.emplace_back(TracedLeg{a, b, false, 0, 0, std::nullopt, first, 0, skipped});
+        }
         for (std::uint32_t i : detail::candidates(walls, index, a, b, scratch.candidates, scratch.all_walls)) {
             if (i == last) continue;
             const LegResult<Real> r = sweep_leg(pos, d, to<Real>(walls[i].p0), to<Real>(walls[i].p1));
+            if (traced != nullptr) {
+                scratch.trace->decisions.push_back({i, r.miss});
+                ++traced->decision_count;
+            }
             if (r.miss != Miss::none) continue;
             if (!found || r.t < hit.t || (r.t == hit.t && i < best)) {
                 found = true;
@@ -148,10 +167,12 @@ FrameStatus step_ball(Ball& ball, std::span<const Wall> walls, std::vector<HitEv
             pos = pos + d;
             break;
         }
+        if (traced != nullptr) traced->hit = best;
         if (bounce == k_max_bounces) {
             status = FrameStatus::bounce_limit;
             break;
         }
+        if (scratch.trace != nullptr) ++scratch.trace->reflections;
         now = now + rest * hit.t;
         hits.push_back({best, static_cast<double>(now), {static_cast<double>(hit.point.x), static_cast<double>(hit.point.y)}});
         // Spend the rest of the frame, (1 − t_i)·v', moving on from B_i.
