@@ -27,10 +27,10 @@
 //                  every reflect() call, hits, corner re-reflections and contact reflections without a hit;
 //                  v′ = −v is exact and counts 0): | |v_end| − |v_start| | ≤ ((1 + b)^m − 1)·|v_start| + m·a,
 //                  b and a the kernel's speed_bound. Decided exactly (truth::speed_within): the only rounding
-//                  is |v_start| itself, a 256-bit square root widened by 2^−200 relative.
+//                  is |v_start| itself, a 256-bit square root widened by 2^−200 relative. And reflect(v_start, w)
+//                  about every wall of non-zero length keeps to the bound with m = 1.
 //   deterministic  A second World stepped in lockstep prints the same events, bit for bit, and so the same
-//                  running hash; and each ball stepped again from its state before the frame (with a trace,
-//                  for the checks that read one) ends in the same state, bit for bit.
+//                  running hash.
 //   oracle         Every decision equals the exact one. At frame 0, circles_overlap and rects_overlap of
 //                  every ordered pair of static shapes. At each printed state p: classify(p, w) for every
 //                  wall, and the overlap events the frame printed for the ball are exactly the circles and
@@ -63,6 +63,10 @@
 //   bounce-side    After a ball hits a wall from side s (the side of its previous printed point; along the
 //                  line, the side it last met that wall from), none of its printed points lies strictly on the
 //                  wall's side −s until its next hit, that hit's point included (BallMemory, kernel.hpp).
+//
+// speed and oracle read the frame's StepTrace: each ball is stepped again from its state and memory before
+// the frame with a trace (the same wall index); that step must end in the run's state bit for bit, else
+// the first of them in the scene's order fails for that ball.
 //
 // The first failure is the earliest frame; within a frame the first check in the scene's order, then the
 // lowest ball.

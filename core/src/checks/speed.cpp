@@ -32,21 +32,21 @@ public:
     Speed(const Scene& scene, KernelId kernel) : scene_(scene), kernel_(kernel), bound_(speed_bound(kernel)) {}
 
     std::optional<CheckFailure> frame(const Frame& f) override {
-        // One reflection of each printed velocity about every wall keeps to one reflection's bound.
-        for (const Event& e : f.events) {
-            if (e.kind != Event::Kind::state) continue;
+        if (f.index == 0) return std::nullopt;
+        // One reflection of the velocity the frame starts with about every wall keeps to one reflection's bound.
+        for (std::size_t b = 0; b < f.before.size(); ++b) {
+            const Vec2 v = f.before[b].vel;
             for (std::size_t i = 0; i < scene_.walls.size(); ++i) {
                 const Wall& w = scene_.walls[i];
                 if (w.p0 == w.p1) continue;  // no normal: never hit, never reflects
-                const Vec2 r = reflect(kernel_, e.vel, w);
-                if (!truth::speed_within(e.vel, r, 1, bound_.rel, bound_.abs))
-                    return failure(Check::speed, f.index, e.ball,
+                const Vec2 r = reflect(kernel_, v, w);
+                if (!truth::speed_within(v, r, 1, bound_.rel, bound_.abs))
+                    return failure(Check::speed, f.index, static_cast<std::uint32_t>(b),
                                    fmt::format("reflect({}, wall {}) = {}: |v'| differs from |v| by more than one "
                                                "reflection allows",
-                                               e.vel, i, r));
+                                               v, i, r));
             }
         }
-        if (f.index == 0) return std::nullopt;
         for (const Event& e : f.events) {
             if (e.kind != Event::Kind::state) continue;
             const Vec2 v0 = f.before[e.ball].vel, v1 = e.vel;
