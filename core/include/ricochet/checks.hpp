@@ -117,11 +117,14 @@ struct CheckedRun {
 struct CheckOptions {
     bool keep_events = true;                                   ///< store events in CheckedRun::events
     std::function<void(std::span<const Event>)> on_frame;      ///< called with each frame's events, in order
+    /// How the run's World and the checks' own worlds step (broad-phase's excepted). Options change no
+    /// event's bits (world.hpp; broad-phase checks it), so no check's answer depends on them.
+    WorldOptions world{};
 };
 
 /// Runs frames 0..frames of scene under kernel, asserting checks on every frame. After the first failure
 /// the remaining checks are skipped but the run goes on (the hash covers the whole run). The run's World
-/// steps with the default WorldOptions, as `ricochet run` does; so do the checks' own worlds except
+/// and the checks' own worlds step with options.world (by default as `ricochet run` does), except
 /// broad-phase's.
 CheckedRun run_checked(const Scene& scene, KernelId kernel, std::int64_t frames, std::span<const Check> checks,
                        const CheckOptions& options = {});

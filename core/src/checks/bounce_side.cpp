@@ -50,7 +50,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_bounce_side(const Scene& scene, KernelId) {
+std::unique_ptr<FrameCheck> make_bounce_side(const Scene& scene, KernelId, const WorldOptions&) {
     return std::make_unique<BounceSide>(scene);
 }
 

@@ -85,7 +85,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_boundary(const Scene& scene, KernelId kernel) {
+std::unique_ptr<FrameCheck> make_boundary(const Scene& scene, KernelId kernel, const WorldOptions&) {
     return std::make_unique<Boundary>(scene, kernel);
 }
 

@@ -35,7 +35,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_broad_phase(const Scene& scene, KernelId kernel) {
+std::unique_ptr<FrameCheck> make_broad_phase(const Scene& scene, KernelId kernel, const WorldOptions&) {
     return std::make_unique<BroadPhaseSame>(scene, kernel);
 }
 

@@ -7,7 +7,7 @@ namespace {
 
 class Deterministic final : public FrameCheck {
 public:
-    Deterministic(const Scene& scene, KernelId kernel) : twin_(scene, kernel) {}
+    Deterministic(const Scene& scene, KernelId kernel, const WorldOptions& world) : twin_(scene, kernel, world) {}
 
     std::optional<CheckFailure> frame(const Frame& f) override {
         other_.clear();
@@ -31,8 +31,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_deterministic(const Scene& scene, KernelId kernel) {
-    return std::make_unique<Deterministic>(scene, kernel);
+std::unique_ptr<FrameCheck> make_deterministic(const Scene& scene, KernelId kernel, const WorldOptions& world) {
+    return std::make_unique<Deterministic>(scene, kernel, world);
 }
 
 }  // namespace ricochet::checks

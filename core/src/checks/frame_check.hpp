@@ -32,21 +32,21 @@ public:
     virtual bool needs_traces() const { return false; }
 };
 
-/// The check c for scene under kernel.
-std::unique_ptr<FrameCheck> make_check(Check c, const Scene& scene, KernelId kernel);
+/// The check c for scene under kernel; its own worlds (if any) step with world.
+std::unique_ptr<FrameCheck> make_check(Check c, const Scene& scene, KernelId kernel, const WorldOptions& world);
 
-std::unique_ptr<FrameCheck> make_no_tunnel(const Scene& scene, KernelId kernel);
-std::unique_ptr<FrameCheck> make_symmetry(const Scene& scene, KernelId kernel);
-std::unique_ptr<FrameCheck> make_boundary(const Scene& scene, KernelId kernel);
-std::unique_ptr<FrameCheck> make_speed(const Scene& scene, KernelId kernel);
-std::unique_ptr<FrameCheck> make_deterministic(const Scene& scene, KernelId kernel);
-std::unique_ptr<FrameCheck> make_oracle(const Scene& scene, KernelId kernel);
-std::unique_ptr<FrameCheck> make_swap(const Scene& scene, KernelId kernel);
-std::unique_ptr<FrameCheck> make_translation(const Scene& scene, KernelId kernel);
-std::unique_ptr<FrameCheck> make_broad_phase(const Scene& scene, KernelId kernel);
-std::unique_ptr<FrameCheck> make_round_trip(const Scene& scene, KernelId kernel);
-std::unique_ptr<FrameCheck> make_no_escape(const Scene& scene, KernelId kernel);
-std::unique_ptr<FrameCheck> make_bounce_side(const Scene& scene, KernelId kernel);
+std::unique_ptr<FrameCheck> make_no_tunnel(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_symmetry(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_boundary(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_speed(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_deterministic(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_oracle(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_swap(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_translation(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_broad_phase(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_round_trip(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_no_escape(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_bounce_side(const Scene& scene, KernelId kernel, const WorldOptions& world);
 
 /// A failure of check c at frame f for ball.
 inline CheckFailure failure(Check c, std::int64_t f, std::uint32_t ball, std::string message) {

@@ -42,6 +42,6 @@ private:
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_no_escape(const Scene& scene, KernelId) { return std::make_unique<NoEscape>(scene); }
+std::unique_ptr<FrameCheck> make_no_escape(const Scene& scene, KernelId, const WorldOptions&) { return std::make_unique<NoEscape>(scene); }
 
 }  // namespace ricochet::checks

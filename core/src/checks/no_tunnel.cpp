@@ -43,6 +43,6 @@ private:
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_no_tunnel(const Scene& scene, KernelId) { return std::make_unique<NoTunnel>(scene); }
+std::unique_ptr<FrameCheck> make_no_tunnel(const Scene& scene, KernelId, const WorldOptions&) { return std::make_unique<NoTunnel>(scene); }
 
 }  // namespace ricochet::checks

@@ -167,7 +167,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_oracle(const Scene& scene, KernelId kernel) {
+std::unique_ptr<FrameCheck> make_oracle(const Scene& scene, KernelId kernel, const WorldOptions&) {
     return std::make_unique<Oracle>(scene, kernel);
 }
 

@@ -35,6 +35,6 @@ private:
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_round_trip(const Scene& scene, KernelId) { return std::make_unique<RoundTrip>(scene); }
+std::unique_ptr<FrameCheck> make_round_trip(const Scene& scene, KernelId, const WorldOptions&) { return std::make_unique<RoundTrip>(scene); }
 
 }  // namespace ricochet::checks

@@ -35,20 +35,20 @@ Scene mirror_x(const Scene& scene) {
 
 namespace checks {
 
-std::unique_ptr<FrameCheck> make_check(Check c, const Scene& scene, KernelId kernel) {
+std::unique_ptr<FrameCheck> make_check(Check c, const Scene& scene, KernelId kernel, const WorldOptions& world) {
     switch (c) {
-        case Check::no_tunnel: return make_no_tunnel(scene, kernel);
-        case Check::symmetry: return make_symmetry(scene, kernel);
-        case Check::boundary: return make_boundary(scene, kernel);
-        case Check::speed: return make_speed(scene, kernel);
-        case Check::deterministic: return make_deterministic(scene, kernel);
-        case Check::oracle: return make_oracle(scene, kernel);
-        case Check::swap: return make_swap(scene, kernel);
-        case Check::translation: return make_translation(scene, kernel);
-        case Check::broad_phase: return make_broad_phase(scene, kernel);
-        case Check::round_trip: return make_round_trip(scene, kernel);
-        case Check::no_escape: return make_no_escape(scene, kernel);
-        case Check::bounce_side: return make_bounce_side(scene, kernel);
+        case Check::no_tunnel: return make_no_tunnel(scene, kernel, world);
+        case Check::symmetry: return make_symmetry(scene, kernel, world);
+        case Check::boundary: return make_boundary(scene, kernel, world);
+        case Check::speed: return make_speed(scene, kernel, world);
+        case Check::deterministic: return make_deterministic(scene, kernel, world);
+        case Check::oracle: return make_oracle(scene, kernel, world);
+        case Check::swap: return make_swap(scene, kernel, world);
+        case Check::translation: return make_translation(scene, kernel, world);
+        case Check::broad_phase: return make_broad_phase(scene, kernel, world);
+        case Check::round_trip: return make_round_trip(scene, kernel, world);
+        case Check::no_escape: return make_no_escape(scene, kernel, world);
+        case Check::bounce_side: return make_bounce_side(scene, kernel, world);
     }
     return nullptr;
 }
@@ -75,9 +75,9 @@ namespace {
 /// The scene's checks, run on every frame, with the traces they read.
 class Checker {
 public:
-    Checker(const Scene& scene, KernelId kernel, std::span<const Check> checks) : scene_(scene), kernel_(kernel) {
+    Checker(const Scene& scene, KernelId kernel, std::span<const Check> checks, const WorldOptions& world) : scene_(scene), kernel_(kernel) {
         for (Check c : checks) {
-            checks_.push_back(make_check(c, scene, kernel));
+            checks_.push_back(make_check(c, scene, kernel, world));
             if (checks_.back()->needs_traces() && !tracer_) tracer_ = c;
         }
         traces_.resize(scene.balls.size());
@@ -133,9 +133,9 @@ private:
 CheckedRun run_checked(const Scene& scene, KernelId kernel, std::int64_t frames, std::span<const Check> checks,
                        const CheckOptions& options) {
     CheckedRun run;
-    World world(scene, kernel);
+    World world(scene, kernel, options.world);
     std::optional<checks::Checker> checker;
-    if (!checks.empty()) checker.emplace(scene, kernel, checks);
+    if (!checks.empty()) checker.emplace(scene, kernel, checks, options.world);
     RunHasher hasher;
     std::vector<Event> events;
     std::vector<Ball> before;

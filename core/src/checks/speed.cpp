@@ -72,7 +72,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_speed(const Scene& scene, KernelId kernel) {
+std::unique_ptr<FrameCheck> make_speed(const Scene& scene, KernelId kernel, const WorldOptions&) {
     return std::make_unique<Speed>(scene, kernel);
 }
 

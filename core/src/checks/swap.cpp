@@ -57,6 +57,6 @@ private:
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_swap(const Scene& scene, KernelId kernel) { return std::make_unique<Swap>(scene, kernel); }
+std::unique_ptr<FrameCheck> make_swap(const Scene& scene, KernelId kernel, const WorldOptions&) { return std::make_unique<Swap>(scene, kernel); }
 
 }  // namespace ricochet::checks

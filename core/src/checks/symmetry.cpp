@@ -41,13 +41,13 @@ Rect map(const Map& m, const Rect& r) {
 
 class Symmetry final : public FrameCheck {
 public:
-    Symmetry(const Scene& scene, KernelId kernel)
+    Symmetry(const Scene& scene, KernelId kernel, const WorldOptions& world)
         : scene_(scene),
           kernel_(kernel),
           mirror_scene_(mirror_x(scene)),
           turned_scene_(turned(scene)),
-          mirror_(mirror_scene_, kernel),
-          turn_(turned_scene_, kernel) {}
+          mirror_(mirror_scene_, kernel, world),
+          turn_(turned_scene_, kernel, world) {}
 
     std::optional<CheckFailure> frame(const Frame& f) override {
         for (int which = 0; which < 2; ++which) {
@@ -143,8 +143,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_symmetry(const Scene& scene, KernelId kernel) {
-    return std::make_unique<Symmetry>(scene, kernel);
+std::unique_ptr<FrameCheck> make_symmetry(const Scene& scene, KernelId kernel, const WorldOptions& world) {
+    return std::make_unique<Symmetry>(scene, kernel, world);
 }
 
 }  // namespace ricochet::checks

@@ -55,13 +55,13 @@ std::vector<std::string> decisions(std::span<const Event> events, bool all_hits,
 
 class Translation final : public FrameCheck {
 public:
-    Translation(const Scene& scene, KernelId kernel) : scene_(scene), kernel_(kernel) {
+    Translation(const Scene& scene, KernelId kernel, const WorldOptions& world) : scene_(scene), kernel_(kernel) {
         for (Vec2 t : k_offsets) {
             if (!applies(scene, t)) continue;
             offsets_.push_back(t);
             moved_.push_back(moved(scene, t));
         }
-        for (const Scene& m : moved_) worlds_.emplace_back(m, kernel);
+        for (const Scene& m : moved_) worlds_.emplace_back(m, kernel, world);
     }
 
     std::optional<CheckFailure> frame(const Frame& f) override {
@@ -126,8 +126,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_translation(const Scene& scene, KernelId kernel) {
-    return std::make_unique<Translation>(scene, kernel);
+std::unique_ptr<FrameCheck> make_translation(const Scene& scene, KernelId kernel, const WorldOptions& world) {
+    return std::make_unique<Translation>(scene, kernel, world);
 }
 
 }  // namespace ricochet::checks
