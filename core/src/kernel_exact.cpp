@@ -144,6 +144,37 @@ bool circles_overlap(const Circle& a, const Circle& b) {
     return num::circle_sign(a.c.x, b.c.x, a.c.y, b.c.y, a.r, b.r) <= 0;
 }
 
+namespace {
+
+/// Scratch integers for sweep() and reflect(): one leg needs sixteen, none allocated in the steady state.
+struct LegScratch {
+    mpz_t z[16];
+    LegScratch() {
+        for (mpz_t& x : z) mpz_init(x);
+    }
+    ~LegScratch() {
+        for (mpz_t& x : z) mpz_clear(x);
+    }
+    LegScratch(const LegScratch&) = delete;
+    LegScratch& operator=(const LegScratch&) = delete;
+};
+LegScratch& leg_scratch() {
+    thread_local LegScratch s;
+    return s;
+}
+void set_scaled(mpz_t out, double x, int k) {
+    const num::Dyad d = num::split(x);
+    mpz_set_si(out, static_cast<long>(d.m));
+    if (d.m != 0) mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(d.e - k));
+}
+/// out = a·b + c·d
+void dot2(mpz_t out, mpz_srcptr a, mpz_srcptr b, mpz_srcptr c, mpz_srcptr d) {
+    mpz_mul(out, a, b);
+    mpz_addmul(out, c, d);
+}
+
+}  // namespace
+
 Sweep sweep(Vec2 bs, Vec2 v, const Wall& w) {
     const Vec2 be = bs + v;
     const Miss miss = leg_miss(bs, be, w);
@@ -151,20 +182,66 @@ Sweep sweep(Vec2 bs, Vec2 v, const Wall& w) {
     num::Scale sc;
     for (double x : {bs.x, bs.y, be.x, be.y, w.p0.x, w.p0.y, w.p1.x, w.p1.y}) sc.add(x);
     const int k = sc.exponent();
-    const ZWall zw = scaled(w, k);
-    const ZFrac a{scaled(bs, k), 1};
-    const ZV dir = scaled(be, k) - a.p;
-    // t_i = n·(P0 − Bs)/(n·(Be − Bs)), B_i = Bs + t_i·(Be − Bs) = (Bs·nd + nt·(Be − Bs))/nd
-    const Crossing c = crossing(a, dir, zw);
-    return {Miss::none, num::round_quotient(c.nt.v, c.nd.v, 0), round_vec(a.p * c.nd + c.nt * dir, c.nd, k)};
+    mpz_t* z = leg_scratch().z;
+    mpz_ptr qx = z[0], qy = z[1], dx = z[2], dy = z[3], p0x = z[4], p0y = z[5], nx = z[6], ny = z[7];
+    mpz_ptr ax = z[8], ay = z[9], nt = z[10], nd = z[11], bx = z[12], by = z[13];
+    set_scaled(qx, bs.x, k);
+    set_scaled(qy, bs.y, k);
+    set_scaled(dx, be.x, k);
+    set_scaled(dy, be.y, k);
+    mpz_sub(dx, dx, qx);  // dir = Be − Bs
+    mpz_sub(dy, dy, qy);
+    set_scaled(p0x, w.p0.x, k);
+    set_scaled(p0y, w.p0.y, k);
+    set_scaled(nx, w.p1.y, k);  // n = (e_y, −e_x) = (P1y − P0y, P0x − P1x)
+    mpz_sub(nx, nx, p0y);
+    set_scaled(ny, w.p1.x, k);
+    mpz_sub(ny, p0x, ny);
+    // t_i = n·(P0 − Bs)/(n·(Be − Bs)) = nt/nd, nd > 0 after fixing signs
+    mpz_sub(ax, p0x, qx);
+    mpz_sub(ay, p0y, qy);
+    dot2(nt, nx, ax, ny, ay);
+    dot2(nd, nx, dx, ny, dy);
+    if (mpz_sgn(nd) < 0) {
+        mpz_neg(nt, nt);
+        mpz_neg(nd, nd);
+    }
+    // B_i = Bs + t_i·(Be − Bs) = (Bs·nd + nt·(Be − Bs))/nd
+    dot2(bx, qx, nd, nt, dx);
+    dot2(by, qy, nd, nt, dy);
+    return {Miss::none, num::round_quotient(nt, nd, 0),
+            {num::round_quotient(bx, nd, k), num::round_quotient(by, nd, k)}};
 }
 
 Vec2 reflect(Vec2 v, const Wall& w) {
     num::Scale sc;
     for (double x : {v.x, v.y, w.p0.x, w.p0.y, w.p1.x, w.p1.y}) sc.add(x);
     const int k = sc.exponent();
-    const ZFrac r = reflect(ZFrac{scaled(v, k), 1}, scaled(w, k));
-    return round_vec(r.p, r.d, k);
+    mpz_t* z = leg_scratch().z;
+    mpz_ptr vx = z[0], vy = z[1], nx = z[2], ny = z[3], t = z[4], nn = z[5], vn = z[6], rx = z[7], ry = z[8];
+    set_scaled(vx, v.x, k);
+    set_scaled(vy, v.y, k);
+    set_scaled(nx, w.p1.y, k);  // n = (P1y − P0y, P0x − P1x)
+    set_scaled(t, w.p0.y, k);
+    mpz_sub(nx, nx, t);
+    set_scaled(ny, w.p0.x, k);
+    set_scaled(t, w.p1.x, k);
+    mpz_sub(ny, ny, t);
+    dot2(nn, nx, nx, ny, ny);
+    // Degenerate: a zero-length wall has no normal; v is unchanged (printed as the exact kernel prints).
+    if (mpz_sgn(nn) == 0) {
+        mpz_set_ui(nn, 1);
+        mpz_set_ui(nx, 0);
+        mpz_set_ui(ny, 0);
+    }
+    // v' = v − 2(v·n)/(n·n)·n = (v·(n·n) − 2(v·n)·n)/(n·n)
+    dot2(vn, vx, nx, vy, ny);
+    mpz_mul_2exp(vn, vn, 1);
+    mpz_mul(rx, vx, nn);
+    mpz_submul(rx, vn, nx);
+    mpz_mul(ry, vy, nn);
+    mpz_submul(ry, vn, ny);
+    return {num::round_quotient(rx, nn, k), num::round_quotient(ry, nn, k)};
 }
 
 FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
