@@ -129,6 +129,18 @@ bool on_segment(const ZFrac& p, const ZWall& w) {
     return within(p.p.x, w.p0.x, w.p1.x) && within(p.p.y, w.p0.y, w.p1.y);
 }
 
+/// Divides p/d (and extra, over the same d) by the gcd of all its integers. Values are unchanged; done
+/// once per bounce, it keeps sizes from growing with the number of bounces as the products above do.
+void reduce(ZFrac& f, Z* extra = nullptr) {
+    mpz_class g;
+    mpz_gcd(g.get_mpz_t(), f.p.x.v.get_mpz_t(), f.p.y.v.get_mpz_t());
+    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), f.d.v.get_mpz_t());
+    if (extra != nullptr) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), extra->v.get_mpz_t());
+    if (g == 1) return;
+    for (Z* z : {&f.p.x, &f.p.y, &f.d, extra})
+        if (z != nullptr) mpz_divexact(z->v.get_mpz_t(), z->v.get_mpz_t(), g.get_mpz_t());
+}
+
 struct ZContact {
     std::uint32_t wall;
     int side;
@@ -302,6 +314,7 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
         });
         if (blocked != contacts.end()) {
             v = reflect(v, zw(blocked->wall));
+            reduce(v);
             continue;
         }
         std::optional<Crossing> first;
@@ -348,8 +361,10 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
         for (const ZContact& c : arrived)
             if (sgn(dot(w.p, zw(c.wall).n)) == -c.side) w = {-v.p, v.d};
         v = std::move(w);
+        reduce(v);
         q = x;
         now = std::move(x_now);
+        reduce(q, &now);
         contacts = std::move(arrived);
     }
 
