@@ -8,8 +8,9 @@
 // polynomial in the inputs. On doubles a floating-point filter decides almost every sign, exact integers
 // the rest (filter.hpp). In a frame all inputs are scaled to integers at one common scale 2^k
 // (scaled.hpp); the normal n = (e_y, −e_x) is never normalized, so each hit point, t_i and v' is a
-// quotient of integers, carried as numerators over one common positive denominator and never reduced
-// (no gcd): fractions are compared by cross-multiplication. The frame's leg i is the line
+// quotient of integers, carried as numerators over one common positive denominator, reduced only
+// once per bounce (one gcd, not one per operation as mpq does): fractions are compared by
+// cross-multiplication. The frame's leg i is the line
 // p(t) = A + t·dir through its start (frame time now) and its end Be (t = 1), which keeps denominators
 // growing by a sum of sizes per bounce, not a product.
 #include <algorithm>
