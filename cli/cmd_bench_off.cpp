@@ -5,7 +5,7 @@
 
 namespace ricochet::cli {
 
-void register_bench(CLI::App& app) {
+void register_bench_not_built(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("bench", "benchmarks (not in this build: configure with -DRICOCHET_BENCH=ON)");
     sub->allow_extras();
     sub->callback([] {

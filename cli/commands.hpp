@@ -1,4 +1,5 @@
-// The `ricochet` command's subcommands: each file registers one on the app.
+// The `ricochet` command's own subcommands: each file registers one on the app (`bench` and `fuzz` are
+// registered by bench/ and fuzz/, ricochet_bench/command.hpp and ricochet_fuzz/command.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -26,10 +27,8 @@ void register_replay(CLI::App& app);
 void register_render(CLI::App& app);
 /// `ricochet check`.
 void register_check(CLI::App& app);
-/// `ricochet bench` (bench/ owns it).
-void register_bench(CLI::App& app);
-/// `ricochet fuzz` (fuzz/ owns it).
-void register_fuzz(CLI::App& app);
+/// `ricochet bench` in a build without bench/ (RICOCHET_BENCH=OFF): says how to get it, exits 1.
+void register_bench_not_built(CLI::App& app);
 
 /// Reads a log, or prints its diagnostic on stderr and throws Exit{2}.
 Scene load_scene_or_exit(const std::filesystem::path& path);

@@ -25,7 +25,7 @@ Scene load_scene_or_exit(const std::filesystem::path& path) {
 KernelId kernel_or_exit(const std::string& name) {
     const auto k = parse_kernel(name);
     if (!k) {
-        fmt::print(stderr, "ricochet: error: unknown kernel '{}' (lecture-float, lecture-double, robust, exact)\n", name);
+        fmt::print(stderr, "ricochet: error: unknown kernel '{}' ({})\n", name, kernel_names());
         throw Exit{2};
     }
     return *k;

@@ -4,6 +4,10 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "ricochet_fuzz/command.hpp"
+#ifdef RICOCHET_HAVE_BENCH
+#include "ricochet_bench/command.hpp"
+#endif
 
 int main(int argc, char** argv) {
     CLI::App app{"ricochet: the 2D collision core's scene logs, replay and checks"};
@@ -13,10 +17,18 @@ int main(int argc, char** argv) {
     ricochet::cli::register_replay(app);
     ricochet::cli::register_render(app);
     ricochet::cli::register_check(app);
-    ricochet::cli::register_bench(app);
-    ricochet::cli::register_fuzz(app);
+#ifdef RICOCHET_HAVE_BENCH
+    ricochet::bench::register_bench(app);
+#else
+    ricochet::cli::register_bench_not_built(app);
+#endif
+    ricochet::fuzz::register_fuzz(app);
     try {
         app.parse(argc, argv);
+    } catch (const CLI::RuntimeError& e) {
+        // bench/ and fuzz/ end their commands with CLI11's own exit-status exception.
+        std::fflush(stdout);
+        return e.get_exit_code();
     } catch (const CLI::ParseError& e) {
         // --help and --version are not errors; every other usage error is bad input: exit 2.
         const int code = app.exit(e);

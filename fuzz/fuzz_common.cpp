@@ -20,8 +20,8 @@ KernelId kernel_under_test() {
         if (name == nullptr || *name == '\0') return KernelId::robust;
         const auto parsed = parse_kernel(name);
         if (!parsed) {
-            fmt::print(stderr, "ricochet fuzz: error: {}={} is not a kernel (lecture-float, lecture-double, robust, exact)\n",
-                       k_kernel_env, name);
+            fmt::print(stderr, "ricochet fuzz: error: {}={} is not a kernel ({})\n", k_kernel_env, name,
+                       kernel_names());
             std::exit(2);
         }
         return *parsed;

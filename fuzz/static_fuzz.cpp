@@ -104,7 +104,7 @@ void check_boundary(KernelId k, const StaticCase& c) {
     expect_same(c, Check::boundary, "circle-as-point", point_in_circle(k, c.a.c, Circle{c.p, c.a.r}),
                 point_in_circle(k, c.p, c.a), fmt::format("{} in {} vs its mirror", show(c.p), show(c.a)));
     // A ball starting on the wall's line cannot hit it: it moves along it or leaves it.
-    if (classify(k, c.p, c.wall) == Side::On) {
+    if (classify(k, c.p, c.wall) == Side::on) {
         const Sweep s = sweep(k, c.p, c.v, c.wall);
         if (s.hit())
             failed(c, Check::boundary, "on-line-sweep",

@@ -151,8 +151,7 @@ std::vector<KernelId> kernels_under_test() {
         } else if (const auto k = parse_kernel(name)) {
             out.push_back(*k);
         } else {
-            fmt::print(stderr, "RICOCHET_KERNEL: error: no kernel called '{}' (lecture-float, lecture-double, "
-                               "robust, exact, all)\n", name);
+            fmt::print(stderr, "RICOCHET_KERNEL: error: no kernel called '{}' ({}, all)\n", name, kernel_names());
             std::exit(2);
         }
         rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);

@@ -658,8 +658,8 @@ unset multiplot
 }
 
 int run_frames(const Options& opt, long frames) {
-    // One ball in the closed box [−1, 1]², robust kernel, frames × step_ball: the figure issue 3 asks
-    // for. Two speeds: a bounce every ~90 frames, and one every ~3 frames (bounces cost more).
+    // One ball in the closed box [−1, 1]², robust kernel, frames × step_ball: the ball-frames per second
+    // figure. Two speeds: a bounce every ~90 frames, and one every ~3 frames (bounces cost more).
     const std::vector<Wall> walls = make_box({0, 0}, 0.0);
     const int reps = opt.smoke ? 1 : 5;
     fmt::print("frames: one ball, closed box of 4 walls, robust kernel via ricochet::step_ball, thread CPU time\n");

@@ -1,5 +1,5 @@
 // Batched robust sweep decisions (batch.hpp). Eight lanes at a time (AVX-512F where the CPU has it):
-// each lane evaluates the four orientation determinants of the robust kernel's leg test with exactly
+// each lane evaluates the four orientation determinants of the robust kernel's leg test (robust_leg.hpp) with exactly
 // the operations of exact::orient's filter (so the certified signs are the same bits), and any lane
 // whose needed signs are not certified is decided again, alone, by the exact predicates. Without
 // AVX-512F every pair goes through the exact predicates one at a time (their own filter first), which
@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "ricochet/predicates.hpp"
+#include "robust_leg.hpp"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
@@ -19,23 +20,10 @@
 namespace ricochet {
 namespace {
 
-/// The robust kernel's leg test (kernel_robust.cpp, test_leg) on the exact predicates: the fallback.
-/// Kept out of line: it is rare, and inlining it into the SIMD loop only bloats it.
-[[gnu::noinline]] Miss exact_leg(Vec2 q, Vec2 v, const Wall& w) {
-    const Vec2 b = q + v;
-    // Degenerate: a zero-length wall has no normal, a zero-length leg no motion.
-    if (w.p0 == w.p1 || q == b) return Miss::degenerate;
-    const int sq = exact::side(q, w);
-    const int sb = exact::side(b, w);
-    if (sq < 0 && sb < 0) return Miss::both_inside;
-    if (sq > 0 && sb > 0) return Miss::both_outside;
-    if (sq == 0 && sb == 0) return Miss::parallel;
-    if (sq == 0) return Miss::leaving;
-    // X before P0 iff orient(q, b, P0) = −sq; past P1 iff orient(q, b, P1) = sq.
-    if (exact::orient(q, b, w.p0) == -sq) return Miss::before_p0;
-    if (exact::orient(q, b, w.p1) == sq) return Miss::past_p1;
-    return Miss::none;
-}
+/// The robust kernel's own leg decision (robust_leg.hpp) for the leg Bs → Bs + v: the fallback, and the
+/// definition every lane must agree with. Kept out of line: it is rare, and inlining it into the SIMD loop
+/// only bloats it.
+[[gnu::noinline]] Miss exact_leg(Vec2 q, Vec2 v, const Wall& w) { return robust::test_leg(q, q + v, w).miss; }
 
 #ifdef RICOCHET_BATCH_AVX512
 // The filter constants of predicates.cpp, restated (they must stay equal to those):

@@ -1,27 +1,68 @@
-// Kernel names and the run-time dispatch to the four implementations.
+// The kernel registry, the one place a kernel's name or id maps to its code, and the free functions
+// that dispatch through it.
 #include "ricochet/kernel.hpp"
 
+#include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "kernel_impl.hpp"
 #include "kernel_lecture.hpp"
 
 namespace ricochet {
+namespace {
 
-std::string_view kernel_name(KernelId k) {
-    switch (k) {
-        case KernelId::lecture_float: return "lecture-float";
-        case KernelId::lecture_double: return "lecture-double";
-        case KernelId::robust: return "robust";
-        case KernelId::exact: return "exact";
-    }
-    return "?";
+/// The registry, Box2D's s_registers for kernels: entry i is KernelId{i}. Constant-initialized, so a
+/// static initializer elsewhere may already parse a kernel name.
+constinit std::array<KernelOps, k_max_kernels> s_kernels = {
+    make_kernel_ops<LectureKernel<float>>("lecture-float"),
+    make_kernel_ops<LectureKernel<double>>("lecture-double"),
+    make_kernel_ops<RobustKernel>("robust"),
+    make_kernel_ops<ExactKernel>("exact"),
+};
+/// The ids of the registered kernels, 0 … s_count − 1.
+constinit std::array<KernelId, k_max_kernels> s_ids = {KernelId{0}, KernelId{1}, KernelId{2}, KernelId{3}};
+constinit std::size_t s_count = k_all_kernels.size();
+
+// k_all_kernels names the built-in entries above, in order.
+static_assert(k_all_kernels.size() == 4 && k_all_kernels[0] == KernelId{0} && k_all_kernels[1] == KernelId{1} &&
+              k_all_kernels[2] == KernelId{2} && k_all_kernels[3] == KernelId{3});
+
+bool registered(KernelId k) { return static_cast<std::size_t>(k) < s_count; }
+
+}  // namespace
+
+std::optional<KernelId> register_kernel(const KernelOps& ops) {
+    if (s_count == k_max_kernels || parse_kernel(ops.name)) return std::nullopt;
+    const auto id = static_cast<KernelId>(s_count);
+    s_kernels[s_count] = ops;
+    s_ids[s_count] = id;
+    ++s_count;
+    return id;
 }
 
+const KernelOps& kernel_ops(KernelId k) {
+    assert(registered(k));
+    return s_kernels[static_cast<std::size_t>(k)];
+}
+
+std::span<const KernelId> registered_kernels() { return {s_ids.data(), s_count}; }
+
+std::string_view kernel_name(KernelId k) { return registered(k) ? kernel_ops(k).name : "?"; }
+
 std::optional<KernelId> parse_kernel(std::string_view name) {
-    for (KernelId k : k_all_kernels)
-        if (kernel_name(k) == name) return k;
+    for (KernelId k : registered_kernels())
+        if (kernel_ops(k).name == name) return k;
     return std::nullopt;
+}
+
+std::string kernel_names() {
+    std::string out;
+    for (KernelId k : registered_kernels()) {
+        if (!out.empty()) out += ", ";
+        out += kernel_ops(k).name;
+    }
+    return out;
 }
 
 bool in_range(double x) { return std::isfinite(x) && std::fabs(x) <= k_coordinate_limit; }
@@ -40,70 +81,13 @@ std::string_view miss_name(Miss m) {
     return "?";
 }
 
-Side classify(KernelId k, Vec2 p, const Wall& w) {
-    switch (k) {
-        case KernelId::lecture_float: return lecture::classify<float>(p, w);
-        case KernelId::lecture_double: return lecture::classify<double>(p, w);
-        case KernelId::robust: return robust::classify(p, w);
-        case KernelId::exact: return exact_kernel::classify(p, w);
-    }
-    return Side::On;
-}
-
-bool point_in_circle(KernelId k, Vec2 p, const Circle& c) {
-    switch (k) {
-        case KernelId::lecture_float: return lecture::point_in_circle<float>(p, c);
-        case KernelId::lecture_double: return lecture::point_in_circle<double>(p, c);
-        case KernelId::robust: return robust::point_in_circle(p, c);
-        case KernelId::exact: return exact_kernel::point_in_circle(p, c);
-    }
-    return false;
-}
-
-bool circles_overlap(KernelId k, const Circle& a, const Circle& b) {
-    switch (k) {
-        case KernelId::lecture_float: return lecture::circles_overlap<float>(a, b);
-        case KernelId::lecture_double: return lecture::circles_overlap<double>(a, b);
-        case KernelId::robust: return robust::circles_overlap(a, b);
-        case KernelId::exact: return exact_kernel::circles_overlap(a, b);
-    }
-    return false;
-}
-
-bool point_in_rect(KernelId k, Vec2 p, const Rect& r) {
-    // Comparisons of doubles are exact: robust and exact share lecture-double's test.
-    return k == KernelId::lecture_float ? lecture::point_in_rect<float>(p, r) : lecture::point_in_rect<double>(p, r);
-}
-
-bool rects_overlap(KernelId k, const Rect& a, const Rect& b) {
-    return k == KernelId::lecture_float ? lecture::rects_overlap<float>(a, b) : lecture::rects_overlap<double>(a, b);
-}
-
-Sweep sweep(KernelId k, Vec2 bs, Vec2 v, const Wall& w) {
-    switch (k) {
-        case KernelId::lecture_float: return lecture::sweep<float>(bs, v, w);
-        case KernelId::lecture_double: return lecture::sweep<double>(bs, v, w);
-        case KernelId::robust: return robust::sweep(bs, v, w);
-        case KernelId::exact: return exact_kernel::sweep(bs, v, w);
-    }
-    return {};
-}
-
-Vec2 reflect(KernelId k, Vec2 v, const Wall& w) {
-    switch (k) {
-        case KernelId::lecture_float: {
-            const auto r = lecture::reflect<float>(lecture::to<float>(v), w);
-            return {static_cast<double>(r.x), static_cast<double>(r.y)};
-        }
-        case KernelId::lecture_double: {
-            const auto r = lecture::reflect<double>(lecture::to<double>(v), w);
-            return {r.x, r.y};
-        }
-        case KernelId::robust: return robust::reflect(v, w);
-        case KernelId::exact: return exact_kernel::reflect(v, w);
-    }
-    return v;
-}
+Side classify(KernelId k, Vec2 p, const Wall& w) { return kernel_ops(k).classify(p, w); }
+bool point_in_circle(KernelId k, Vec2 p, const Circle& c) { return kernel_ops(k).point_in_circle(p, c); }
+bool circles_overlap(KernelId k, const Circle& a, const Circle& b) { return kernel_ops(k).circles_overlap(a, b); }
+bool point_in_rect(KernelId k, Vec2 p, const Rect& r) { return kernel_ops(k).point_in_rect(p, r); }
+bool rects_overlap(KernelId k, const Rect& a, const Rect& b) { return kernel_ops(k).rects_overlap(a, b); }
+Sweep sweep(KernelId k, Vec2 bs, Vec2 v, const Wall& w) { return kernel_ops(k).sweep(bs, v, w); }
+Vec2 reflect(KernelId k, Vec2 v, const Wall& w) { return kernel_ops(k).reflect(v, w); }
 
 FrameStatus step_ball(KernelId k, Ball& ball, BallMemory& memory, std::span<const Wall> walls,
                       std::vector<HitEvent>& hits, StepScratch& scratch, const WallIndex* index) {
@@ -115,13 +99,7 @@ FrameStatus step_ball(KernelId k, Ball& ball, BallMemory& memory, std::span<cons
     Ball next = ball;
     BallMemory next_memory = memory;
     const std::size_t first_hit = hits.size();
-    FrameStatus status = FrameStatus::ok;
-    switch (k) {
-        case KernelId::lecture_float: status = lecture::step_ball<float>(next, walls, hits, scratch, index); break;
-        case KernelId::lecture_double: status = lecture::step_ball<double>(next, walls, hits, scratch, index); break;
-        case KernelId::robust: status = robust::step_ball(next, next_memory, walls, hits, scratch, index); break;
-        case KernelId::exact: status = exact_kernel::step_ball(next, next_memory, walls, hits, scratch); break;
-    }
+    const FrameStatus status = kernel_ops(k).step_ball(next, next_memory, walls, hits, scratch, index);
     if (!ok(next)) {
         hits.resize(first_hit);
         return FrameStatus::out_of_range;

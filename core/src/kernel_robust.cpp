@@ -1,42 +1,22 @@
-// The robust kernel: exact decisions (predicates.hpp), rounded constructions that are never
-// accepted across a wall (path.hpp).
-#include "kernel_impl.hpp"
-
+// The robust kernel: exact decisions (predicates.hpp, the leg test in robust_leg.hpp), rounded
+// constructions that are never accepted across a wall (path.hpp).
 #include <algorithm>
 #include <cmath>
 
+#include "kernel_impl.hpp"
 #include "path.hpp"
 #include "ricochet/predicates.hpp"
 #include "ricochet/step_trace.hpp"
+#include "robust_leg.hpp"
 
-namespace ricochet::robust {
+namespace ricochet {
 namespace {
 
-/// A decision for the leg q → b against w, with the exact sides of q and b.
-struct Leg {
-    Miss miss;
-    int sq = 0;
-    int sb = 0;
-};
+using robust::Leg;
+using robust::test_leg;
 
-Leg test_leg(Vec2 q, Vec2 b, const Wall& w) {
-    // Degenerate: a zero-length wall has no normal, a zero-length leg no motion.
-    if (w.p0 == w.p1 || q == b) return {Miss::degenerate};
-    const int sq = exact::side(q, w);
-    const int sb = exact::side(b, w);
-    if (sq < 0 && sb < 0) return {Miss::both_inside, sq, sb};
-    if (sq > 0 && sb > 0) return {Miss::both_outside, sq, sb};
-    // Both on the line: the motion is along it, n·v = 0.
-    if (sq == 0 && sb == 0) return {Miss::parallel, sq, sb};
-    if (sq == 0) return {Miss::leaving, sq, sb};
-    // The leg meets the line at X = P0 + u·e with u = −o0/(d × e), 1 − u = o1/(d × e), where
-    // o_k = orient(q, b, P_k) and sign(d × e) = −sign(sq). X is before P0 if u < 0, past P1 if u > 1.
-    if (exact::orient(q, b, w.p0) == -sq) return {Miss::before_p0, sq, sb};
-    if (exact::orient(q, b, w.p1) == sq) return {Miss::past_p1, sq, sb};
-    return {Miss::none, sq, sb};
-}
-
-/// The leg fraction s at which q → b meets w's line: BC(q)/(BC(q) − BC(b)), rounded, in [0, 1].
+/// The leg fraction s at which q → b meets w's line: BC(q)/(BC(q) − BC(b)), rounded, in [0, 1]. It is
+/// the lecture's t_i for the leg q → b, n̂·(q + s·(b − q)) = n̂·P0, solved on BC values instead of n̂·v.
 double crossing(Vec2 q, Vec2 b, const Wall& w, int sb) {
     if (sb == 0) return 1.0;
     const Vec2 e = edge(w);
@@ -49,11 +29,11 @@ double crossing(Vec2 q, Vec2 b, const Wall& w, int sb) {
 
 }  // namespace
 
-Side classify(Vec2 p, const Wall& w) { return side_from_sign(exact::side(p, w)); }
-bool point_in_circle(Vec2 p, const Circle& c) { return exact::point_circle(p, c) <= 0; }
-bool circles_overlap(const Circle& a, const Circle& b) { return exact::circle_circle(a, b) <= 0; }
+Side RobustKernel::classify(Vec2 p, const Wall& w) { return side_from_sign(exact::side(p, w)); }
+bool RobustKernel::point_in_circle(Vec2 p, const Circle& c) { return exact::point_circle(p, c) <= 0; }
+bool RobustKernel::circles_overlap(const Circle& a, const Circle& b) { return exact::circle_circle(a, b) <= 0; }
 
-Vec2 reflect(Vec2 v, const Wall& w) {
+Vec2 RobustKernel::reflect(Vec2 v, const Wall& w) {
     const Vec2 n = normal(w);
     const double big = std::max(std::fabs(n.x), std::fabs(n.y));
     // Degenerate: a zero-length wall has no normal.
@@ -69,7 +49,7 @@ Vec2 reflect(Vec2 v, const Wall& w) {
     return v - (2.0 * dot(v, u)) * u;
 }
 
-Sweep sweep(Vec2 bs, Vec2 v, const Wall& w) {
+Sweep RobustKernel::sweep(Vec2 bs, Vec2 v, const Wall& w) {
     const Vec2 be = bs + v;
     const Leg leg = test_leg(bs, be, w);
     if (leg.miss != Miss::none) return {leg.miss, 0.0, {}};
@@ -77,8 +57,11 @@ Sweep sweep(Vec2 bs, Vec2 v, const Wall& w) {
     return {Miss::none, s, leg.sb == 0 ? be : bs + s * (be - bs)};
 }
 
-FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
-                      StepScratch& scratch, const WallIndex* index) {
+FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> walls,
+                                    std::vector<HitEvent>& hits, StepScratch& scratch, const WallIndex* index) {
+    // Degenerate: a ball at rest does no sweep. The loop below would leave at once with ball and memory
+    // unchanged, bit for bit; returning here says so, and no caller needs a rule of its own for rest.
+    if (ball.vel == Vec2{}) return FrameStatus::ok;
     Vec2 q = ball.pos, v = ball.vel;
     double rest = 1.0, now = 0.0;
     FrameStatus status = FrameStatus::ok;
@@ -86,7 +69,7 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
     std::uint32_t bounced_wall = memory.bounced_wall;
     detail::Keep bounced{memory.bounced_from != 0 ? &walls[memory.bounced_wall] : nullptr, memory.bounced_from};
     for (int bounce = 0;; ++bounce) {
-        // A ball at rest does no sweep; a motion below an ulp of the position does not move it.
+        // A ball brought to rest does no sweep; a motion below an ulp of the position does not move it.
         if (v == Vec2{}) break;
         const Vec2 b = q + rest * v;
         if (b == q) break;
@@ -136,7 +119,8 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
             // bounce the ball stays on the side it met that wall from: an end point rounded just across its
             // line (beyond an end) is walked back.
             const Vec2 end = bounced.wall != nullptr && exact::side(b, *bounced.wall) == -bounced.from
-                                 ? detail::make_safe(q, b, memory, walls, index, scratch, bounced)
+                                 ? detail::make_safe({.q = q, .r = b, .memory = memory, .walls = walls, .index = index,
+                                                      .scratch = scratch, .keep = {bounced}})
                                  : b;
             // A contact stays while the ball slides along its wall's line on the closed segment.
             BallMemory kept;
@@ -154,8 +138,9 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
         }
         if (traced != nullptr) traced->hit = best;
         const double s = crossing(q, b, walls[best], best_sb);
-        const Vec2 x = detail::make_safe(q, best_sb == 0 ? b : q + s * (b - q), memory, walls, index, scratch,
-                                         {&walls[best], best_sq}, bounced);
+        const Vec2 x = detail::make_safe({.q = q, .r = best_sb == 0 ? b : q + s * (b - q), .memory = memory,
+                                          .walls = walls, .index = index, .scratch = scratch,
+                                          .keep = {detail::Keep{&walls[best], best_sq}, bounced}});
         bounced = {&walls[best], best_sq};
         bounced_wall = best;
         BallMemory arrived;
@@ -190,4 +175,4 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
     return status;
 }
 
-}  // namespace ricochet::robust
+}  // namespace ricochet

@@ -1,12 +1,23 @@
 #include "path.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
 #include "ricochet/predicates.hpp"
 
 namespace ricochet::detail {
+namespace {
+
+/// The points make_safe walks back to, as fractions of the piece q → r, nearest first. A rounding error of
+/// a few ulps is undone by the first steps (2^-50 of the piece is a few ulps of its larger coordinate);
+/// the coarser ones cover a point rounded across several lines at once; the last, 0, is q itself, where
+/// the ball already is.
+constexpr std::array<double, 8> k_walk_back = {1 - 0x1p-50, 1 - 0x1p-46, 1 - 0x1p-40, 1 - 0x1p-30,
+                                               1 - 0x1p-20, 1 - 0x1p-10, 0.5,         0.0};
+
+}  // namespace
 
 std::span<const std::uint32_t> candidates(std::span<const Wall> walls, const WallIndex* index, Vec2 a, Vec2 b,
                                           std::vector<std::uint32_t>& out, std::vector<std::uint32_t>& all) {
@@ -84,20 +95,18 @@ bool piece_allowed(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wal
     return arrive(q, r, memory, walls, index, scratch, arrived);
 }
 
-Vec2 make_safe(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wall> walls, const WallIndex* index,
-               StepScratch& scratch, Keep a, Keep b) {
+Vec2 make_safe(const SafePiece& piece) {
+    const Vec2 q = piece.q, r = piece.r;
     const auto ok = [&](Vec2 c) {
         // A nearly parallel leg can round a point just past a line while the piece to it passes the line
         // beyond the wall's end: no tunnel, but the ball would sit on a wall's far side after bouncing off it.
-        for (const Keep& k : {a, b})
+        for (const Keep& k : piece.keep)
             if (k.wall != nullptr && k.from != 0 && exact::side(c, *k.wall) == -k.from) return false;
-        return piece_allowed(q, c, memory, walls, index, scratch);
+        return piece_allowed(q, c, piece.memory, piece.walls, piece.index, piece.scratch);
     };
     if (ok(r)) return r;
-    // Walk back towards q: a rounding error of a few ulps is undone by the first steps; the last
-    // step, f = 0, is q itself, where the ball already is.
     const Vec2 d = r - q;
-    for (double f : {1 - 0x1p-50, 1 - 0x1p-46, 1 - 0x1p-40, 1 - 0x1p-30, 1 - 0x1p-20, 1 - 0x1p-10, 0.5, 0.0}) {
+    for (double f : k_walk_back) {
         const Vec2 c = f == 0.0 ? q : q + f * d;
         if (ok(c)) return c;
     }

@@ -2,11 +2,15 @@
 // kernels. Every decision here is an exact predicate on doubles.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
 
-#include "ricochet/kernel.hpp"
+#include "ricochet/ball_memory.hpp"
+#include "ricochet/shapes.hpp"
+#include "ricochet/step.hpp"
+#include "ricochet/wall_index.hpp"
 
 namespace ricochet::detail {
 
@@ -36,10 +40,21 @@ struct Keep {
     int from = 0;
 };
 
-/// r, or the first point on the way back towards q whose piece q → r is allowed (q itself at worst) and
-/// which lies on no kept wall's far side.
-Vec2 make_safe(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wall> walls, const WallIndex* index,
-               StepScratch& scratch, Keep a = {}, Keep b = {});
+/// A piece q → r for make_safe to check, with what it is checked against: the ball's memory, the walls (and
+/// their index and scratch space), and up to two walls the ball bounced off, whose far side it may not reach.
+struct SafePiece {
+    Vec2 q;
+    Vec2 r;
+    const BallMemory& memory;
+    std::span<const Wall> walls;
+    const WallIndex* index = nullptr;
+    StepScratch& scratch;
+    std::array<Keep, 2> keep{};
+};
+
+/// piece.r, or the first point on the way back towards piece.q whose piece q → r is allowed (q itself at
+/// worst) and which lies on no kept wall's far side.
+Vec2 make_safe(const SafePiece& piece);
 
 /// The contact on wall w in memory, or nullptr.
 const Contact* find_contact(const BallMemory& memory, std::uint32_t w);

@@ -16,6 +16,11 @@ constexpr double k_sq = 8.0 * k_eps;
 // in [2^-450, 2^450], so products lie in [2^-900, 2^900] with all 106 bits representable.
 constexpr double k_exp_min = 0x1p-450;
 constexpr double k_exp_max = 0x1p450;
+// compare_crossings: the rounding of its two products l, r and of D = l − r, each ≤ ε relative; 4ε leaves room.
+constexpr double k_cross_round = 4.0 * k_eps;
+// compare_crossings: the error bound is itself a rounded sum of a few terms; inflating it by 1 + 8ε keeps it
+// an upper bound, so the filter never vouches for a sign it should not.
+constexpr double k_cross_slack = 1.0 + 8.0 * k_eps;
 
 std::atomic<unsigned long long> g_expansion{0};
 std::atomic<unsigned long long> g_gmp{0};
@@ -208,9 +213,9 @@ int compare_crossings(Vec2 a, Vec2 b, const Wall& w1, const Wall& w2) {
     // |x̃ỹ − xy| ≤ ex(|ỹ| + ey) + |x̃|ey for each product, plus the rounding of D itself.
     const double err = a2.bound * (std::fabs(b1.value) + b1.bound) + std::fabs(a2.value) * b1.bound +
                        a1.bound * (std::fabs(b2.value) + b2.bound) + std::fabs(a1.value) * b2.bound +
-                       4.0 * k_eps * (std::fabs(l) + std::fabs(r));
+                       k_cross_round * (std::fabs(l) + std::fabs(r));
     const double d = l - r;
-    if (std::isfinite(err) && std::fabs(d) > (1.0 + 8.0 * k_eps) * err) return sign(d) * sa1 * sa2;
+    if (std::isfinite(err) && std::fabs(d) > k_cross_slack * err) return sign(d) * sa1 * sa2;
     g_gmp.fetch_add(1, std::memory_order_relaxed);
     auto det = [](const Wall& w, Vec2 p) -> mpq_class {
         return (q(w.p0.x) - q(p.x)) * (q(w.p1.y) - q(p.y)) - (q(w.p0.y) - q(p.y)) * (q(w.p1.x) - q(p.x));

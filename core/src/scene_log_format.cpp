@@ -176,7 +176,7 @@ private:
             const Token& t = arg(1, "kernel name");
             const auto k = parse_kernel(t.text);
             if (!k)
-                fail(t, fmt::format("unknown kernel '{}' (lecture-float, lecture-double, robust, exact)", t.text));
+                fail(t, fmt::format("unknown kernel '{}' ({})", t.text, kernel_names()));
             no_more(2);
             scene_.kernel = *k;
             seen_kernel_ = true;

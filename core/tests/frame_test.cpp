@@ -38,7 +38,7 @@ class Frames : public ::testing::TestWithParam<KernelId> {};
 INSTANTIATE_TEST_SUITE_P(Kernels, Frames, ::testing::ValuesIn(k_all_kernels));
 
 TEST_P(Frames, BoxWallsPointOutward) {
-    for (const Wall& w : box()) EXPECT_EQ(classify(GetParam(), {5, 5}, w), Side::Inside);
+    for (const Wall& w : box()) EXPECT_EQ(classify(GetParam(), {5, 5}, w), Side::inside);
 }
 
 TEST_P(Frames, ThePinballBouncesAndSpendsTheRestOfTheFrame) {
@@ -52,6 +52,31 @@ TEST_P(Frames, ThePinballBouncesAndSpendsTheRestOfTheFrame) {
     EXPECT_EQ(s.ball.pos, (Vec2{8, 6}));
     EXPECT_EQ(s.ball.vel, (Vec2{-4, 1}));
     EXPECT_EQ(s.status, FrameStatus::ok);
+}
+
+TEST_P(Frames, ABallAtRestStaysWithItsMemory) {
+    // First a frame ending exactly on the right wall after a bounce off the top one, so robust and exact
+    // remember a contact and a bounce; then the ball at rest: nothing moves, nothing is hit or forgotten.
+    BallMemory memory;
+    Stepped s = step(GetParam(), {{9, 9}, {1, 2}}, box(), &memory);
+    const BallMemory before = memory;
+    if (GetParam() == KernelId::robust || GetParam() == KernelId::exact) {
+        ASSERT_EQ(before.count, 1);  // lying on the right wall
+        ASSERT_NE(before.bounced_from, 0);
+    }
+    const Vec2 at = s.ball.pos;
+    s = step(GetParam(), {at, {0, 0}}, box(), &memory);
+    EXPECT_EQ(s.status, FrameStatus::ok);
+    EXPECT_EQ(s.ball.pos, at);
+    EXPECT_TRUE(s.hits.empty());
+    EXPECT_EQ(s.ball.vel, (Vec2{0, 0}));
+    EXPECT_EQ(memory.count, before.count);
+    for (std::uint8_t i = 0; i < memory.count; ++i) {
+        EXPECT_EQ(memory.contacts[i].wall, before.contacts[i].wall);
+        EXPECT_EQ(memory.contacts[i].side, before.contacts[i].side);
+    }
+    EXPECT_EQ(memory.bounced_from, before.bounced_from);
+    EXPECT_EQ(memory.bounced_wall, before.bounced_wall);
 }
 
 TEST_P(Frames, SeveralBouncesInOneFrame) {
@@ -147,7 +172,7 @@ TEST(Frames, BounceKeepsSpeedAndSide) {
             EXPECT_LE(std::fabs(after - before), k_speed_rel_bound * before + 4e-16 * before);
             const Side from = classify(KernelId::exact, start, w);
             const Side to = classify(KernelId::exact, s.ball.pos, w);
-            EXPECT_TRUE(to == from || to == Side::On) << kernel_name(k) << " case " << i;
+            EXPECT_TRUE(to == from || to == Side::on) << kernel_name(k) << " case " << i;
         }
     }
 }

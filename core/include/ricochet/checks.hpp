@@ -90,8 +90,8 @@ struct SpeedBound {
     double rel = 0.0;  ///< b, relative
     double abs = 0.0;  ///< a, absolute (subnormal rounding)
 };
-/// The kernel's stated speed bound: k_speed_rel_bound and k_speed_abs_bound for robust and exact; the
-/// lecture kernels' own (kernel_lecture.hpp).
+/// The kernel's stated speed bound, from the kernel table (KernelOps): k_speed_rel_bound and
+/// k_speed_abs_bound for robust and exact; the lecture kernels' own (kernel_lecture.hpp).
 SpeedBound speed_bound(KernelId kernel);
 
 /// The first broken invariant of a run.

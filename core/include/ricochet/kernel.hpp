@@ -1,5 +1,6 @@
 // Kernels: four numeric implementations of the lecture's collision tests behind one interface,
-// chosen by name at run time.
+// chosen by name at run time. Each is a type with the functions of KernelOps, entered once in the
+// kernel registry under its name (below); a plug-in kernel joins the same registry.
 //
 //   lecture-float, lecture-double  the lecture's formulas as written (unit normal n̂, BC, the five
 //                                  tests, t_i), in float or double. The baseline; not fixed.
@@ -42,69 +43,80 @@
 // | |v'| − |v| | ≤ k_speed_rel_bound·|v| + k_speed_abs_bound (2^-48 and 2^-1068) per bounce.
 #pragma once
 
-#include <array>
-#include <cstdint>
+#include <cstddef>
 #include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
 
+#include "ricochet/ball_memory.hpp"
+#include "ricochet/kernel_id.hpp"
+#include "ricochet/limits.hpp"
 #include "ricochet/line.hpp"
 #include "ricochet/shapes.hpp"
+#include "ricochet/step.hpp"
+#include "ricochet/sweep.hpp"
+#include "ricochet/wall_index.hpp"
 
 namespace ricochet {
 
-/// The four kernels.
-enum class KernelId : std::uint8_t { lecture_float, lecture_double, robust, exact };
-/// Every kernel, in a fixed order.
-inline constexpr std::array<KernelId, 4> k_all_kernels = {KernelId::lecture_float, KernelId::lecture_double,
-                                                           KernelId::robust, KernelId::exact};
-/// The kernel's name as scene logs and --kernel spell it ("lecture-float", …, "robust", "exact").
-std::string_view kernel_name(KernelId k);
-/// The kernel called name, or nothing if there is none.
-std::optional<KernelId> parse_kernel(std::string_view name);
-
-/// Largest accepted magnitude of any coordinate, radius or velocity component.
-inline constexpr double k_coordinate_limit = 0x1p256;
-/// Most bounces one ball makes in one frame.
-inline constexpr int k_max_bounces = 16;
-/// Robust and exact: bound on the relative change of |v| per bounce (the rounded reflection).
-/// Robust computes v' = v − 2(v·n̂)n̂ with n̂ = m/|m|, m = n scaled by a power of two (exact): |m| is off by
-/// ≤ 2ε, n̂ by ≤ 2ε per component, so |n̂|² = 1 ± 6ε; v·n̂ is off by ≤ 4ε|v|, 2(v·n̂)n̂ by ≤ 7ε|v|, the
-/// subtraction adds ε per component. Reflecting about n̂ itself changes |v|² by 4(v·n̂)²(|n̂|² − 1).
-/// In all ≤ 20ε < 32ε = 2^-48 (ε = 2^-53). Exact rounds each component once (ε). Measured worst over
-/// 2·10^6 random reflections at scales 2^±60: see core/tests/frame_test.cpp (SpeedBoundHolds).
-inline constexpr double k_speed_rel_bound = 0x1p-48;
-/// Robust and exact: absolute part of that bound per bounce, for velocities so small that the rounding
-/// is subnormal (each operation then errs by up to 2^-1075 absolutely, not relatively): 2^-1068.
-inline constexpr double k_speed_abs_bound = 0x1p-1068;
-
-/// True if x is finite and |x| ≤ k_coordinate_limit.
-bool in_range(double x);
-
-/// Why a leg does not hit a wall: the lecture's five tests in order, then the degenerate cases.
-enum class Miss : std::uint8_t {
-    none,           ///< it hits
-    both_inside,    ///< test 1: BC(Bs) < 0 and BC(Be) < 0
-    both_outside,   ///< test 2: BC(Bs) > 0 and BC(Be) > 0
-    parallel,       ///< test 3: n̂·v = 0
-    before_p0,      ///< test 4: the hit point lies before P0
-    past_p1,        ///< test 5: the hit point lies past P1
-    degenerate,     ///< zero-length wall or zero velocity
-    leaving,        ///< Bs is on the wall's line and the ball moves off it
-};
-/// A short name for a Miss ("hit", "both-inside", …).
-std::string_view miss_name(Miss m);
-
-/// The answer to one leg against one wall.
-struct Sweep {
-    Miss miss = Miss::degenerate;
-    double t = 0.0;  ///< t_i in [0, 1] when it hits
-    Vec2 point;      ///< B_i when it hits
-    bool hit() const { return miss == Miss::none; }
+/// One kernel's implementation: the same functions as the free functions below, without the KernelId.
+/// The registry holds one of these per kernel; it is the only place a kernel's name or id maps to code.
+struct KernelOps {
+    std::string_view name;  ///< as scene logs and --kernel spell it
+    Side (*classify)(Vec2 p, const Wall& w);
+    bool (*point_in_circle)(Vec2 p, const Circle& c);
+    bool (*circles_overlap)(const Circle& a, const Circle& b);
+    bool (*point_in_rect)(Vec2 p, const Rect& r);
+    bool (*rects_overlap)(const Rect& a, const Rect& b);
+    Sweep (*sweep)(Vec2 bs, Vec2 v, const Wall& w);
+    Vec2 (*reflect)(Vec2 v, const Wall& w);
+    FrameStatus (*step_ball)(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
+                             StepScratch& scratch, const WallIndex* index);
+    /// The kernel's stated bound on | |v′| − |v| | per reflection: speed_rel_bound·|v| + speed_abs_bound
+    /// (the `speed` check, checks.hpp). A kernel type states it as K::k_speed_rel_bound and
+    /// K::k_speed_abs_bound; one that states none is held to robust's (limits.hpp).
+    double speed_rel_bound = k_speed_rel_bound;
+    double speed_abs_bound = k_speed_abs_bound;
 };
 
-/// Classifies p against w's line: Outside, Inside or On (the sign of BC).
+/// A kernel type: static member functions with exactly KernelOps's signatures (one of each, no overloads).
+template <class K>
+concept Kernel = requires {
+    KernelOps{std::string_view{}, &K::classify,      &K::point_in_circle, &K::circles_overlap, &K::point_in_rect,
+              &K::rects_overlap,  &K::sweep,         &K::reflect,         &K::step_ball};
+};
+
+/// The registry entry of kernel type K, called name.
+template <Kernel K>
+constexpr KernelOps make_kernel_ops(std::string_view name) {
+    KernelOps ops{name, &K::classify, &K::point_in_circle, &K::circles_overlap, &K::point_in_rect,
+                  &K::rects_overlap, &K::sweep, &K::reflect, &K::step_ball};
+    if constexpr (requires { K::k_speed_rel_bound; K::k_speed_abs_bound; }) {
+        ops.speed_rel_bound = K::k_speed_rel_bound;
+        ops.speed_abs_bound = K::k_speed_abs_bound;
+    }
+    return ops;
+}
+
+/// Room in the registry: the four built-in kernels and up to twelve registered ones. A fixed table keeps
+/// every entry where it is, so a KernelOps reference stays valid while kernels join.
+inline constexpr std::size_t k_max_kernels = 16;
+
+/// A plug-in kernel joins the registry here, by name, without editing any dispatch: write a type with
+/// KernelOps's static functions (the Kernel concept checks them), then at start-up, before any thread
+/// steps a scene (registration is not synchronized), call
+///     register_kernel(make_kernel_ops<MyKernel>("my-kernel"));
+/// From then on parse_kernel("my-kernel") finds it, kernel_name and kernel_names() spell it, every free
+/// function below dispatches to it, and scene logs may name it. Returns its id, or nothing if the name is
+/// taken or the registry is full. The name must outlive every use of the registry (a literal is fine).
+std::optional<KernelId> register_kernel(const KernelOps& ops);
+/// The implementation of kernel k. k must be registered (every KernelId parse_kernel returns is).
+const KernelOps& kernel_ops(KernelId k);
+/// Every registered kernel, in id order: k_all_kernels first, then the plug-ins in the order they joined.
+std::span<const KernelId> registered_kernels();
+
+/// Classifies p against w's line: outside, inside or on (the sign of BC).
 Side classify(KernelId k, Vec2 p, const Wall& w);
 /// Point/circle: |CP| ≤ R.
 bool point_in_circle(KernelId k, Vec2 p, const Circle& c);
@@ -119,60 +131,10 @@ Sweep sweep(KernelId k, Vec2 bs, Vec2 v, const Wall& w);
 /// The lecture's bounce: v' = v − 2(v·n̂)n̂ (kernel precision; exact rounds the rational result).
 Vec2 reflect(KernelId k, Vec2 v, const Wall& w);
 
-/// A wall the ball is lying on, and the side it arrived from (±1).
-struct Contact {
-    std::uint32_t wall = 0;
-    std::int8_t side = 0;
-};
-/// What a kernel remembers of a ball between frames: the walls it lies on and where it came from.
-struct BallMemory {
-    std::array<Contact, 4> contacts{};
-    std::uint8_t count = 0;
-    /// The last wall bounced off and the side (±1) it was met from; 0: none yet. Moving straight on
-    /// from a bounce the ball stays in that side's half-plane, so until its next bounce no printed point
-    /// may lie on that wall's far side, even beyond the wall's ends.
-    std::int8_t bounced_from = 0;
-    std::uint32_t bounced_wall = 0;
-};
-
-/// A bounce during a frame: the wall, the frame time t_i and the point B_i.
-struct HitEvent {
-    std::uint32_t wall = 0;
-    double t = 0.0;
-    Vec2 point;
-};
-
-/// Answers "which walls may touch the segment a → b?" faster than trying them all.
-class WallIndex {
-public:
-    virtual ~WallIndex() = default;
-    /// Appends to out every wall whose closed segment may meet the closed segment a → b (a superset
-    /// is fine, each wall at most once, any order).
-    virtual void query(Vec2 a, Vec2 b, std::vector<std::uint32_t>& out) const = 0;
-};
-
-/// How a frame ended for one ball.
-enum class FrameStatus : std::uint8_t {
-    ok,            ///< the ball finished its frame
-    bounce_limit,  ///< k_max_bounces reached: the ball stays at its last safe point
-    out_of_range,  ///< a position or velocity left the accepted range: the ball did not move
-};
-
-struct StepTrace;  // step_trace.hpp
-
-/// Scratch space reused across calls to step_ball (keeps the hot loop free of allocation).
-struct StepScratch {
-    std::vector<std::uint32_t> candidates;
-    std::vector<std::uint32_t> touching;
-    std::vector<std::uint32_t> all_walls;  ///< 0, 1, …, n − 1: every wall, when there is no index
-    /// If set, step_ball fills it with the frame's legs, decisions and reflections (appending; the caller
-    /// clears it). Unset, a step pays one null test per leg and per reflection.
-    StepTrace* trace = nullptr;
-};
-
 /// Steps one ball through one frame among walls: earliest hit, bounce, search again from the hit
 /// point for the rest of the frame. Appends the frame's hits to hits. With an index, only the walls it
-/// returns are tried (the exact kernel always tries every wall).
+/// returns are tried (the exact kernel always tries every wall). A frame that would leave the accepted
+/// range changes nothing (ball, memory and hits stay as they were) and returns out_of_range.
 FrameStatus step_ball(KernelId k, Ball& ball, BallMemory& memory, std::span<const Wall> walls,
                       std::vector<HitEvent>& hits, StepScratch& scratch, const WallIndex* index = nullptr);
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "ricochet/kernel.hpp"
+#include "ricochet/sweep.hpp"
 #include "ricochet/vec2.hpp"
 
 namespace ricochet {

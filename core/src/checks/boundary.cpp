@@ -65,13 +65,13 @@ private:
             const Sweep got = sweep(k, p, v, w);
             const Miss m = got.miss;
             // Test 1 and 2 read the sign of BC(Bs) that classify gives.
-            const bool bad = (s == Side::On && (m == Miss::both_inside || m == Miss::both_outside)) ||
-                             (s == Side::Inside && m == Miss::both_outside) ||
-                             (s == Side::Outside && m == Miss::both_inside);
+            const bool bad = (s == Side::on && (m == Miss::both_inside || m == Miss::both_outside)) ||
+                             (s == Side::inside && m == Miss::both_outside) ||
+                             (s == Side::outside && m == Miss::both_inside);
             if (bad) return fail(fmt::format("classify says {} is {} wall {} but the sweep from it says {}", p, s, i, m));
-            if (s == Side::On && got.hit())
+            if (s == Side::on && got.hit())
                 return fail(fmt::format("{} is on wall {}'s line, yet the sweep from it moving {} hits it", p, i, v));
-            if (got.hit() && classify(k, be, w) == Side::On && (got.t != 1.0 || !(got.point == be)))
+            if (got.hit() && classify(k, be, w) == Side::on && (got.t != 1.0 || !(got.point == be)))
                 return fail(fmt::format("from {} moving {} the leg ends on wall {}'s line at {}, but the hit is at t {} "
                                         "point {}",
                                         p, v, i, be, got.t, got.point));

@@ -3,7 +3,6 @@
 
 #include <cmath>
 
-#include "../kernel_lecture.hpp"
 #include "frame_check.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/truth.hpp"
@@ -11,13 +10,8 @@
 namespace ricochet {
 
 SpeedBound speed_bound(KernelId kernel) {
-    switch (kernel) {
-        case KernelId::lecture_float: return {lecture::k_float_speed_rel_bound, 0.0};
-        case KernelId::lecture_double: return {lecture::k_double_speed_rel_bound, 0.0};
-        case KernelId::robust:
-        case KernelId::exact: return {k_speed_rel_bound, k_speed_abs_bound};
-    }
-    return {k_speed_rel_bound, k_speed_abs_bound};
+    const KernelOps& ops = kernel_ops(kernel);
+    return {ops.speed_rel_bound, ops.speed_abs_bound};
 }
 
 }  // namespace ricochet

@@ -1,6 +1,7 @@
-// `ricochet bench`: run time against error (the main table), `bench stability`, `bench frames`.
-// The heavy lifting is in bench/ (the ricochet_bench library); this file only wires the options.
-#include "commands.hpp"
+// `ricochet bench` (command.hpp): run time against error (the main table), `bench stability`,
+// `bench frames`, `bench scale`. The heavy lifting is in the ricochet_bench and ricochet_scale libraries;
+// this file only wires the options.
+#include "ricochet_bench/command.hpp"
 
 #include <exception>
 #include <memory>
@@ -10,9 +11,8 @@
 #include "ricochet_bench/bench.hpp"
 #include "scale_bench.hpp"
 
-namespace ricochet::cli {
+namespace ricochet::bench {
 
-/// Registers the `bench` command (and its `stability` and `frames` subcommands) on app.
 void register_bench(CLI::App& app) {
     auto opt = std::make_shared<ricochet::bench::Options>();
     auto frames = std::make_shared<long>(20'000'000);
@@ -32,7 +32,7 @@ void register_bench(CLI::App& app) {
     CLI::App* fr = cmd->add_subcommand("frames", "One ball in a closed box, robust kernel: ball-frames per second");
     fr->add_option("--frames", *frames, "Frames per run")->capture_default_str();
     fr->add_flag("--smoke", opt->smoke, "One run");
-    // Issue 7's scaling benchmark (bench/scale, ricochet_scale): walls and balls from 10 to 10^6.
+    // The scaling benchmark (bench/scale, ricochet_scale): walls and balls from 10 to 10^6.
     auto threads = std::make_shared<unsigned>(0);
     CLI::App* sc = cmd->add_subcommand("scale", "Per-frame cost as walls and balls grow: brute force, grid, BVH, Box2D");
     sc->add_flag("--quick", opt->quick, "Smaller scenes");
@@ -42,18 +42,18 @@ void register_bench(CLI::App& app) {
     cmd->callback([cmd, stab, fr, sc, opt, frames, threads] {
         int rc = 0;
         try {
-            if (stab->parsed()) rc = ricochet::bench::run_stability(*opt);
-            else if (fr->parsed()) rc = ricochet::bench::run_frames(*opt, *frames);
+            if (stab->parsed()) rc = run_stability(*opt);
+            else if (fr->parsed()) rc = run_frames(*opt, *frames);
             else if (sc->parsed()) rc = ricochet::run_scale_bench(opt->quick, *threads, opt->out_dir);
-            else rc = ricochet::bench::run_bench(*opt);
+            else rc = run_bench(*opt);
         } catch (const std::exception& e) {
             // An output folder or file that cannot be written (the only failure a run can meet).
             fmt::print(stderr, "{}: error: {}\n", opt->out_dir, e.what());
-            throw Exit{2};
+            throw CLI::RuntimeError(2);
         }
         (void)cmd;
-        if (rc != 0) throw Exit{rc};
+        if (rc != 0) throw CLI::RuntimeError(rc);
     });
 }
 
-}  // namespace ricochet::cli
+}  // namespace ricochet::bench

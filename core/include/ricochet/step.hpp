@@ -1,0 +1,38 @@
+// One frame's step of one ball: the bounces it reports (HitEvent), how it ended (FrameStatus) and the
+// scratch space the step reuses.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ricochet/vec2.hpp"
+
+namespace ricochet {
+
+/// A bounce during a frame: the wall, the frame time t_i and the point B_i.
+struct HitEvent {
+    std::uint32_t wall = 0;
+    double t = 0.0;
+    Vec2 point;
+};
+
+/// How a frame ended for one ball.
+enum class FrameStatus : std::uint8_t {
+    ok,            ///< the ball finished its frame
+    bounce_limit,  ///< k_max_bounces reached: the ball stays at its last safe point
+    out_of_range,  ///< a position or velocity left the accepted range: the ball did not move
+};
+
+struct StepTrace;  // step_trace.hpp
+
+/// Scratch space reused across calls to step_ball (keeps the hot loop free of allocation).
+struct StepScratch {
+    std::vector<std::uint32_t> candidates;
+    std::vector<std::uint32_t> touching;
+    std::vector<std::uint32_t> all_walls;  ///< 0, 1, …, n − 1: every wall, when there is no index
+    /// If set, step_ball fills it with the frame's legs, decisions and reflections (appending; the caller
+    /// clears it). Unset, a step pays one null test per leg and per reflection.
+    StepTrace* trace = nullptr;
+};
+
+}  // namespace ricochet

@@ -1,0 +1,28 @@
+// The cache folder of a campaign: where it is, the artifacts libFuzzer leaves in it, and the working
+// corpus merged down to the inputs that add coverage.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "plan.hpp"
+
+namespace ricochet::fuzz {
+
+/// $RICOCHET_FUZZ_CACHE, else $XDG_CACHE_HOME/ricochet/fuzz, else ~/.cache/ricochet/fuzz, else a folder
+/// in the build tree: never the source tree.
+std::filesystem::path default_cache_dir();
+
+/// The names of libFuzzer's artifacts in dir (crash-, timeout-, oom-, leak-, slow-unit- files).
+std::set<std::string> list_artifacts(const std::filesystem::path& dir);
+
+/// Regular files directly in dir.
+std::size_t count_files(const std::filesystem::path& dir);
+
+/// Replaces run's corpus by its -merge=1 minimization (the inputs that add coverage), keeping it as it
+/// was if the merge fails (then a note says so). Updates run.corpus_size.
+void merge_corpus(TargetRun& run, const std::string& kernel);
+
+}  // namespace ricochet::fuzz

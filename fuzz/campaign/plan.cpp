@@ -1,0 +1,113 @@
+// The campaign's plan (plan.hpp): default folders, the targets this build has, one run per target.
+#include "plan.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "cache.hpp"
+#include "process.hpp"
+#include "ricochet/kernel.hpp"
+
+namespace ricochet::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The folder that holds this build's fuzz binaries.
+fs::path default_bin_dir() {
+    if (const char* d = std::getenv("RICOCHET_FUZZ_BIN_DIR"); d != nullptr && *d != '\0') return d;
+    const fs::path baked = fs::path(RICOCHET_BINARY_DIR) / "fuzz";
+    if (fs::exists(baked)) return baked;
+    // Next to the executable: BUILD/cli/ricochet → BUILD/fuzz.
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    return ec ? baked : self.parent_path().parent_path() / "fuzz";
+}
+
+/// Where failure logs go: $RICOCHET_REPLAY_DIR, else the source tree's regression corpus.
+fs::path default_replay_dir() {
+    if (const char* d = std::getenv("RICOCHET_REPLAY_DIR"); d != nullptr && *d != '\0') return d;
+    return fs::path(RICOCHET_SOURCE_DIR) / "replays";
+}
+
+bool known_target(const std::string& t) {
+    return std::find(k_campaign_targets.begin(), k_campaign_targets.end(), t) != k_campaign_targets.end();
+}
+
+}  // namespace
+
+std::optional<Plan> make_plan(const CampaignOptions& opt) {
+    if (!parse_kernel(opt.kernel)) {
+        fmt::print(stderr, "ricochet fuzz: error: unknown kernel '{}' ({})\n", opt.kernel, kernel_names());
+        return std::nullopt;
+    }
+    Plan plan;
+    plan.bin_dir = opt.bin_dir.empty() ? default_bin_dir() : fs::path(opt.bin_dir);
+    plan.cache = opt.cache_dir.empty() ? default_cache_dir() : fs::path(opt.cache_dir);
+    plan.replay_dir = opt.replay_dir.empty() ? default_replay_dir() : fs::path(opt.replay_dir);
+    plan.source = RICOCHET_SOURCE_DIR;
+    std::vector<std::string> targets = opt.targets;
+    if (targets.empty())
+        for (std::string_view t : k_campaign_targets)
+            if (fs::exists(plan.bin_dir / fmt::format("fuzz_{}", t))) targets.emplace_back(t);
+    const std::string how = fmt::format(
+        "build them with clang and libFuzzer:\n  CC=clang-14 CXX=clang++-14 cmake -S {} -B build-fuzz-clang -G Ninja && "
+        "cmake --build build-fuzz-clang --target fuzz_parser fuzz_static fuzz_sweep fuzz_scene ricochet\n"
+        "then run build-fuzz-clang/cli/ricochet fuzz (or pass --bin-dir)",
+        plan.source.string());
+    // Degenerate: nothing to fuzz.
+    if (targets.empty()) {
+        fmt::print(stderr, "ricochet fuzz: error: no fuzz targets in {}; {}\n", plan.bin_dir.string(), how);
+        return std::nullopt;
+    }
+    std::error_code ec;
+    fs::create_directories(plan.cache, ec);
+    for (const std::string& t : targets) {
+        if (!known_target(t)) {
+            fmt::print(stderr, "ricochet fuzz: error: unknown target '{}' (parser, static, sweep, scene)\n", t);
+            return std::nullopt;
+        }
+        TargetRun r;
+        r.target = t;
+        r.bin = plan.bin_dir / fmt::format("fuzz_{}", t);
+        if (!fs::exists(r.bin)) {
+            fmt::print(stderr, "ricochet fuzz: error: {} is missing; {}\n", r.bin.string(), how);
+            return std::nullopt;
+        }
+        // A libFuzzer binary answers -help=1 with its usage; the gcc build's standalone driver says what it is.
+        const auto [rc, out] = run_capture({r.bin.string(), "-help=1"}, {}, plan.cache / fmt::format("probe-{}.log", t));
+        if (out.find("standalone fuzz driver") != std::string::npos || out.find("Usage:") == std::string::npos) {
+            fmt::print(stderr, "ricochet fuzz: error: {} is not a libFuzzer binary (a gcc build runs regression inputs only); {}\n",
+                       r.bin.string(), how);
+            return std::nullopt;
+        }
+        // The corpus is per kernel: an input that is fine under robust may fail under a lecture kernel and
+        // would stop every run at start-up.
+        r.dir = plan.cache / t / opt.kernel;
+        r.corpus = r.dir / "corpus";
+        r.artifacts = r.dir / "artifacts";
+        r.log = r.dir / "campaign.log";
+        fs::create_directories(r.corpus, ec);
+        fs::create_directories(r.artifacts, ec);
+        fs::remove(r.log, ec);
+        r.dict = plan.source / "fuzz" / fmt::format("{}.dict", t);
+        // Seeds: the committed regression inputs (and the replays for the parser). A lecture kernel starts
+        // from its own corpus only: committed inputs may be known failures of it.
+        if (!opt.kernel.starts_with("lecture")) {
+            if (fs::exists(plan.source / "fuzz" / "corpus" / t)) r.seeds.push_back(plan.source / "fuzz" / "corpus" / t);
+            if (t == "parser" && fs::exists(plan.source / "replays")) r.seeds.push_back(plan.source / "replays");
+        }
+        r.artifacts_before = list_artifacts(r.artifacts);
+        plan.runs.push_back(std::move(r));
+    }
+    // --jobs workers shared out: each target gets jobs / targets, the first jobs % targets one more.
+    const int n = static_cast<int>(plan.runs.size());
+    plan.jobs = opt.jobs > 0 ? opt.jobs : n;
+    for (int i = 0; i < n; ++i) plan.runs[std::size_t(i)].workers = std::max(1, plan.jobs / n + (i < plan.jobs % n ? 1 : 0));
+    return plan;
+}
+
+}  // namespace ricochet::fuzz

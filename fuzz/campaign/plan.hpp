@@ -1,0 +1,62 @@
+// The campaign's plan: one run per target (its binary, folders, workers and what it found), made from
+// the options after checking that every binary is a libFuzzer one.
+#pragma once
+
+#include <sys/types.h>
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ricochet_fuzz/campaign.hpp"
+
+namespace ricochet::fuzz {
+
+/// The clock of progress lines and worker restarts.
+using Clock = std::chrono::steady_clock;
+
+/// One target's campaign: its binary and folders, its workers, what their output says, what it found.
+struct TargetRun {
+    std::string target;                          ///< parser, static, sweep or scene
+    std::filesystem::path bin;                   ///< the fuzz_TARGET binary
+    std::filesystem::path dir;                   ///< CACHE/TARGET/KERNEL
+    std::filesystem::path corpus;                ///< dir/corpus: the working corpus
+    std::filesystem::path artifacts;             ///< dir/artifacts: libFuzzer's crash-, timeout-, ... files
+    std::filesystem::path log;                   ///< dir/campaign.log: every worker's output
+    std::filesystem::path dict;                  ///< fuzz/TARGET.dict in the source tree
+    std::vector<std::filesystem::path> seeds;    ///< read-only seed folders (committed inputs)
+    int workers = 1;                             ///< worker processes of this target
+    std::vector<pid_t> pids;                     ///< per worker, its process (−1: none running)
+    std::vector<Clock::time_point> started;      ///< per worker, when its current process started
+    std::uint64_t runs_done = 0;                 ///< inputs run by all its worker processes
+    std::uint64_t cov = 0;                       ///< the highest coverage a worker reported
+    std::uint64_t corpus_size = 0;               ///< the latest corpus size a worker reported
+    std::uint64_t exec_s = 0;                    ///< the latest exec/s a worker reported
+    std::size_t log_read = 0;                    ///< bytes of log already read
+    int restarts = 0;                            ///< workers restarted after a failure
+    int quick_crashes = 0;                       ///< workers that failed within a second of starting
+    std::set<std::string> artifacts_before;      ///< artifacts there before this campaign
+    double seconds = 0.0;                        ///< wall time of the campaign
+    int new_failures = 0;                        ///< failures saved (or kept) as new
+    int known_failures = 0;                      ///< failures whose log was already saved
+    std::vector<std::string> notes;              ///< lines for the end of the report
+};
+
+/// The whole campaign: where things are, and one run per target.
+struct Plan {
+    std::filesystem::path bin_dir;     ///< folder of the fuzz_* binaries
+    std::filesystem::path cache;       ///< the cache folder (working corpora, artifacts, logs)
+    std::filesystem::path replay_dir;  ///< where failure logs are saved
+    std::filesystem::path source;      ///< the source tree (dictionaries, committed inputs)
+    int jobs = 1;                      ///< worker processes in all
+    std::vector<TargetRun> runs;       ///< one per target, in the order asked for
+};
+
+/// The plan for options, or nothing after printing on stderr why it cannot run (exit status 2).
+std::optional<Plan> make_plan(const CampaignOptions& options);
+
+}  // namespace ricochet::fuzz

@@ -1,0 +1,170 @@
+// Running a campaign's workers (workers.hpp). Each worker is a libFuzzer process writing to its
+// target's campaign.log; the loop below waits on them, reads what they print and restarts the ones that
+// stopped at a failure.
+#include "workers.hpp"
+
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string_view>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "cache.hpp"
+#include "process.hpp"
+
+namespace ricochet::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Seconds between progress lines.
+constexpr double k_progress_every_s = 5;
+/// Seconds past its time limit after which a worker is stopped (libFuzzer overruns by a unit's time).
+constexpr double k_overrun_grace_s = 60;
+/// Most restarts of one target's workers in a campaign.
+constexpr int k_max_restarts = 50;
+/// Failures within a second of starting after which a target's workers are not restarted: a corpus
+/// input that fails stops every run at start-up.
+constexpr int k_max_quick_crashes = 5;
+
+/// The number after key in line (e.g. "cov: "), if there is one.
+std::optional<std::uint64_t> number_after(const std::string& line, std::string_view key) {
+    const auto at = line.find(key);
+    if (at == std::string::npos) return std::nullopt;
+    std::size_t i = at + key.size();
+    while (i < line.size() && line[i] == ' ') ++i;
+    std::uint64_t v = 0;
+    bool any = false;
+    while (i < line.size() && line[i] >= '0' && line[i] <= '9') v = v * 10 + static_cast<std::uint64_t>(line[i++] - '0'), any = true;
+    return any ? std::optional(v) : std::nullopt;
+}
+
+/// Reads what the workers wrote since last time: coverage, corpus size, exec/s.
+void poll_log(TargetRun& r) {
+    std::ifstream in(r.log, std::ios::binary);
+    in.seekg(static_cast<std::streamoff>(r.log_read));
+    std::string line;
+    std::streamoff consumed = 0;
+    while (std::getline(in, line)) {
+        if (in.eof()) break;  // a partial last line: read it next time
+        consumed += static_cast<std::streamoff>(line.size() + 1);
+        if (line.empty() || line[0] != '#') continue;
+        // "#RUNS\tNEW|pulse|REDUCE cov: N ft: N corp: N/Nb ... exec/s: N rss: NMb"
+        if (auto cov = number_after(line, "cov: ")) r.cov = std::max(r.cov, *cov);
+        if (auto corp = number_after(line, "corp: ")) r.corpus_size = *corp;
+        if (auto e = number_after(line, "exec/s: ")) r.exec_s = *e;
+    }
+    r.log_read += static_cast<std::size_t>(consumed);
+}
+
+/// Runs over every worker process of r: the sum of each process's last "#N" (read from the whole log).
+std::uint64_t count_runs(const TargetRun& r) {
+    std::uint64_t runs = 0, last = 0;
+    std::istringstream in(read_all(r.log));
+    for (std::string line; std::getline(in, line);) {
+        if (line.size() > 1 && line[0] == '#' && line[1] >= '0' && line[1] <= '9') {
+            const std::uint64_t n = number_after(line, "#").value_or(0);
+            // A new process starts counting again from 1.
+            if (n < last) runs += last;
+            last = n;
+        }
+        if (auto n = number_after(line, "stat::number_of_executed_units: ")) runs += *n, last = 0;
+    }
+    return runs + last;
+}
+
+}  // namespace
+
+std::string human(double x) {
+    if (x >= 1e9) return fmt::format("{:.1f}G", x / 1e9);
+    if (x >= 1e6) return fmt::format("{:.1f}M", x / 1e6);
+    if (x >= 1e3) return fmt::format("{:.1f}k", x / 1e3);
+    return fmt::format("{:.0f}", x);
+}
+
+double run_workers(Plan& plan, const CampaignOptions& opt) {
+    const auto t0 = Clock::now();
+    const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+    const bool by_runs = opt.runs > 0;
+    // start: which start of this target's workers it is (0, 1, ...), so that each gets its own seed.
+    const auto start_worker = [&](TargetRun& r, std::size_t w, int start) {
+        std::vector<std::string> argv = {r.bin.string()};
+        // A campaign by runs does not reload the corpus folder: libFuzzer rereads it every second, so what
+        // it runs would depend on the clock.
+        if (by_runs)
+            argv.insert(argv.end(), {fmt::format("-runs={}", opt.runs), "-reload=0"});
+        else
+            argv.push_back(fmt::format("-max_total_time={}", std::max(1, static_cast<int>(opt.time - elapsed()))));
+        if (opt.seed > 0) argv.push_back(fmt::format("-seed={}", opt.seed + static_cast<unsigned>(start)));
+        argv.insert(argv.end(), {"-timeout=10", "-rss_limit_mb=2048", "-print_final_stats=1",
+                                 "-artifact_prefix=" + r.artifacts.string() + "/"});
+        if (fs::exists(r.dict)) argv.push_back("-dict=" + r.dict.string());
+        argv.push_back(r.corpus.string());
+        for (const auto& s : r.seeds) argv.push_back(s.string());
+        r.pids[w] = spawn(argv, {"RICOCHET_KERNEL=" + opt.kernel}, r.log);
+        r.started[w] = Clock::now();
+    };
+    for (TargetRun& r : plan.runs) {
+        r.pids.assign(static_cast<std::size_t>(r.workers), -1);
+        r.started.assign(static_cast<std::size_t>(r.workers), Clock::now());
+        for (std::size_t w = 0; w < r.pids.size(); ++w) start_worker(r, w, static_cast<int>(w));
+    }
+    double last_print = 0;
+    for (;;) {
+        bool any = false;
+        for (TargetRun& r : plan.runs) {
+            for (std::size_t w = 0; w < r.pids.size(); ++w) {
+                if (r.pids[w] < 0) continue;
+                int status = 0;
+                if (waitpid(r.pids[w], &status, WNOHANG) == 0) {
+                    any = true;
+                    // A worker that ignores its time limit.
+                    if (!by_runs && elapsed() > opt.time + k_overrun_grace_s) kill(r.pids[w], SIGTERM);
+                    continue;
+                }
+                r.pids[w] = -1;
+                poll_log(r);
+                const bool clean = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+                if (!clean && std::chrono::duration<double>(Clock::now() - r.started[w]).count() < 1) ++r.quick_crashes;
+                // A worker stops at its first failure; restart it while time is left, unless it keeps failing
+                // at start-up (a corpus input that fails). A campaign by runs does not restart: each worker
+                // runs its inputs once.
+                if (!clean && !by_runs && elapsed() < opt.time - 1 && r.restarts < k_max_restarts &&
+                    r.quick_crashes < k_max_quick_crashes) {
+                    ++r.restarts;
+                    start_worker(r, w, r.workers - 1 + r.restarts);
+                    any = true;
+                }
+            }
+            poll_log(r);
+        }
+        if (!any) break;
+        if (elapsed() - last_print >= k_progress_every_s) {
+            last_print = elapsed();
+            for (TargetRun& r : plan.runs) {
+                const std::size_t failures = list_artifacts(r.artifacts).size() - r.artifacts_before.size();
+                fmt::print("[{:4.0f}s] {:<7} exec/s {:>7}  cov {:>5}  corpus {:>5}  failures {}\n", elapsed(), r.target,
+                           human(static_cast<double>(r.exec_s)), r.cov, r.corpus_size, failures);
+            }
+            std::fflush(stdout);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    }
+    const double wall = elapsed();
+    for (TargetRun& r : plan.runs) {
+        r.runs_done = count_runs(r);
+        r.seconds = wall;
+        r.corpus_size = count_files(r.corpus);
+    }
+    return wall;
+}
+
+}  // namespace ricochet::fuzz

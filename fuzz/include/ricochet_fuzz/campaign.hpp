@@ -1,0 +1,34 @@
+// `ricochet fuzz`'s campaign: libFuzzer workers over this build's fuzz targets, a working corpus in a
+// cache folder, and each new failure minimized and saved as a scene log (fuzz/README.md).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ricochet::fuzz {
+
+/// Every target fuzz/ defines, in the order the summary lists them.
+inline constexpr std::array<std::string_view, 4> k_campaign_targets = {"parser", "static", "sweep", "scene"};
+
+/// What a campaign runs and where it keeps things; an empty folder takes its default.
+struct CampaignOptions {
+    std::vector<std::string> targets;  ///< the targets to fuzz; empty: every target this build has
+    std::string kernel = "robust";     ///< the kernel under test (RICOCHET_KERNEL of every worker)
+    double time = 60;                  ///< seconds of fuzzing; unused when runs > 0
+    std::uint64_t runs = 0;            ///< inputs per worker instead of a time limit (0: fuzz for time)
+    unsigned seed = 0;                 ///< libFuzzer's -seed of worker w is seed + w; 0: a random one each
+    int jobs = 0;                      ///< worker processes in all, shared out among the targets (0: one each)
+    std::string bin_dir;               ///< folder of the fuzz_* binaries
+    std::string cache_dir;             ///< working corpus and artifacts
+    std::string replay_dir;            ///< where failure logs are saved
+    bool no_merge = false;             ///< skip the corpus merge at the end
+};
+
+/// Runs a campaign, printing progress and a summary on stdout. Returns 0 if nothing new failed, 1 if
+/// something did, 2 on bad usage or missing binaries.
+int run_campaign(const CampaignOptions& options);
+
+}  // namespace ricochet::fuzz
