@@ -53,7 +53,7 @@
 //                  classify, the sweep's Miss, point_in_circle and point_in_rect are unchanged by moving p and
 //                  the scene by t.
 //   broad-phase    The scene stepped with no broad phase on one thread, and with the wall grid and static
-//                  index on two threads, print the checked run's events (default WorldOptions) bit for bit.
+//                  index on two threads, print the checked run's events bit for bit.
 //   round-trip     At frame 0: the scene written as a log (write_scene_log) reads back (parse_scene_log) as
 //                  the same scene bit for bit, and writing that again gives the same text.
 //   no-escape      Where the walls form closed chains (every end point the end of an even number of walls,
