@@ -153,10 +153,12 @@ TEST(Promise, TheAcceptedRangeIncludesItsLimit) {
     ASSERT_TRUE(std::holds_alternative<Diagnostic>(bad));
     EXPECT_EQ(std::get<Diagnostic>(bad).col, 6);
     EXPECT_NE(std::get<Diagnostic>(bad).message.find("outside the accepted range"), std::string::npos);
-    // A ball at the limit steps (a frame that stays in range is accepted) and hits a wall at the limit.
-    Frame f = one_frame(KernelId::robust, {{-lim, 1}, {0, -2}}, Wall{{-lim, 0}, {lim, 0}});
+    // A ball at the limit, moving by the limit, steps (the frame stays in range) and hits, inside the wall's
+    // segment (not at an end), a wall whose ends lie at the limit.
+    Frame f = one_frame(KernelId::robust, {{-lim, 0}, {lim, 0}}, Wall{{-lim, lim}, {lim, -lim}});
     EXPECT_EQ(f.status, FrameStatus::ok);
-    EXPECT_EQ(f.hits.size(), 1u);
+    ASSERT_EQ(f.hits.size(), 1u);
+    EXPECT_EQ(f.hits[0].point, (Vec2{0, 0}));
     // One step past it is refused and changes nothing.
     f = one_frame(KernelId::robust, {{lim, 0}, {lim, 0}}, Wall{{0, 1}, {1, 1}});
     EXPECT_EQ(f.status, FrameStatus::out_of_range);
