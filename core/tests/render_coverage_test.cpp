@@ -183,14 +183,18 @@ TEST(Render, ABallWithNothingInRangeDrawsNoPathAndColoursCycleByEight) {
 }
 
 TEST(Render, AFailureIsACrossAtTheBallsStateAndItsMessageIsEscaped) {
+    // Ball 1 also has a state in frame 2, at (0, 5): the cross is only at ball 0's.
+    Scene s = box_scene();
+    s.balls.push_back({{0, 5}, {0, 0}});
     CheckedRun run = path_run();
+    run.events.push_back(state(2, 1, {0, 5}));
     CheckFailure f;
     f.check = Check::no_tunnel;
     f.frame = 2;
     f.ball = 0;
     f.message = "piece (0, 8) -> (-4, 9) < wall & more";
     run.failure = f;
-    const std::string svg = render_svg(box_scene(), run);
+    const std::string svg = render_svg(s, run);
     // Frame 2's state (10, 5) ↦ (727.273, 400): a cross 9 px each way.
     EXPECT_TRUE(has(svg, "<g stroke=\"red\" stroke-width=\"3\"><line x1=\"718.273\" y1=\"391.000\" x2=\"736.273\" "
                          "y2=\"409.000\"/><line x1=\"718.273\" y1=\"409.000\" x2=\"736.273\" y2=\"391.000\"/></g>"));

@@ -135,6 +135,17 @@ TEST_F(SceneLogFiles, AWriteCutShortLeavesTheOldFileAndNoTemporaryFile) {
     EXPECT_EQ(entries(), 1u);
 }
 
+TEST_F(SceneLogFiles, ABareFileNameIsWrittenInTheCurrentFolder) {
+    const fs::path cwd = fs::current_path();
+    fs::current_path(dir_);
+    std::string error;
+    const bool ok = write_file_atomically("bare.scene", "bare\n", &error);
+    fs::current_path(cwd);
+    ASSERT_TRUE(ok) << error;
+    EXPECT_EQ(slurp(dir_ / "bare.scene"), "bare\n");
+    EXPECT_EQ(entries(), 1u);
+}
+
 TEST_F(SceneLogFiles, FailuresWithoutAnErrorStringOnlyReturnFalse) {
     EXPECT_FALSE(write_file_atomically(dir_ / "missing" / "a.scene", "x", nullptr));
     spit(dir_ / "file", "");
