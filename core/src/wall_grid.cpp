@@ -35,6 +35,9 @@ WallGrid::WallGrid(std::span<const Wall> walls, GridOptions options)
     }
     // Cap the cell count: grow h until (width/h + 2)(height/h + 2) fits.
     const auto cells_for = [&](double c) { return (width / c + 3.0) * (height / c + 3.0); };
+    // Degenerate: a subnormal h (walls a few subnormals apart) has no finite 1/h; a bigger cell only puts
+    // more walls in a cell.
+    while (!std::isfinite(1.0 / h)) h *= 2.0;
     while (cells_for(h) > static_cast<double>(options.max_cells)) h *= 1.5;
     inv_ = 1.0 / h;
     // Half a cell of border: walls on a lattice of pitch h then lie mid-cell, not on cell edges.
