@@ -1,5 +1,5 @@
 // The broad-phase indices on small layouts worked by hand: the wall grid (a given cell size, the cell cap,
-// walls on one line, points it cannot reason about), the wall BVH (leaves, the line test that prunes a box
+// the cell budget of a flat box, walls on one line, points it cannot reason about), the wall BVH (leaves, the line test that prunes a box
 // the segment's box overlaps), and the static index far from the origin.
 #include <gtest/gtest.h>
 
@@ -76,6 +76,25 @@ TEST(WallGridLayout, WallsOnOneLineGetCellsFromTheirLength) {
     EXPECT_EQ(query(vertical, {-1, 2.5}, {1, 2.5}), Ids{1});
 }
 
+TEST(WallGridLayout, AFlatBoxGetsAFewCellsNotMillions) {
+    // A box 2^40 wide and 1 tall (the scene fuzz target's boxes come from any two points): √(area / 16)
+    // alone gives h = 2^18 and (2^22 + 3)·3 cells, 50 MB of CSR starts for four walls, built again by
+    // every World a check makes. The budget, max(64, 16 · 4n) = 256 cells, coarsens it.
+    const double w = 0x1p40;
+    const std::vector<Wall> box = {{{w, 0}, {0, 0}}, {{w, 1}, {w, 0}}, {{0, 1}, {w, 1}}, {{0, 0}, {0, 1}}};
+    const WallGrid grid(box);
+    EXPECT_LE(std::size_t{grid.columns()} * grid.rows(), 256u);
+    EXPECT_LE(grid.bytes(), 4 * (257 + 256 * 4u));
+    // Still conservative: a leg through the bottom wall near each end, and one along the box's middle.
+    // Cells about 2^40 / 82 wide: the first column holds the left wall and the two long ones.
+    EXPECT_EQ(sorted(query(grid, {0.5, 0.5}, {0.5, -0.5})), (Ids{0, 2, 3}));
+    EXPECT_EQ(sorted(query(grid, {w - 0.5, 0.5}, {w - 0.5, -0.5})), (Ids{0, 1, 2}));
+    EXPECT_EQ(sorted(query(grid, {0.5, 0.5}, {w - 0.5, 0.5})), (Ids{0, 1, 2, 3}));
+    // A cell size the caller gives is kept (up to max_cells): the budget only bounds the chosen one.
+    const WallGrid given(box, {.cell_size = 0x1p30});
+    EXPECT_EQ(given.columns(), 1026u);
+}
+
 TEST(WallGridLayout, ANonPositiveOrNonFiniteCellSizeIsChosenInstead) {
     for (double h : {-1.0, double(NAN), double(INFINITY)}) {
         const WallGrid grid(k_two, {.cell_size = h});
@@ -144,9 +163,16 @@ TEST(StaticIndexLayout, ShapesBeyondTwoToTheHundredArePushedToTheFarRange) {
     const auto far_left = index.query({-INFINITY, 0});
     EXPECT_TRUE(far_left.circles.empty());
     EXPECT_EQ(Ids(far_left.rects.begin(), far_left.rects.end()), Ids{0});
+    // Two statics get a budget of 64 cells: 20 to 30 columns of about 2^116 over [−2^120, 2^120], so the
+    // circle's box (from 2^110) and the rect's (to −2^111) both reach the origin's column; halfway out on
+    // either side only one of them is a candidate.
     const auto origin = index.query({0, 0});
-    EXPECT_TRUE(origin.circles.empty());
-    EXPECT_TRUE(origin.rects.empty());
+    EXPECT_EQ(origin.circles.size() + origin.rects.size(), 2u);
+    const auto right = index.query({0x1p119, 0}), left = index.query({-0x1p119, 0});
+    EXPECT_EQ(Ids(right.circles.begin(), right.circles.end()), Ids{0});
+    EXPECT_TRUE(right.rects.empty());
+    EXPECT_TRUE(left.circles.empty());
+    EXPECT_EQ(Ids(left.rects.begin(), left.rects.end()), Ids{0});
 }
 
 TEST(StaticIndexLayout, OneShapeAtAPointAndShapesOnALine) {
