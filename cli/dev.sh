@@ -4,6 +4,8 @@
 #
 #   cli/dev.sh check   build, then `ricochet check` (replays, properties, a short fuzz campaign)
 #   cli/dev.sh test    build, then every test (ctest: unit, replay, property, fuzz)
+#   cli/dev.sh coverage  the `coverage` preset into build-coverage/: every test under clang's source-based
+#                      coverage, then the llvm-cov report of core/ (HTML in build-coverage/coverage-html)
 #
 # Environment: BUILD_DIR (default build), JOBS (default nproc), RICOCHET_NO_APT=1 to skip apt-get.
 set -euo pipefail
@@ -11,11 +13,38 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 job=${1:-}
 case "$job" in
-  check|test) ;;
-  *) echo "usage: cli/dev.sh check|test" >&2; exit 2 ;;
+  check|test|coverage) ;;
+  *) echo "usage: cli/dev.sh check|test|coverage" >&2; exit 2 ;;
 esac
 build=${BUILD_DIR:-build}
 jobs=${JOBS:-$(nproc)}
+
+# The coverage job: every CTest test (the fuzz targets on their standalone driver, since libFuzzer's and
+# ASan's instrumentation do not mix with profile counters; the ClusterFuzzLite build, which compiles its
+# own uninstrumented tree, left out), one raw profile per process and module (%p-%m), merged, then the
+# report of core/ per file. Everything it writes lands in build-coverage/.
+coverage() {
+  local dir=build-coverage status=0
+  cmake --preset coverage >/dev/null
+  # gtest_discover_tests runs each test binary at build time: its profiles go aside, not into the run's.
+  LLVM_PROFILE_FILE="$PWD/$dir/profiles-build/%p-%m.profraw" cmake --build --preset coverage -j "$jobs"
+  rm -rf "$dir/profiles" "$dir/tmp" && mkdir -p "$dir/profiles" "$dir/tmp"
+  ctest --preset coverage -j "$jobs" || status=$?
+  llvm-profdata-14 merge -sparse "$dir"/profiles/*.profraw -o "$dir/coverage.profdata"
+  # Every instrumented executable of the build (the core is linked into each of them): llvm-cov takes the
+  # first one as its argument, the others after -object.
+  local objects=() f
+  while IFS= read -r f; do
+    llvm-readelf-14 -S "$f" 2>/dev/null | grep -q __llvm_covmap || continue
+    if [ ${#objects[@]} = 0 ]; then objects=("$f"); else objects+=(-object "$f"); fi
+  done < <(find "$dir" -type f -perm -u+x ! -name '*.so*' ! -path '*/CMakeFiles/*' | sort)
+  local filter=(-ignore-filename-regex='/core/tests/' "$PWD/core/")
+  llvm-cov-14 show -instr-profile="$dir/coverage.profdata" "${objects[@]}" -format=html \
+    -output-dir="$dir/coverage-html" "${filter[@]}" >/dev/null
+  llvm-cov-14 report -instr-profile="$dir/coverage.profdata" "${objects[@]}" "${filter[@]}"
+  echo "dev.sh coverage: HTML report in $dir/coverage-html/index.html; ctest exit status $status"
+  exit "$status"
+}
 
 # Debian packages, never vendored or downloaded by the build.
 packages=(cmake ninja-build g++ pkg-config clang-14 libclang-rt-14-dev llvm-14 zip
@@ -33,6 +62,10 @@ if [ "${RICOCHET_NO_APT:-0}" != 1 ]; then
     apt-get update -qq
     apt-get install -y -qq --no-install-recommends "${missing[@]}"
   fi
+fi
+
+if [ "$job" = coverage ]; then
+  coverage
 fi
 
 # clang builds everything, fuzzers included (libFuzzer needs clang); gcc is covered by CI's

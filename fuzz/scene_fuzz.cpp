@@ -49,9 +49,9 @@ Scene decode(const std::uint8_t* data, std::size_t size) {
     return s;
 }
 
-/// The checks this target claims: no-tunnel (exact), speed (|v| within the kernel's bound per bounce),
-/// boundary and deterministic (a second World in lockstep gives the same events).
-constexpr Check k_checks[] = {Check::no_tunnel, Check::speed, Check::boundary, Check::deterministic};
+/// The checks this target claims: every check a scene log can name (checks.hpp defines each), as replay
+/// runs them, so the target and replay cannot disagree about what was asserted.
+constexpr std::span<const Check> k_checks = k_all_checks;
 
 }  // namespace
 }  // namespace ricochet::fuzz

@@ -43,10 +43,9 @@ Scene to_scene(const StaticCase& c) {
     return s;
 }
 
-/// The checks this target claims (checks.hpp defines each): the static tests the scene poses against the
-/// exact kernel's (oracle), the mirrored scene's answers (symmetry), and a point, a radius-0 circle, a
-/// zero-size rect and the wall classification agreeing with the sweep at the ball (boundary).
-constexpr Check k_checks[] = {Check::oracle, Check::symmetry, Check::boundary};
+/// The checks this target claims: every check a scene log can name (checks.hpp defines each), as replay
+/// runs them, so the target and replay cannot disagree about what was asserted.
+constexpr std::span<const Check> k_checks = k_all_checks;
 
 }  // namespace
 }  // namespace ricochet::fuzz

@@ -36,10 +36,9 @@ Scene to_scene(const SweepCase& c) {
     return s;
 }
 
-/// The checks this target claims: the printed path never tunnels (no-tunnel, exact); per frame the
-/// kernel's decisions are the exact kernel's (oracle); |v| stays within the kernel's bound per bounce
-/// (speed); the mirrored scene gives the mirrored events (symmetry).
-constexpr Check k_checks[] = {Check::no_tunnel, Check::oracle, Check::speed, Check::symmetry};
+/// The checks this target claims: every check a scene log can name (checks.hpp defines each), as replay
+/// runs them, so the target and replay cannot disagree about what was asserted.
+constexpr std::span<const Check> k_checks = k_all_checks;
 
 }  // namespace
 }  // namespace ricochet::fuzz

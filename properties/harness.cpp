@@ -182,6 +182,28 @@ std::string str(const Wall& w) { return fmt::format("wall {} -> {}", str(w.p0), 
 
 long long total_cases() { return g_total_cases.load(); }
 
+Statement checked(std::vector<Check> checks, std::function<void(const Scene&)> tags) {
+    return [checks = std::move(checks), tags = std::move(tags)](KernelId k, const Scene& s) -> std::optional<Failure> {
+        if (tags) tags(s);
+        CheckOptions options;
+        options.keep_events = false;
+        // Every wall tried: the generators' huge and far legs would make the grid walk millions of cells, and
+        // options change no bits (the broad-phase check, and BroadPhaseSameBits, see to that).
+        options.world.broad_phase = BroadPhase::none;
+        long hits = 0;
+        options.on_frame = [&](std::span<const Event> events) {
+            for (const Event& e : events) hits += e.kind == Event::Kind::hit;
+        };
+        const CheckedRun run = run_checked(s, k, s.frames, checks, options);
+        classify(run.error.has_value(), "a ball left the accepted range");
+        classify(s.frames > 0 && hits == 0, "no hit");
+        classify(hits > 0 && hits < 8, "1-7 hits");
+        classify(hits >= 8, "8 or more hits");
+        if (!run.failure) return std::nullopt;
+        return Failure{run.failure->check, run.failure->str()};
+    };
+}
+
 std::string kernel_param_name(const ::testing::TestParamInfo<KernelId>& info) {
     std::string n(kernel_name(info.param));
     std::replace(n.begin(), n.end(), '-', '_');

@@ -78,6 +78,11 @@ std::string str(const Wall& w);
 /// A failure of check c with a message.
 inline std::optional<Failure> fail(Check c, std::string message) { return Failure{c, std::move(message)}; }
 
+/// A property's statement made of checks: tags the scene (if tags is given), runs it under the kernel with
+/// exactly these checks (run_checked, checks.hpp) and reports the first failure the checker gives. A ball
+/// leaving the accepted range ends the run: a documented outcome, tagged, not a failure.
+Statement checked(std::vector<Check> checks, std::function<void(const Scene&)> tags = {});
+
 }  // namespace ricochet::props
 
 /// Declares the per-kernel GoogleTest suite SUITE: TEST_P(SUITE, Name) { run_property(make(), GetParam()); }.

@@ -1,90 +1,41 @@
-// Ground truth for the properties, computed independently of the kernels under test: exact signs by a
-// floating-point filter with a GMP fallback, exact point-in-region, exact speed bounds, and the exact
-// transformations (mirror, quarter turn, translation) the symmetry properties apply to whole scenes.
+// The exact answers the generators aim with, under the names they use: the ground truth itself lives
+// in core (ricochet/truth.hpp), where the checks use it.
 #pragma once
 
-#include <span>
-#include <vector>
-
-#include "ricochet/kernel.hpp"
-
-#include "ricochet/scene.hpp"
-#include "ricochet/shapes.hpp"
+#include "ricochet/truth.hpp"
 
 namespace ricochet::props {
 
-/// sign((b − a) × (c − a)), exact for every finite double (own filter, GMP when it cannot decide).
-int orient_oracle(Vec2 a, Vec2 b, Vec2 c);
-/// sign of BC = n·(p − P0), n = (e_y, −e_x): +1 Outside, −1 Inside, 0 On; equals −orient(P0, P1, p).
-int side_oracle(Vec2 p, const Wall& w);
-/// True if p lies on w's closed segment (on its line and within its bounding box), exactly.
-bool on_closed_segment_oracle(Vec2 p, const Wall& w);
-/// Where p lies against the region the walls enclose (even-odd rule, exact): +1 strictly inside, 0 on a
-/// wall, −1 strictly outside. Wall directions do not matter.
-int locate(Vec2 p, std::span<const Wall> walls);
-
-/// sign(|p − c|² − r²), exactly (GMP): −1 inside, 0 on, +1 outside.
-int circle_side_oracle(Vec2 p, const Circle& c);
-/// |p − c|² ≤ r², exactly (GMP).
-bool point_in_circle_oracle(Vec2 p, const Circle& c);
-/// |cA − cB|² ≤ (rA + rB)², exactly (GMP).
-bool circles_overlap_oracle(const Circle& a, const Circle& b);
-/// left ≤ x ≤ right and bottom ≤ y ≤ top (comparisons of doubles are exact).
-bool point_in_rect_oracle(Vec2 p, const Rect& r);
-/// Closed rectangles intersect.
-bool rects_overlap_oracle(const Rect& a, const Rect& b);
-
-/// (1 − b)^m·|v| − m·a ≤ |w| ≤ (1 + b)^m·|v| + m·a (m bounces, relative bound b, absolute bound a per
-/// bounce), decided exactly up to a 2^−200 relative bracket of |v| (GMP).
-bool speed_within(Vec2 v, Vec2 w, int m, double b, double a);
-/// True if a + b is computed exactly in double.
-bool sum_exact(double a, double b);
-/// 2D cross product's sign of two directions, exactly: sign(a × b).
-int cross_sign(Vec2 a, Vec2 b);
-/// sign(a · b), exactly.
-int dot_sign(Vec2 a, Vec2 b);
-
-/// The exact decision for the leg Bs → Be against w, by kernel.hpp's conventions: degenerate (zero-length
-/// wall or Bs = Be), both inside, both outside, parallel (both on the line), leaving (Bs on the line),
-/// before P0 / past P1 (the leg's line meets the wall's line outside the closed segment), else a hit.
-Miss expected_miss(Vec2 bs, Vec2 be, const Wall& w);
-
-/// The first wall the leg Bs → Be hits (the earliest exact crossing, the lowest index on a tie), or −1.
-long first_hit_oracle(Vec2 bs, Vec2 be, std::span<const Wall> walls);
-
-/// kernel.hpp's no-tunnelling definition, followed independently of ricochet::TunnelChecker: a piece
-/// from one open side to the other through the closed segment, or arriving on the closed segment from
-/// one side and leaving to the other, tunnels; after moving along the line either side is fine.
-class PathOracle {
-public:
-    /// Starts every ball at its initial position.
-    PathOracle(std::span<const Wall> walls, std::span<const Ball> balls);
-    /// Ball i moves on to next; returns the lowest wall the piece tunnels through, or −1.
-    long advance(std::size_t i, Vec2 next);
-
-private:
-    struct State {
-        int last = 0;          // side of the last point off the line, 0 after moving along it
-        bool touched = false;  // arrived on the closed segment since
-    };
-    std::vector<Wall> walls_;
-    std::vector<Vec2> at_;
-    std::vector<State> st_;
-};
-
+/// truth::orient.
+inline int orient_oracle(Vec2 a, Vec2 b, Vec2 c) { return truth::orient(a, b, c); }
+/// truth::side.
+inline int side_oracle(Vec2 p, const Wall& w) { return truth::side(p, w); }
+/// truth::on_closed_segment.
+inline bool on_closed_segment_oracle(Vec2 p, const Wall& w) { return truth::on_closed_segment(p, w); }
+/// truth::locate.
+inline int locate(Vec2 p, std::span<const Wall> walls) { return truth::locate(p, walls); }
+/// truth::circle_side.
+inline int circle_side_oracle(Vec2 p, const Circle& c) { return truth::circle_side(p, c); }
+/// truth::point_in_circle.
+inline bool point_in_circle_oracle(Vec2 p, const Circle& c) { return truth::point_in_circle(p, c); }
+/// truth::circles_overlap.
+inline bool circles_overlap_oracle(const Circle& a, const Circle& b) { return truth::circles_overlap(a, b); }
+/// truth::point_in_rect.
+inline bool point_in_rect_oracle(Vec2 p, const Rect& r) { return truth::point_in_rect(p, r); }
+/// truth::rects_overlap.
+inline bool rects_overlap_oracle(const Rect& a, const Rect& b) { return truth::rects_overlap(a, b); }
+/// truth::sum_exact.
+inline bool sum_exact(double a, double b) { return truth::sum_exact(a, b); }
+/// truth::cross_sign.
+inline int cross_sign(Vec2 a, Vec2 b) { return truth::cross_sign(a, b); }
+/// truth::dot_sign.
+inline int dot_sign(Vec2 a, Vec2 b) { return truth::dot_sign(a, b); }
+/// truth::leg_miss.
+inline Miss expected_miss(Vec2 bs, Vec2 be, const Wall& w) { return truth::leg_miss(bs, be, w); }
 /// x ↦ −x (exact).
-Vec2 mirror(Vec2 p);
+inline Vec2 mirror(Vec2 p) { return {-p.x, p.y}; }
 /// A quarter turn counter-clockwise, (x, y) ↦ (−y, x) (exact).
-Vec2 rotate90(Vec2 p);
-/// The scene with every point, velocity and shape mapped by f (exact maps only); walls keep their direction,
-/// rectangles are re-normalized so that left ≤ right and bottom ≤ top.
-Scene transform(const Scene& s, Vec2 (*f)(Vec2));
-/// The scene translated by t (walls, balls, circles and rects; velocities unchanged). Rounded if t is not
-/// exact for some coordinate; use translation_exact first.
-Scene translate(const Scene& s, Vec2 t);
-/// True if every coordinate of s, and every Bs + v, moves by t without rounding.
-bool translation_exact(const Scene& s, Vec2 t);
-
+inline Vec2 rotate90(Vec2 p) { return {-p.y, p.x}; }
 /// a == b componentwise (−0 equals +0).
 inline bool same_value(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
 

@@ -36,12 +36,12 @@ inline void classify_legs(const Scene& s) {
         inexact_be |= !sum_exact(b.pos.x, b.vel.x) || !sum_exact(b.pos.y, b.vel.y);
         for (const Wall& w : s.walls) {
             if (w.p0 == w.p1) continue;
-            tag(miss_name(expected_miss(b.pos, be, w)));
-            const bool on = side_oracle(be, w) == 0;
+            tag(miss_name(truth::leg_miss(b.pos, be, w)));
+            const bool on = truth::side(be, w) == 0;
             on_line |= on;
-            on_segment |= on && on_closed_segment_oracle(be, w);
+            on_segment |= on && truth::on_closed_segment(be, w);
             at_end |= be == w.p0 || be == w.p1;
-            starts_on |= side_oracle(b.pos, w) == 0;
+            starts_on |= truth::side(b.pos, w) == 0;
             parallel |= b.vel != Vec2{} && cross_sign(b.vel, w.p1 - w.p0) == 0;
         }
     }

@@ -1,16 +1,10 @@
 // The names of the checks.
 #include "ricochet/check.hpp"
 
-#include <array>
 #include <optional>
 #include <string_view>
 
 namespace ricochet {
-
-namespace {
-constexpr std::array<Check, 6> k_all_checks = {Check::no_tunnel, Check::symmetry,      Check::boundary,
-                                               Check::speed,     Check::deterministic, Check::oracle};
-}  // namespace
 
 std::string_view check_name(Check c) {
     switch (c) {
@@ -20,6 +14,12 @@ std::string_view check_name(Check c) {
         case Check::speed: return "speed";
         case Check::deterministic: return "deterministic";
         case Check::oracle: return "oracle";
+        case Check::swap: return "swap";
+        case Check::translation: return "translation";
+        case Check::broad_phase: return "broad-phase";
+        case Check::round_trip: return "round-trip";
+        case Check::no_escape: return "no-escape";
+        case Check::bounce_side: return "bounce-side";
     }
     return "?";
 }

@@ -1,232 +1,410 @@
-// The exact kernel: GMP rationals for a whole frame with its bounces. The normal n = (e_y, −e_x) is
-// never normalized, so every quantity stays rational. The frame's points are rounded to the nearest
-// doubles at the end, and each rounded piece is checked as the robust kernel checks its own
-// (path.hpp), so that rounding never carries the printed path across a wall.
+// The exact kernel: a whole frame with its bounces computed exactly, its points then rounded to the
+// nearest doubles and each rounded piece checked (printed_path.hpp), so rounding never carries the
+// printed path across a wall. This kernel is independent on purpose: it is the oracle the robust kernel
+// is checked against, so it shares none of robust's code (N-version); do not merge the two.
+//
+// Why it is written this way. Every double is an integer times a power of two, so every decision (the
+// sign of BC, parallel, tests 4 and 5, touching, which wall first, the corner rules) is the sign of a
+// polynomial in the inputs. On doubles a floating-point filter decides almost every sign, exact integers
+// the rest (filter.hpp). In a frame all inputs are scaled to integers at one common scale 2^k
+// (scaled.hpp); the normal n = (e_y, −e_x) is never normalized, so each hit point, t_i and v' is a
+// quotient of integers, carried as numerators over one common positive denominator, reduced only
+// once per bounce (one gcd, not one per operation as mpq does): fractions are compared by
+// cross-multiplication. The frame's leg i is the line
+// p(t) = A + t·dir through its start (frame time now) and its end Be (t = 1), which keeps denominators
+// growing by a sum of sizes per bounce, not a product.
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include <gmpxx.h>
 
+#include "exact/filter.hpp"
+#include "exact/int.hpp"
+#include "exact/printed_path.hpp"
+#include "exact/round.hpp"
+#include "exact/scaled.hpp"
 #include "kernel_impl.hpp"
-#include "path.hpp"
-#include "ricochet/predicates.hpp"
+#include "ricochet/step_trace.hpp"
 
 namespace ricochet::exact_kernel {
 namespace {
 
-using Q = mpq_class;
+using Z = num::Int;
+using ZV = Vec2T<Z>;
 
-struct QV {
-    Q x, y;
+/// A point or vector p/d at the frame's scale, d > 0.
+struct ZFrac {
+    ZV p;
+    Z d;
 };
-QV qv(Vec2 p) { return {Q(p.x), Q(p.y)}; }
-QV operator+(const QV& a, const QV& b) { return {a.x + b.x, a.y + b.y}; }
-QV operator-(const QV& a, const QV& b) { return {a.x - b.x, a.y - b.y}; }
-QV operator*(const Q& k, const QV& a) { return {k * a.x, k * a.y}; }
-Q dot(const QV& a, const QV& b) { return a.x * b.x + a.y * b.y; }
-Q cross(const QV& a, const QV& b) { return a.x * b.y - a.y * b.x; }
-bool is_zero(const QV& a) { return sgn(a.x) == 0 && sgn(a.y) == 0; }
 
-struct QWall {
-    QV p0, p1;
-    QV e() const { return p1 - p0; }
-    QV n() const { return {p1.y - p0.y, p0.x - p1.x}; }  // (e_y, −e_x)
+/// A wall at the frame's scale: its ends, n = (e_y, −e_x) and n·n.
+struct ZWall {
+    ZV p0, p1, n;
+    Z nn;
 };
-QWall qw(const Wall& w) { return {qv(w.p0), qv(w.p1)}; }
 
-/// BC up to the positive factor 1/|n|: n·(p − P0).
-Q bc(const QV& p, const QWall& w) { return dot(w.n(), p - w.p0); }
-/// sign((b − a) × (c − a))
-int orient(const QV& a, const QV& b, const QV& c) { return sgn(cross(b - a, c - a)); }
-
-/// The double nearest to x, ties to even (mpq's get_d truncates).
-double nearest(const Q& x) {
-    const double d = x.get_d();
-    const double away = std::nextafter(d, sgn(x) >= 0 ? INFINITY : -INFINITY);
-    if (!std::isfinite(away)) return d;
-    const Q ed = abs(x - Q(d));
-    const Q ea = abs(Q(away) - x);
-    if (ea < ed) return away;
-    if (ea == ed && (std::bit_cast<std::uint64_t>(away) & 1u) == 0) return away;
-    return d;
+ZV scaled(Vec2 p, int k) {
+    ZV out;
+    num::scaled_big(out.x.v, p.x, k);
+    num::scaled_big(out.y.v, p.y, k);
+    return out;
 }
-Vec2 nearest(const QV& p) { return {nearest(p.x), nearest(p.y)}; }
+ZWall scaled(const Wall& w, int k) {
+    ZWall z{scaled(w.p0, k), scaled(w.p1, k), {}, {}};
+    z.n = perp(z.p1 - z.p0);
+    z.nn = dot(z.n, z.n);
+    return z;
+}
+bool is_zero(const ZV& a) { return sgn(a.x) == 0 && sgn(a.y) == 0; }
+Vec2 round_vec(const ZV& p, const Z& d, int k) {
+    return {num::round_quotient(p.x.v, d.v, k), num::round_quotient(p.y.v, d.v, k)};
+}
 
-/// The decision for the leg q → b against w, and the exact leg fraction s of a hit.
-struct Leg {
-    Miss miss;
-    Q s;
-};
+/// sign of BC(p/d) = n·(p/d − P0), d > 0.
+int bc_sign(const ZV& p, const Z& d, const ZWall& w) { return sgn(dot(w.n, p - d * w.p0)); }
 
-Leg test_leg(const QV& q, const QV& b, const QWall& w) {
+/// The decision for the leg q → b against w (doubles): the lecture's tests in order, exact signs.
+Miss leg_miss(Vec2 q, Vec2 b, const Wall& w) {
     // Degenerate: a zero-length wall has no normal, a zero-length leg no motion.
-    if (is_zero(w.e()) || is_zero(b - q)) return {Miss::degenerate, 0};
-    const Q bq = bc(q, w), bb = bc(b, w);
-    const int sq = sgn(bq), sb = sgn(bb);
-    if (sq < 0 && sb < 0) return {Miss::both_inside, 0};
-    if (sq > 0 && sb > 0) return {Miss::both_outside, 0};
-    if (sq == 0 && sb == 0) return {Miss::parallel, 0};
-    if (sq == 0) return {Miss::leaving, 0};
+    if (w.p0 == w.p1 || q == b) return Miss::degenerate;
+    const int sq = printed::side(q, w), sb = printed::side(b, w);
+    if (sq < 0 && sb < 0) return Miss::both_inside;
+    if (sq > 0 && sb > 0) return Miss::both_outside;
+    if (sq == 0 && sb == 0) return Miss::parallel;
+    if (sq == 0) return Miss::leaving;
     // X = P0 + u·e with u = −o0/(d × e), 1 − u = o1/(d × e), sign(d × e) = −sq
-    if (orient(q, b, w.p0) == -sq) return {Miss::before_p0, 0};
-    if (orient(q, b, w.p1) == sq) return {Miss::past_p1, 0};
-    // n·(q + s(b − q) − P0) = 0  ⇒  s = BC(q)/(BC(q) − BC(b))
-    return {Miss::none, bq / (bq - bb)};
+    if (printed::orient(q, b, w.p0) == -sq) return Miss::before_p0;
+    if (printed::orient(q, b, w.p1) == sq) return Miss::past_p1;
+    return Miss::none;
 }
 
-QV reflect(const QV& v, const QWall& w) {
-    // v' = v − 2(v·n)/(n·n)·n, rational because n is not normalized
-    const QV n = w.n();
-    const Q nn = dot(n, n);
-    if (sgn(nn) == 0) return v;
-    return v - Q(2 * dot(v, n) / nn) * n;
+/// The same decision for a later leg, q = Q/D, b = B/db, the leg's direction dir (b − q = a positive
+/// multiple of dir); the leg is never zero-length there (v ≠ 0 and rest > 0).
+Miss leg_miss(const ZFrac& q, const ZFrac& b, const ZV& dir, const ZWall& w) {
+    // Degenerate: a zero-length wall has no normal.
+    if (is_zero(w.n)) return Miss::degenerate;
+    const int sq = bc_sign(q.p, q.d, w), sb = bc_sign(b.p, b.d, w);
+    if (sq < 0 && sb < 0) return Miss::both_inside;
+    if (sq > 0 && sb > 0) return Miss::both_outside;
+    if (sq == 0 && sb == 0) return Miss::parallel;
+    if (sq == 0) return Miss::leaving;
+    // orient(q, b, P) = sign((b − q) × (P − q)) = sign(dir × (P·D − Q))
+    if (sgn(cross(dir, q.d * w.p0 - q.p)) == -sq) return Miss::before_p0;
+    if (sgn(cross(dir, q.d * w.p1 - q.p)) == sq) return Miss::past_p1;
+    return Miss::none;
 }
 
-/// p lies on w's line and within its closed segment (on the line, the segment is its bounding box).
-bool on_segment(const QV& p, const QWall& w) {
-    if (sgn(bc(p, w)) != 0) return false;
-    const auto within = [](const Q& v, const Q& a, const Q& b) { return (a <= v && v <= b) || (b <= v && v <= a); };
-    return within(p.x, w.p0.x, w.p1.x) && within(p.y, w.p0.y, w.p1.y);
+/// A hit on leg p(t) = A + t·dir (A = Ā/dA, dir = Vdir/ddir): n·(A + t·dir − P0) = 0 gives
+/// t = n·(P0·dA − Ā)·ddir / (dA·n·Vdir) = nt·ddir/(dA·nd), nd > 0 after fixing signs.
+struct Crossing {
+    Z nt, nd;
+};
+Crossing crossing(const ZFrac& a, const ZV& dir, const ZWall& w) {
+    Crossing c{dot(w.n, a.d * w.p0 - a.p), dot(w.n, dir)};
+    if (sgn(c.nd) < 0) {
+        c.nt = -c.nt;
+        c.nd = -c.nd;
+    }
+    return c;
+}
+/// sign(t1 − t2) for two crossings of one leg: the common factor ddir/dA is positive.
+int compare(const Crossing& a, const Crossing& b) { return sgn(a.nt * b.nd - b.nt * a.nd); }
+
+/// v' = v − 2(v·n)/(n·n)·n for v = V/dv: V' = V·(n·n) − 2(V·n)·n over dv·(n·n).
+ZFrac reflect(const ZFrac& v, const ZWall& w) {
+    // Degenerate: a zero-length wall has no normal; v is unchanged.
+    if (sgn(w.nn) == 0) return v;
+    return {v.p * w.nn - (Z(2) * dot(v.p, w.n)) * w.n, v.d * w.nn};
 }
 
-struct QContact {
+/// p/d lies on w's line and within its closed segment (on the line, the segment is its bounding box).
+bool on_segment(const ZFrac& p, const ZWall& w) {
+    if (bc_sign(p.p, p.d, w) != 0) return false;
+    const auto within = [&](const Z& v, const Z& a, const Z& b) {
+        const Z sa = p.d * a, sb = p.d * b;
+        return (sa <= v && v <= sb) || (sb <= v && v <= sa);
+    };
+    return within(p.p.x, w.p0.x, w.p1.x) && within(p.p.y, w.p0.y, w.p1.y);
+}
+
+/// Divides p/d (and extra, over the same d) by the gcd of all its integers. Values are unchanged; done
+/// once per bounce, it keeps sizes from growing with the number of bounces as the products above do.
+void reduce(ZFrac& f, Z* extra = nullptr) {
+    mpz_class g;
+    mpz_gcd(g.get_mpz_t(), f.p.x.v.get_mpz_t(), f.p.y.v.get_mpz_t());
+    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), f.d.v.get_mpz_t());
+    if (extra != nullptr) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), extra->v.get_mpz_t());
+    if (g == 1) return;
+    for (Z* z : {&f.p.x, &f.p.y, &f.d, extra})
+        if (z != nullptr) mpz_divexact(z->v.get_mpz_t(), z->v.get_mpz_t(), g.get_mpz_t());
+}
+
+struct ZContact {
     std::uint32_t wall;
     int side;
 };
 
 }  // namespace
 
-Side classify(Vec2 p, const Wall& w) { return side_from_sign(sgn(bc(qv(p), qw(w)))); }
+Side classify(Vec2 p, const Wall& w) { return side_from_sign(printed::side(p, w)); }
 
-bool point_in_circle(Vec2 p, const Circle& c) {
-    const QV d = qv(p) - qv(c.c);
-    const Q r(c.r);
-    return dot(d, d) <= r * r;
-}
+bool point_in_circle(Vec2 p, const Circle& c) { return num::circle_sign(p.x, c.c.x, p.y, c.c.y, c.r, 0.0) <= 0; }
 
 bool circles_overlap(const Circle& a, const Circle& b) {
-    const QV d = qv(a.c) - qv(b.c);
-    const Q r = Q(a.r) + Q(b.r);
-    return dot(d, d) <= r * r;
+    return num::circle_sign(a.c.x, b.c.x, a.c.y, b.c.y, a.r, b.r) <= 0;
 }
+
+namespace {
+
+/// Scratch integers for sweep() and reflect(): one leg needs sixteen, none allocated in the steady state.
+struct LegScratch {
+    mpz_t z[16];
+    LegScratch() {
+        for (mpz_t& x : z) mpz_init(x);
+    }
+    ~LegScratch() {
+        for (mpz_t& x : z) mpz_clear(x);
+    }
+    LegScratch(const LegScratch&) = delete;
+    LegScratch& operator=(const LegScratch&) = delete;
+};
+LegScratch& leg_scratch() {
+    thread_local LegScratch s;
+    return s;
+}
+void set_scaled(mpz_t out, double x, int k) {
+    const num::Dyad d = num::split(x);
+    mpz_set_si(out, static_cast<long>(d.m));
+    if (d.m != 0) mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(d.e - k));
+}
+/// out = a·b + c·d
+void dot2(mpz_t out, mpz_srcptr a, mpz_srcptr b, mpz_srcptr c, mpz_srcptr d) {
+    mpz_mul(out, a, b);
+    mpz_addmul(out, c, d);
+}
+
+}  // namespace
 
 Sweep sweep(Vec2 bs, Vec2 v, const Wall& w) {
-    const QV q = qv(bs), b = qv(bs + v);
-    const Leg leg = test_leg(q, b, qw(w));
-    if (leg.miss != Miss::none) return {leg.miss, 0.0, {}};
-    return {Miss::none, nearest(leg.s), nearest(q + leg.s * (b - q))};
+    const Vec2 be = bs + v;
+    const Miss miss = leg_miss(bs, be, w);
+    if (miss != Miss::none) return {miss, 0.0, {}};
+    num::Scale sc;
+    for (double x : {bs.x, bs.y, be.x, be.y, w.p0.x, w.p0.y, w.p1.x, w.p1.y}) sc.add(x);
+    const int k = sc.exponent();
+    mpz_t* z = leg_scratch().z;
+    mpz_ptr qx = z[0], qy = z[1], dx = z[2], dy = z[3], p0x = z[4], p0y = z[5], nx = z[6], ny = z[7];
+    mpz_ptr ax = z[8], ay = z[9], nt = z[10], nd = z[11], bx = z[12], by = z[13];
+    set_scaled(qx, bs.x, k);
+    set_scaled(qy, bs.y, k);
+    set_scaled(dx, be.x, k);
+    set_scaled(dy, be.y, k);
+    mpz_sub(dx, dx, qx);  // dir = Be − Bs
+    mpz_sub(dy, dy, qy);
+    set_scaled(p0x, w.p0.x, k);
+    set_scaled(p0y, w.p0.y, k);
+    set_scaled(nx, w.p1.y, k);  // n = (e_y, −e_x) = (P1y − P0y, P0x − P1x)
+    mpz_sub(nx, nx, p0y);
+    set_scaled(ny, w.p1.x, k);
+    mpz_sub(ny, p0x, ny);
+    // t_i = n·(P0 − Bs)/(n·(Be − Bs)) = nt/nd, nd > 0 after fixing signs
+    mpz_sub(ax, p0x, qx);
+    mpz_sub(ay, p0y, qy);
+    dot2(nt, nx, ax, ny, ay);
+    dot2(nd, nx, dx, ny, dy);
+    if (mpz_sgn(nd) < 0) {
+        mpz_neg(nt, nt);
+        mpz_neg(nd, nd);
+    }
+    // B_i = Bs + t_i·(Be − Bs) = (Bs·nd + nt·(Be − Bs))/nd
+    dot2(bx, qx, nd, nt, dx);
+    dot2(by, qy, nd, nt, dy);
+    return {Miss::none, num::round_quotient(nt, nd, 0),
+            {num::round_quotient(bx, nd, k), num::round_quotient(by, nd, k)}};
 }
 
-Vec2 reflect(Vec2 v, const Wall& w) { return nearest(reflect(qv(v), qw(w))); }
+Vec2 reflect(Vec2 v, const Wall& w) {
+    num::Scale sc;
+    for (double x : {v.x, v.y, w.p0.x, w.p0.y, w.p1.x, w.p1.y}) sc.add(x);
+    const int k = sc.exponent();
+    mpz_t* z = leg_scratch().z;
+    mpz_ptr vx = z[0], vy = z[1], nx = z[2], ny = z[3], t = z[4], nn = z[5], vn = z[6], rx = z[7], ry = z[8];
+    set_scaled(vx, v.x, k);
+    set_scaled(vy, v.y, k);
+    set_scaled(nx, w.p1.y, k);  // n = (P1y − P0y, P0x − P1x)
+    set_scaled(t, w.p0.y, k);
+    mpz_sub(nx, nx, t);
+    set_scaled(ny, w.p0.x, k);
+    set_scaled(t, w.p1.x, k);
+    mpz_sub(ny, ny, t);
+    dot2(nn, nx, nx, ny, ny);
+    // Degenerate: a zero-length wall has no normal; v is unchanged (printed as the exact kernel prints).
+    if (mpz_sgn(nn) == 0) {
+        mpz_set_ui(nn, 1);
+        mpz_set_ui(nx, 0);
+        mpz_set_ui(ny, 0);
+    }
+    // v' = v − 2(v·n)/(n·n)·n = (v·(n·n) − 2(v·n)·n)/(n·n)
+    dot2(vn, vx, nx, vy, ny);
+    mpz_mul_2exp(vn, vn, 1);
+    mpz_mul(rx, vx, nn);
+    mpz_submul(rx, vn, nx);
+    mpz_mul(ry, vy, nn);
+    mpz_submul(ry, vn, ny);
+    return {num::round_quotient(rx, nn, k), num::round_quotient(ry, nn, k)};
+}
 
 FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
                       StepScratch& scratch) {
-    std::vector<QWall> qwalls;
-    qwalls.reserve(walls.size());
-    for (const Wall& w : walls) qwalls.push_back(qw(w));
-
-    // The rational path: hit points and walls, then the end state.
-    struct QHit {
-        std::uint32_t wall;
-        Q t;
-        QV point;
+    // The legs are exact fractions, not doubles: a trace gets the reflections only.
+    if (scratch.trace != nullptr) scratch.trace->legs_traced = false;
+    // The frame's first leg ends at Be = Bs + v as C++ rounds it (kernel.hpp).
+    const Vec2 be = ball.pos + ball.vel;
+    num::Scale sc;
+    for (double x : {ball.pos.x, ball.pos.y, ball.vel.x, ball.vel.y, be.x, be.y}) sc.add(x);
+    for (const Wall& w : walls)
+        for (double x : {w.p0.x, w.p0.y, w.p1.x, w.p1.y}) sc.add(x);
+    const int k = sc.exponent();
+    // Walls are scaled when first needed: most legs are decided on doubles.
+    std::vector<std::optional<ZWall>> zwalls(walls.size());
+    const auto zw = [&](std::uint32_t i) -> const ZWall& {
+        if (!zwalls[i]) zwalls[i] = scaled(walls[i], k);
+        return *zwalls[i];
     };
-    std::vector<QHit> path;
-    QV q = qv(ball.pos), v = qv(ball.vel);
+
+    // The exact path: hit points (over their frame times' common denominator) and walls, then the end.
+    struct ZHit {
+        std::uint32_t wall;
+        Z now;
+        ZFrac point;
+    };
+    std::vector<ZHit> path;
+    ZFrac q{scaled(ball.pos, k), 1}, v{scaled(ball.vel, k), 1};
+    Z now = 0;  // the frame time of q is now/q.d
     int last_from = 0;  // the side the last bounce met its wall from
-    Q rest = 1, now = 0;
-    std::vector<QContact> contacts;
-    for (std::uint8_t k = 0; k < memory.count; ++k) contacts.push_back({memory.contacts[k].wall, memory.contacts[k].side});
+    std::vector<ZContact> contacts;
+    for (std::uint8_t c = 0; c < memory.count; ++c) contacts.push_back({memory.contacts[c].wall, memory.contacts[c].side});
     FrameStatus status = FrameStatus::ok;
     for (int bounce = 0;; ++bounce) {
-        if (is_zero(v) || sgn(rest) == 0) break;
+        // rest = 1 − now = 0: the frame is over.
+        if (is_zero(v.p) || now == q.d) break;
         if (bounce == k_max_bounces) {
             status = FrameStatus::bounce_limit;
             break;
         }
-        // The frame's first leg ends at Be = Bs + v as C++ rounds it (kernel.hpp), as robust's and sweep()'s do.
-        const QV b = bounce == 0 ? qv(ball.pos + ball.vel) : q + rest * v;
+        const bool first_leg = bounce == 0;
+        // The leg p(t) = A + t·dir: first Bs + t·(Be − Bs); later A = q − now·v, dir = v, so that p(now) = q
+        // and its end b = p(1) = A + v = (Q·dv − now·V + D·V)/(D·dv).
+        ZFrac a, b;
+        ZV dir;
+        if (first_leg) {
+            a = q;
+            b = {scaled(be, k), 1};
+            dir = b.p - a.p;
+        } else {
+            a = {q.p * v.d - now * v.p, q.d * v.d};
+            b = {a.p + q.d * v.p, a.d};
+            dir = v.p;
+        }
         // A leg that would leave a contact wall to its far side bounces off that wall instead.
-        const auto blocked = std::find_if(contacts.begin(), contacts.end(),
-                                          [&](const QContact& c) { return sgn(bc(b, qwalls[c.wall])) == -c.side; });
+        const auto blocked = std::find_if(contacts.begin(), contacts.end(), [&](const ZContact& c) {
+            const int sb = first_leg ? printed::side(be, walls[c.wall]) : bc_sign(b.p, b.d, zw(c.wall));
+            return sb == -c.side;
+        });
         if (blocked != contacts.end()) {
-            v = reflect(v, qwalls[blocked->wall]);
+            if (scratch.trace != nullptr) ++scratch.trace->reflections;
+            v = reflect(v, zw(blocked->wall));
+            reduce(v);
             continue;
         }
-        std::optional<Q> first;
+        std::optional<Crossing> first;
         std::vector<std::uint32_t> at_first;
-        for (std::uint32_t i = 0; i < qwalls.size(); ++i) {
-            Leg leg = test_leg(q, b, qwalls[i]);
-            if (leg.miss != Miss::none) continue;
-            if (!first || leg.s < *first) {
-                first = std::move(leg.s);
+        for (std::uint32_t i = 0; i < walls.size(); ++i) {
+            const Miss miss = first_leg ? leg_miss(ball.pos, be, walls[i]) : leg_miss(q, b, dir, zw(i));
+            if (miss != Miss::none) continue;
+            Crossing c = crossing(a, dir, zw(i));
+            const int order = first ? compare(c, *first) : -1;
+            if (order < 0) {
+                first = std::move(c);
                 at_first.assign(1, i);
-            } else if (leg.s == *first) {
+            } else if (order == 0) {
                 at_first.push_back(i);
             }
         }
         if (!first) {
             // A contact stays while the ball slides along its wall's line on the closed segment.
-            std::erase_if(contacts, [&](const QContact& c) { return !on_segment(b, qwalls[c.wall]); });
-            q = b;
+            std::erase_if(contacts, [&](const ZContact& c) {
+                if (first_leg) return printed::side(be, walls[c.wall]) != 0 || !printed::on_closed_segment(be, walls[c.wall]);
+                return !on_segment(b, zw(c.wall));
+            });
+            q = std::move(b);
             break;
         }
-        const Q s = *first;
-        const QV x = q + s * (b - q);
-        now += s * rest;
-        path.push_back({at_first.front(), now, x});
+        // B_i = A + t·dir = (Ā·nd + nt·Vdir)/(dA·nd); its frame time t = nt·ddir/(dA·nd), ddir = v.d (1 first).
+        const ZFrac x{a.p * first->nd + first->nt * dir, a.d * first->nd};
+        Z x_now = first_leg ? first->nt : Z(first->nt * v.d);
+        path.push_back({at_first.front(), x_now, x});
         // Every wall met at x was met from q's side; bounce off the first, then off the others
         // while v' points through them; if one is still crossed, go straight back.
-        std::vector<QContact> arrived;
-        for (std::uint32_t i : at_first) arrived.push_back({i, sgn(bc(q, qwalls[i]))});
+        std::vector<ZContact> arrived;
+        for (std::uint32_t i : at_first)
+            arrived.push_back({i, first_leg ? printed::side(ball.pos, walls[i]) : bc_sign(q.p, q.d, zw(i))});
         last_from = arrived.front().side;
         // Contacts the ball slid along to get here are kept, with the side it first came from.
-        for (const QContact& c : contacts)
-            if (on_segment(x, qwalls[c.wall]) &&
-                std::none_of(arrived.begin(), arrived.end(), [&](const QContact& a) { return a.wall == c.wall; }))
+        for (const ZContact& c : contacts)
+            if (on_segment(x, zw(c.wall)) &&
+                std::none_of(arrived.begin(), arrived.end(), [&](const ZContact& r) { return r.wall == c.wall; }))
                 arrived.push_back(c);
-        QV w = reflect(v, qwalls[at_first.front()]);
-        for (const QContact& c : arrived)
-            if (sgn(dot(w, qwalls[c.wall].n())) == -c.side) w = reflect(w, qwalls[c.wall]);
-        for (const QContact& c : arrived)
-            if (sgn(dot(w, qwalls[c.wall].n())) == -c.side) w = {-v.x, -v.y};
-        v = w;
-        rest *= 1 - s;
+        ZFrac w = reflect(v, zw(at_first.front()));
+        int reflections = 1;
+        for (const ZContact& c : arrived)
+            if (sgn(dot(w.p, zw(c.wall).n)) == -c.side) {
+                w = reflect(w, zw(c.wall));
+                ++reflections;
+            }
+        if (scratch.trace != nullptr) scratch.trace->reflections += reflections;
+        for (const ZContact& c : arrived)
+            if (sgn(dot(w.p, zw(c.wall).n)) == -c.side) w = {-v.p, v.d};
+        v = std::move(w);
+        reduce(v);
         q = x;
+        now = std::move(x_now);
+        reduce(q, &now);
         contacts = std::move(arrived);
     }
 
-    // The printed path: each rational point rounded, each rounded piece checked.
+    // The printed path: each exact point rounded, each rounded piece checked.
     Vec2 p = ball.pos;
     BallMemory mem = memory;
     // The last wall bounced off, kept on its side until the next bounce (BallMemory).
     std::uint32_t bounced_wall = memory.bounced_wall;
-    detail::Keep bounced{memory.bounced_from != 0 ? &walls[memory.bounced_wall] : nullptr, memory.bounced_from};
-    auto visit = [&](const QV& target, const Wall* hit) {
-        const detail::Keep met{hit, hit != nullptr ? exact::side(p, *hit) : 0};
-        const Vec2 x = detail::make_safe(p, nearest(target), mem, walls, nullptr, scratch, met, bounced);
+    printed::Kept bounced{memory.bounced_from != 0 ? &walls[memory.bounced_wall] : nullptr, memory.bounced_from};
+    const auto visit = [&](const ZFrac& target, const Wall* hit) {
+        const printed::Kept met{hit, hit != nullptr ? printed::side(p, *hit) : 0};
+        const Vec2 x = printed::make_safe(p, round_vec(target.p, target.d, k), mem, walls, met, bounced);
         if (hit != nullptr) bounced = met;
         BallMemory arrived;
-        detail::arrive(p, x, mem, walls, nullptr, scratch, arrived);
+        printed::arrive(p, x, mem, walls, arrived);
         mem = arrived;
         p = x;
     };
-    for (const QHit& h : path) {
+    for (const ZHit& h : path) {
         visit(h.point, &walls[h.wall]);
         bounced_wall = h.wall;
-        hits.push_back({h.wall, nearest(h.t), p});
+        hits.push_back({h.wall, num::round_quotient(h.now.v, h.point.d.v, 0), p});
     }
     visit(q, nullptr);
     // v' points strictly back to the side the last bounce came from; rounding a grazing v' can lose that,
     // so the rounded velocity is moved by ulps towards that side until it holds again.
-    Vec2 vel = nearest(v);
+    Vec2 vel = round_vec(v.p, v.d, k);
     if (!path.empty() && last_from != 0) {
         const Wall& w = walls[path.back().wall];
         const Vec2 n = normal(w);
-        for (int i = 0; i < 64 && exact::direction_side(vel, w) != last_from; ++i)
+        for (int i = 0; i < 64 && printed::direction_side(vel, w) != last_from; ++i)
             vel = {n.x == 0 ? vel.x : std::nextafter(vel.x, n.x * last_from > 0 ? INFINITY : -INFINITY),
                    n.y == 0 ? vel.y : std::nextafter(vel.y, n.y * last_from > 0 ? INFINITY : -INFINITY)};
     }

@@ -11,6 +11,7 @@
 #include "path.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/line.hpp"
+#include "ricochet/step_trace.hpp"
 #include "ricochet/vec2.hpp"
 
 namespace ricochet {
@@ -20,6 +21,13 @@ template <class Real>
 struct LectureKernel {
     /// A vector in the kernel's precision.
     using V = Vec2T<Real>;
+
+    /// The stated bound on the relative change of |v| per reflection: the unit normal and the reflection
+    /// round at ε = 2^-24 (float) or 2^-53 (double) per operation, a few times over; 1e-3 and 1e-6 sit far
+    /// above that, so only real blunders fail.
+    static constexpr double k_speed_rel_bound = sizeof(Real) == sizeof(float) ? 1e-3 : 1e-6;
+    /// No absolute part: the baseline's subnormal losses are what `speed` is there to show.
+    static constexpr double k_speed_abs_bound = 0.0;
 
     static Side classify(Vec2 p, const Wall& w) {
         // BC = n̂·(P − P0), its sign
@@ -73,9 +81,22 @@ struct LectureKernel {
             bool found = false;
             std::uint32_t best = 0;
             Leg hit{};
+            TracedLeg* traced = nullptr;
+            if (StepTrace* t = scratch.trace) {
+                // The leg as the kernel's own numbers: pos and pos + d in Real, widened to double exactly.
+                const auto first = static_cast<std::uint32_t>(t->decisions.size());
+                const std::optional<std::uint32_t> skipped = last == std::numeric_limits<std::uint32_t>::max()
+                                                                 ? std::nullopt
+                                                                 : std::optional<std::uint32_t>(last);
+                traced = &t->legs.emplace_back(TracedLeg{a, b, false, 0, 0, std::nullopt, first, 0, skipped});
+            }
             for (std::uint32_t i : detail::candidates(walls, index, a, b, scratch.candidates, scratch.all_walls)) {
                 if (i == last) continue;
                 const Leg r = sweep_leg(pos, d, vec_cast<Real>(walls[i].p0), vec_cast<Real>(walls[i].p1));
+                if (traced != nullptr) {
+                    scratch.trace->decisions.push_back({i, r.miss});
+                    ++traced->decision_count;
+                }
                 if (r.miss != Miss::none) continue;
                 if (!found || r.t < hit.t || (r.t == hit.t && i < best)) {
                     found = true;
@@ -87,10 +108,12 @@ struct LectureKernel {
                 pos = pos + d;
                 break;
             }
+            if (traced != nullptr) traced->hit = best;
             if (bounce == k_max_bounces) {
                 status = FrameStatus::bounce_limit;
                 break;
             }
+            if (scratch.trace != nullptr) ++scratch.trace->reflections;
             now = now + rest * hit.t;
             hits.push_back({best, static_cast<double>(now), vec_cast<double>(hit.point)});
             // Spend the rest of the frame, (1 − t_i)·v', moving on from B_i.

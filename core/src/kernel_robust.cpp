@@ -6,6 +6,7 @@
 #include "kernel_impl.hpp"
 #include "path.hpp"
 #include "ricochet/predicates.hpp"
+#include "ricochet/step_trace.hpp"
 #include "robust_leg.hpp"
 
 namespace ricochet {
@@ -81,8 +82,17 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
         for (std::uint8_t k = 0; k < memory.count && blocked == nullptr; ++k)
             if (exact::side(b, walls[memory.contacts[k].wall]) == -memory.contacts[k].side) blocked = &memory.contacts[k];
         if (blocked != nullptr) {
+            if (StepTrace* t = scratch.trace) {
+                t->legs.push_back({q, b, true, blocked->wall, blocked->side, std::nullopt, 0, 0, std::nullopt});
+                ++t->reflections;
+            }
             v = reflect(v, walls[blocked->wall]);
             continue;
+        }
+        TracedLeg* traced = nullptr;
+        if (StepTrace* t = scratch.trace) {
+            const auto first = static_cast<std::uint32_t>(t->decisions.size());
+            traced = &t->legs.emplace_back(TracedLeg{q, b, false, 0, 0, std::nullopt, first, 0, std::nullopt});
         }
         // The earliest hit: exact ordering of crossings, the lowest index on a tie.
         bool found = false;
@@ -90,6 +100,10 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
         int best_sq = 0, best_sb = 0;
         for (std::uint32_t i : detail::candidates(walls, index, q, b, scratch.candidates, scratch.all_walls)) {
             const Leg leg = test_leg(q, b, walls[i]);
+            if (traced != nullptr) {
+                scratch.trace->decisions.push_back({i, leg.miss});
+                ++traced->decision_count;
+            }
             if (leg.miss != Miss::none) continue;
             if (found) {
                 const int c = exact::compare_crossings(q, b, walls[i], walls[best]);
@@ -122,6 +136,7 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
             q = end;
             break;
         }
+        if (traced != nullptr) traced->hit = best;
         const double s = crossing(q, b, walls[best], best_sb);
         const Vec2 x = detail::make_safe({.q = q, .r = best_sb == 0 ? b : q + s * (b - q), .memory = memory,
                                           .walls = walls, .index = index, .scratch = scratch,
@@ -135,10 +150,15 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
         // Bounce off the wall hit, then off each other wall met here whose far side v' still points
         // to; if one is still crossed, go straight back.
         Vec2 w = reflect(v, walls[best]);
+        int reflections = 1;
         for (std::uint8_t k = 0; k < arrived.count; ++k) {
             const Contact& c = arrived.contacts[k];
-            if (c.wall != best && exact::direction_side(w, walls[c.wall]) == -c.side) w = reflect(w, walls[c.wall]);
+            if (c.wall != best && exact::direction_side(w, walls[c.wall]) == -c.side) {
+                w = reflect(w, walls[c.wall]);
+                ++reflections;
+            }
         }
+        if (scratch.trace != nullptr) scratch.trace->reflections += reflections;
         for (std::uint8_t k = 0; k < arrived.count; ++k)
             if (exact::direction_side(w, walls[arrived.contacts[k].wall]) == -arrived.contacts[k].side) w = -v;
         // The ball leaves the wall it hit towards the side it came from: a grazing v whose rounded reflection

@@ -55,11 +55,6 @@ struct SafePiece {
 /// piece.r, or the first point on the way back towards piece.q whose piece q → r is allowed (q itself at
 /// worst) and which lies on no kept wall's far side.
 Vec2 make_safe(const SafePiece& piece);
-/// make_safe with the piece spelled out argument by argument (the exact kernel's call).
-inline Vec2 make_safe(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wall> walls, const WallIndex* index,
-                      StepScratch& scratch, Keep a = {}, Keep b = {}) {
-    return make_safe(SafePiece{q, r, memory, walls, index, scratch, {a, b}});
-}
 
 /// The contact on wall w in memory, or nullptr.
 const Contact* find_contact(const BallMemory& memory, std::uint32_t w);

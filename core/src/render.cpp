@@ -50,9 +50,10 @@ std::string render_svg(const Scene& scene, const CheckedRun& run, const RenderOp
     for (const Event& e : run.events)
         if (e.kind != Event::Kind::overlap && in_frames(e.frame)) grow(x0, x1, e.pos.x), grow(y0, y1, e.pos.y);
     if (!(x0 <= x1)) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
-    // Degenerate: a scene of one point still gets a unit-sized picture around it.
+    // Degenerate: a scene of one point still gets a unit-sized picture around it. (Within the accepted
+    // range, |x| <= 2^256, the span is finite.)
     double span = std::max(x1 - x0, y1 - y0);
-    if (!(span > 0) || !std::isfinite(span)) span = std::max(1.0, std::fabs(x0) * 1e-12);
+    if (!(span > 0)) span = std::max(1.0, std::fabs(x0) * 1e-12);
     const double pad = span * 0.05;
     View v;
     v.x0 = x0 - pad, v.x1 = x1 + pad, v.y0 = y0 - pad, v.y1 = y1 + pad;

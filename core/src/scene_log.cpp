@@ -52,7 +52,7 @@ bool write_file_atomically(const std::filesystem::path& path, std::string_view t
     while (done < text.size()) {
         const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
         if (n < 0) {
-            if (errno == EINTR) continue;
+            if (errno == EINTR) continue;  // a signal before any byte was written: not forced in tests
             return abandon("cannot write the temporary file");
         }
         done += static_cast<std::size_t>(n);
@@ -60,6 +60,8 @@ bool write_file_atomically(const std::filesystem::path& path, std::string_view t
     // Keep the original file's permission bits if there is one, else the usual 0644.
     struct stat st {};
     const mode_t mode = ::stat(path.c_str(), &st) == 0 ? (st.st_mode & 07777) : 0644;
+    // fchmod, fsync and close of a file just written fail only on a failing medium (EIO) or a network
+    // file system (EDQUOT at close): kept as errors, not reached by the tests on a local disk.
     if (::fchmod(fd, mode) != 0) return abandon("cannot set permissions");
     if (::fsync(fd) != 0) return abandon("cannot sync the temporary file");
     if (::close(fd) != 0) {
@@ -74,7 +76,7 @@ bool write_file_atomically(const std::filesystem::path& path, std::string_view t
         errno = saved;
         return set("cannot rename the temporary file into place");
     }
-    // Make the rename itself durable.
+    // Make the rename itself durable (best effort: the folder just renamed into is there to open).
     const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
     if (dfd >= 0) {
         ::fsync(dfd);

@@ -55,9 +55,9 @@ StaticIndex::StaticIndex(std::span<const Circle> circles, std::span<const Rect> 
         }
     const double n = static_cast<double>(circles.size() + rects.size());
     const double width = xmax - xmin, height = ymax - ymin;
-    double h = width > 0.0 && height > 0.0 ? std::sqrt(width * height / n) : std::max(width, height) / n;
-    if (!(h > 0.0) || !std::isfinite(h)) h = 1.0;
-    while ((width / h + 2.0) * (height / h + 2.0) > double(1 << 22)) h *= 1.5;
+    // About one cell per static, two cells of border per axis, at most 2^22 cells.
+    const double h = detail::grid_fit(detail::grid_cell_size(width, height, n), width, height, 2.0,
+                                      detail::grid_budget(n, double(1 << 22)));
     inv_ = 1.0 / h;
     ox_ = xmin;
     oy_ = ymin;

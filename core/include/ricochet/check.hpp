@@ -1,6 +1,7 @@
 // Check: the invariants a scene log can ask replay to assert on every frame, and their names.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -8,7 +9,25 @@
 namespace ricochet {
 
 /// An invariant that replay asserts on every frame (scene-log `check NAME`; checks.hpp defines each).
-enum class Check : std::uint8_t { no_tunnel, symmetry, boundary, speed, deterministic, oracle };
+/// New checks join at the end, so a value keeps its meaning.
+enum class Check : std::uint8_t {
+    no_tunnel,
+    symmetry,
+    boundary,
+    speed,
+    deterministic,
+    oracle,
+    swap,
+    translation,
+    broad_phase,
+    round_trip,
+    no_escape,
+    bounce_side,
+};
+/// Every check, in the order of the enumeration.
+inline constexpr std::array<Check, 12> k_all_checks = {
+    Check::no_tunnel, Check::symmetry,    Check::boundary,    Check::speed,      Check::deterministic, Check::oracle,
+    Check::swap,      Check::translation, Check::broad_phase, Check::round_trip, Check::no_escape,     Check::bounce_side};
 /// The check's name as logs spell it ("no-tunnel", …).
 std::string_view check_name(Check c);
 /// The check called name, or nothing.

@@ -1,17 +1,75 @@
-// The `check` invariants of scene logs, asserted frame by frame while a scene runs.
+// The `check` invariants of scene logs, asserted frame by frame while a scene runs (run_checked).
+// This is the one definition of each: replay, record, the property tests and the fuzz targets assert
+// exactly these. "Printed state" is a `state` event (frame 0: the initial state); "exactly" and
+// "truth" mean the independent exact oracle of truth.hpp; "the frame's legs" are the legs its kernel
+// swept, as StepTrace reports them.
 //
-//   no-tunnel      TunnelChecker (tunnel.hpp, exact) on every ball's printed path.
-//   symmetry       the scene mirrored across x = 0 (x ↦ −x is exact) gives the mirrored events bit for bit.
-//   boundary       at every printed ball position p: p is in the radius-0 circle and the zero-size rect at
-//                  p; point_in_circle(p, C) == circles_overlap({p, 0}, C) and point_in_rect(p, R) ==
-//                  rects_overlap({p, p}, R) for every circle and rect; and classify(p, w) agrees with
-//                  sweep(p, v, w) for every wall (On never gives tests 1/2, Inside never "both outside",
-//                  Outside never "both inside").
-//   speed          per ball per frame with n bounces: | |v_end| − |v_start| | ≤ ((1+b)^n − 1)·|v_start|
-//                  + 4·2^−53·|v_start|, b = speed_rel_bound(kernel) (the last term covers computing |v|).
-//   deterministic  a second World run in lockstep gives the same events, frame by frame (so the same hash).
-//   oracle         per frame per ball, the first wall the kernel hits (or none) equals the one the exact
-//                  kernel hits from the same double state and memory.
+//   no-tunnel      Every ball's printed path (start, hit points, ends of frames), piece by piece, tunnels
+//                  through no wall by kernel.hpp's definition, as TunnelChecker (tunnel.hpp) and,
+//                  independently, truth::PathFollower follow it; either one finding a tunnel fails, at the
+//                  frame of the piece, naming the lowest such wall.
+//   symmetry       (a) The scene mirrored across x = 0 (mirror_x), stepped in lockstep by the same kernel,
+//                  prints the same events with every x and vx negated, compared by value (−0 = +0).
+//                  (b) Under M (x, y) ↦ (−x, y) and under R (x, y) ↦ (−y, x), applied to the ball, the shapes
+//                  and the walls (walls keep their direction): for each printed state p, v and every wall,
+//                  classify keeps its side (M: the opposite side); sweep(p, v) keeps its Miss (M: both-inside
+//                  and both-outside exchanged), and a hit keeps t by value and maps its point; point_in_circle
+//                  and point_in_rect of p keep their answers; at frame 0 circles_overlap and rects_overlap of
+//                  every ordered pair of static shapes keep theirs.
+//   boundary       At each printed state p, v: the radius-0 circle and the zero-size rect at p hold exactly
+//                  the frame's printed positions equal to p; for every circle C, point_in_circle(p, C) =
+//                  circles_overlap({p, 0}, C) = point_in_circle(C.c, {p, C.r}); for every rect R,
+//                  point_in_rect(p, R) = rects_overlap({p, p, p, p}, R); and if v ≠ 0, for every wall w with
+//                  s = classify(p, w) and the sweep from p moving v: s = On gives neither test 1 nor test 2 and
+//                  no hit, Inside never both-outside, Outside never both-inside, and a hit whose Be = p + v
+//                  classifies On has t = 1 and point Be.
+//   speed          Per ball per frame, with m the reflections its kernel made in the frame (StepTrace:
+//                  every reflect() call, hits, corner re-reflections and contact reflections without a hit;
+//                  v′ = −v is exact and counts 0): | |v_end| − |v_start| | ≤ ((1 + b)^m − 1)·|v_start| + m·a,
+//                  b and a the kernel's speed_bound. Decided exactly (truth::speed_within): the only rounding
+//                  is |v_start| itself, a 256-bit square root widened by 2^−200 relative. And reflect(v_start, w)
+//                  about every wall of non-zero length keeps to the bound with m = 1. A non-finite velocity
+//                  (or v′) is outside every bound.
+//   deterministic  A second World stepped in lockstep prints the same events, bit for bit, and so the same
+//                  running hash.
+//   oracle         Every decision equals the exact one. At frame 0, circles_overlap and rects_overlap of
+//                  every ordered pair of static shapes. At each printed state p: classify(p, w) for every
+//                  wall, and the overlap events the frame printed for the ball are exactly the circles and
+//                  rects holding p. For each frame's legs a → b, as the kernel swept them from its own
+//                  (rounded) points and velocities (a leg with a non-finite end fails: it is not a
+//                  segment): each per-wall Miss it decided equals truth's for a → b; every wall it did not
+//                  try is exactly missed; the wall it took as the leg's first hit equals truth's first hit
+//                  (the earliest exact crossing, the lowest index on a tie; a wall the kernel's own rule
+//                  skips, lecture's wall just bounced off, left out); a leg it ended at a contact wall ends
+//                  exactly on that wall's far side; the hits it took, in order, are the frame's hit events.
+//                  And the frame's first hit equals the exact kernel's from the same state and memory. The
+//                  exact kernel's legs are rational, so it has only the static parts.
+//   swap           circles_overlap(a, b) = circles_overlap(b, a) and rects_overlap likewise for every pair of
+//                  static shapes (frame 0); for each printed state p, v and every wall w, the wall walked the
+//                  other way gives p and Be = p + v the opposite side and the sweep from p the same hit or miss.
+//   translation    For each offset t of a fixed list ((1, −2), (1024, 4096), (−3·2^30, 2^31), (2^40, −5·2^40),
+//                  (0.5, 0.25)) that moves every coordinate of the scene and every ball's Bs and Be = Bs + v
+//                  without rounding (and (Bs + t) + v = Be + t), the moved scene stepped in lockstep prints
+//                  the same overlaps and, per ball, the same first hit wall (the exact kernel: every hit wall)
+//                  at frames 0 and 1; and at every frame, for each printed state p, v that t moves exactly,
+//                  classify, the sweep's Miss, point_in_circle and point_in_rect are unchanged by moving p and
+//                  the scene by t.
+//   broad-phase    The scene stepped with no broad phase on one thread, and with the wall grid and static
+//                  index on two threads, print the checked run's events bit for bit.
+//   round-trip     At frame 0: the scene written as a log (write_scene_log) reads back (parse_scene_log) as
+//                  the same scene bit for bit, and writing that again gives the same text.
+//   no-escape      Where the walls form closed chains (every end point the end of an even number of walls,
+//                  zero-length walls left out), a ball whose start is strictly inside the region they enclose
+//                  (even-odd rule, exactly) prints no hit point or state strictly outside it, and one starting
+//                  strictly outside none strictly inside. Other scenes pass.
+//   bounce-side    After a ball hits a wall from side s (the side of its previous printed point; along the
+//                  line, the side it last met that wall from), none of its printed points lies strictly on the
+//                  wall's side −s until its next hit, that hit's point included (BallMemory, kernel.hpp).
+//
+// speed and oracle read the frame's StepTrace: each ball is stepped again from its state and memory before
+// the frame with a trace (the same wall index); that step must end in the run's state bit for bit, else
+// the first of them in the scene's order fails for that ball.
+//
 // The first failure is the earliest frame; within a frame the first check in the scene's order, then the
 // lowest ball.
 #pragma once
@@ -29,10 +87,14 @@
 
 namespace ricochet {
 
-/// The bound b on the relative change of |v| per bounce that `speed` allows: k_speed_rel_bound for robust
-/// and exact; 1e-6 for lecture-double and 1e-3 for lecture-float (they state none; these are loose bounds
-/// chosen so that only real blunders fail).
-double speed_rel_bound(KernelId kernel);
+/// The bound `speed` allows per reflection: | |v′| − |v| | ≤ rel·|v| + abs.
+struct SpeedBound {
+    double rel = 0.0;  ///< b, relative
+    double abs = 0.0;  ///< a, absolute (subnormal rounding)
+};
+/// The kernel's stated speed bound, from the kernel table (KernelOps): k_speed_rel_bound and
+/// k_speed_abs_bound for robust and exact; the lecture kernels' own (kernel_lecture.hpp).
+SpeedBound speed_bound(KernelId kernel);
 
 /// The first broken invariant of a run.
 struct CheckFailure {
@@ -40,7 +102,7 @@ struct CheckFailure {
     std::int64_t frame = 0;          ///< the first frame it broke in
     std::uint32_t ball = 0;          ///< the ball it broke for
     std::string message;  ///< expected against actual, for people
-    /// "CHECK at frame F ball I: MESSAGE".
+    /// "CHECK broke at frame F ball I: MESSAGE".
     std::string str() const;
 };
 
@@ -57,11 +119,15 @@ struct CheckedRun {
 struct CheckOptions {
     bool keep_events = true;                                   ///< store events in CheckedRun::events
     std::function<void(std::span<const Event>)> on_frame;      ///< called with each frame's events, in order
+    /// How the run's World and the checks' own worlds step (broad-phase's excepted). Options change no
+    /// event's bits (world.hpp; broad-phase checks it), so no check's answer depends on them.
+    WorldOptions world{};
 };
 
 /// Runs frames 0..frames of scene under kernel, asserting checks on every frame. After the first failure
-/// the remaining checks are skipped but the run goes on (the hash covers the whole run). Every World here
-/// (the run's, the mirrored one and the twin) steps with the default WorldOptions, as `ricochet run` does.
+/// the remaining checks are skipped but the run goes on (the hash covers the whole run). The run's World
+/// and the checks' own worlds step with options.world (by default as `ricochet run` does), except
+/// broad-phase's.
 CheckedRun run_checked(const Scene& scene, KernelId kernel, std::int64_t frames, std::span<const Check> checks,
                        const CheckOptions& options = {});
 

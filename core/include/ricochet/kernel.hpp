@@ -73,6 +73,11 @@ struct KernelOps {
     Vec2 (*reflect)(Vec2 v, const Wall& w);
     FrameStatus (*step_ball)(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
                              StepScratch& scratch, const WallIndex* index);
+    /// The kernel's stated bound on | |v′| − |v| | per reflection: speed_rel_bound·|v| + speed_abs_bound
+    /// (the `speed` check, checks.hpp). A kernel type states it as K::k_speed_rel_bound and
+    /// K::k_speed_abs_bound; one that states none is held to robust's (limits.hpp).
+    double speed_rel_bound = k_speed_rel_bound;
+    double speed_abs_bound = k_speed_abs_bound;
 };
 
 /// A kernel type: static member functions with exactly KernelOps's signatures (one of each, no overloads).
@@ -85,8 +90,13 @@ concept Kernel = requires {
 /// The registry entry of kernel type K, called name.
 template <Kernel K>
 constexpr KernelOps make_kernel_ops(std::string_view name) {
-    return {name, &K::classify, &K::point_in_circle, &K::circles_overlap, &K::point_in_rect,
-            &K::rects_overlap, &K::sweep, &K::reflect, &K::step_ball};
+    KernelOps ops{name, &K::classify, &K::point_in_circle, &K::circles_overlap, &K::point_in_rect,
+                  &K::rects_overlap, &K::sweep, &K::reflect, &K::step_ball};
+    if constexpr (requires { K::k_speed_rel_bound; K::k_speed_abs_bound; }) {
+        ops.speed_rel_bound = K::k_speed_rel_bound;
+        ops.speed_abs_bound = K::k_speed_abs_bound;
+    }
+    return ops;
 }
 
 /// Room in the registry: the four built-in kernels and up to twelve registered ones. A fixed table keeps

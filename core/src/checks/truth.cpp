@@ -1,12 +1,13 @@
-// Ground truth for the properties (oracle.hpp).
-#include "oracle.hpp"
+// Ground truth for the checks (truth.hpp).
+#include "ricochet/truth.hpp"
 
 #include <gmpxx.h>
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
-namespace ricochet::props {
+namespace ricochet::truth {
 namespace {
 
 int sgn_q(const mpq_class& q) { return sgn(q); }
@@ -14,7 +15,7 @@ mpq_class Q(double x) { return mpq_class(x); }  // exact: every finite double is
 
 }  // namespace
 
-int orient_oracle(Vec2 a, Vec2 b, Vec2 c) {
+int orient(Vec2 a, Vec2 b, Vec2 c) {
     // Shewchuk's orient2dfast with its error bound (3 + 16ε)ε·(|l| + |r|), ε = 2^−53, valid while no
     // product under- or overflows; otherwise, or when the rounded value is within the bound, GMP decides.
     const double l = (a.x - c.x) * (b.y - c.y);
@@ -29,10 +30,10 @@ int orient_oracle(Vec2 a, Vec2 b, Vec2 c) {
     return sgn_q((Q(a.x) - Q(c.x)) * (Q(b.y) - Q(c.y)) - (Q(a.y) - Q(c.y)) * (Q(b.x) - Q(c.x)));
 }
 
-int side_oracle(Vec2 p, const Wall& w) { return -orient_oracle(w.p0, w.p1, p); }
+int side(Vec2 p, const Wall& w) { return -orient(w.p0, w.p1, p); }
 
-bool on_closed_segment_oracle(Vec2 p, const Wall& w) {
-    if (orient_oracle(w.p0, w.p1, p) != 0) return false;
+bool on_closed_segment(Vec2 p, const Wall& w) {
+    if (orient(w.p0, w.p1, p) != 0) return false;
     return std::min(w.p0.x, w.p1.x) <= p.x && p.x <= std::max(w.p0.x, w.p1.x) && std::min(w.p0.y, w.p1.y) <= p.y &&
            p.y <= std::max(w.p0.y, w.p1.y);
 }
@@ -40,55 +41,61 @@ bool on_closed_segment_oracle(Vec2 p, const Wall& w) {
 int locate(Vec2 p, std::span<const Wall> walls) {
     bool inside = false;
     for (const Wall& w : walls) {
-        if (on_closed_segment_oracle(p, w)) return 0;
+        if (on_closed_segment(p, w)) return 0;
         const Vec2 a = w.p0, b = w.p1;
         // The ray from p to +x crosses the edge if the edge straddles y = p.y (half-open, so a vertex on
         // the ray counts once) and p lies to the left of the upward-directed edge.
         if ((a.y > p.y) != (b.y > p.y)) {
-            const int o = orient_oracle(a, b, p);
+            const int o = orient(a, b, p);
             if (b.y > a.y ? o > 0 : o < 0) inside = !inside;
         }
     }
     return inside ? 1 : -1;
 }
 
-int circle_side_oracle(Vec2 p, const Circle& c) {
+int circle_side(Vec2 p, const Circle& c) {
     const mpq_class dx = Q(p.x) - Q(c.c.x), dy = Q(p.y) - Q(c.c.y), r = Q(c.r);
     return sgn_q(dx * dx + dy * dy - r * r);
 }
 
-bool point_in_circle_oracle(Vec2 p, const Circle& c) {
+bool point_in_circle(Vec2 p, const Circle& c) {
     const mpq_class dx = Q(p.x) - Q(c.c.x), dy = Q(p.y) - Q(c.c.y), r = Q(c.r);
     return dx * dx + dy * dy <= r * r;
 }
 
-bool circles_overlap_oracle(const Circle& a, const Circle& b) {
+bool circles_overlap(const Circle& a, const Circle& b) {
     const mpq_class dx = Q(a.c.x) - Q(b.c.x), dy = Q(a.c.y) - Q(b.c.y), r = Q(a.r) + Q(b.r);
     return dx * dx + dy * dy <= r * r;
 }
 
-bool point_in_rect_oracle(Vec2 p, const Rect& r) {
+bool point_in_rect(Vec2 p, const Rect& r) {
     return r.left <= p.x && p.x <= r.right && r.bottom <= p.y && p.y <= r.top;
 }
 
-bool rects_overlap_oracle(const Rect& a, const Rect& b) {
+bool rects_overlap(const Rect& a, const Rect& b) {
     // Closed intervals intersect on both axes.
     return std::max(a.left, b.left) <= std::min(a.right, b.right) &&
            std::max(a.bottom, b.bottom) <= std::min(a.top, b.top);
 }
 
 bool speed_within(Vec2 v, Vec2 w, int m, double b, double a) {
-    // (1 − b)^m·|v| − m·a ≤ |w| ≤ (1 + b)^m·|v| + m·a. |v| is irrational in general: it is bracketed by a
-    // 256-bit square root widened by 2^−200 relative, far below b; everything else is exact (GMP).
+    // An infinite or NaN component has no rational value: such a speed is outside every bound (a lecture
+    // kernel's float arithmetic overflowing a reflection gives one).
+    for (double x : {v.x, v.y, w.x, w.y, b, a})
+        if (!std::isfinite(x)) return false;
+    // | |w| − |v| | ≤ C·|v| + A with C = (1 + b)^m − 1 and A = m·a, i.e. (1 − C)|v| − A ≤ |w| ≤ (1 + C)|v| + A.
     const mpq_class vv = Q(v.x) * Q(v.x) + Q(v.y) * Q(v.y);
     const mpq_class ww = Q(w.x) * Q(w.x) + Q(w.y) * Q(w.y);
-    mpq_class lo = 1, hi = 1;
-    for (int i = 0; i < m; ++i) {
-        lo *= 1 - Q(b);
-        hi *= 1 + Q(b);
+    mpq_class grow = 1;
+    for (int i = 0; i < m; ++i) grow *= 1 + Q(b);
+    const mpq_class c = grow - 1, abs_part = Q(a) * m;
+    const mpq_class hi = 1 + c, lo = 1 - c;
+    // No absolute part: both sides squared, exactly, with no square root at all.
+    if (sgn(abs_part) == 0) {
+        if (ww > hi * hi * vv) return false;
+        return sgn(lo) <= 0 || ww >= lo * lo * vv;
     }
-    const mpq_class abs_part = Q(a) * m;
-    if (sgn(abs_part) == 0) return lo * lo * vv <= ww && ww <= hi * hi * vv;
+    // |v| bracketed by a 256-bit square root widened by 2^−200 relative, far below any b used.
     mpf_class root(vv, 256);
     root = sqrt(root);
     const mpq_class slack = mpq_class(1, 1) / (mpq_class(1) << 200);
@@ -100,7 +107,30 @@ bool speed_within(Vec2 v, Vec2 w, int m, double b, double a) {
 
 bool sum_exact(double a, double b) { return Q(a + b) == Q(a) + Q(b); }
 
-int cross_sign(Vec2 a, Vec2 b) { return orient_oracle({0, 0}, a, b); }
+int direction_side(Vec2 d, const Wall& w) {
+    // n·d = e_y·d_x − e_x·d_y, with e = P1 − P0 taken exactly (its double difference may round).
+    return sgn_q(Q(d.x) * (Q(w.p1.y) - Q(w.p0.y)) - Q(d.y) * (Q(w.p1.x) - Q(w.p0.x)));
+}
+
+bool walls_closed(std::span<const Wall> walls) {
+    std::vector<Vec2> ends;
+    for (const Wall& w : walls) {
+        if (w.p0 == w.p1) continue;
+        ends.push_back(w.p0);
+        ends.push_back(w.p1);
+    }
+    if (ends.empty()) return false;
+    std::sort(ends.begin(), ends.end(), [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    for (std::size_t i = 0; i < ends.size();) {
+        std::size_t j = i;
+        while (j < ends.size() && ends[j] == ends[i]) ++j;
+        if ((j - i) % 2 != 0) return false;
+        i = j;
+    }
+    return true;
+}
+
+int cross_sign(Vec2 a, Vec2 b) { return orient({0, 0}, a, b); }
 
 int dot_sign(Vec2 a, Vec2 b) {
     const double l = a.x * b.x, r = a.y * b.y;
@@ -112,26 +142,26 @@ int dot_sign(Vec2 a, Vec2 b) {
     return sgn_q(Q(a.x) * Q(b.x) + Q(a.y) * Q(b.y));
 }
 
-Miss expected_miss(Vec2 bs, Vec2 be, const Wall& w) {
+Miss leg_miss(Vec2 bs, Vec2 be, const Wall& w) {
     if (w.p0 == w.p1 || bs == be) return Miss::degenerate;
-    const int s0 = side_oracle(bs, w), s1 = side_oracle(be, w);
+    const int s0 = side(bs, w), s1 = side(be, w);
     if (s0 < 0 && s1 < 0) return Miss::both_inside;
     if (s0 > 0 && s1 > 0) return Miss::both_outside;
     if (s0 == 0 && s1 == 0) return Miss::parallel;
     if (s0 == 0) return Miss::leaving;
     // The leg crosses (or ends on) the line; it meets the closed segment unless P0 and P1 lie strictly
     // on one side of the leg's line. Which end it misses by: P0 is "behind" when orient(Bs, Be, P0) = −s0.
-    const int o0 = orient_oracle(bs, be, w.p0), o1 = orient_oracle(bs, be, w.p1);
+    const int o0 = orient(bs, be, w.p0), o1 = orient(bs, be, w.p1);
     if (o0 * o1 > 0) return o0 == -s0 ? Miss::before_p0 : Miss::past_p1;
     return Miss::none;
 }
 
-long first_hit_oracle(Vec2 bs, Vec2 be, std::span<const Wall> walls) {
+long first_hit(Vec2 bs, Vec2 be, std::span<const Wall> walls) {
     long best = -1;
     mpq_class best_s;
     for (std::size_t i = 0; i < walls.size(); ++i) {
         const Wall& w = walls[i];
-        if (expected_miss(bs, be, w) != Miss::none) continue;
+        if (leg_miss(bs, be, w) != Miss::none) continue;
         // n·(Bs + s(Be − Bs) − P0) = 0  ⇒  s = BC(Bs)/(BC(Bs) − BC(Be)), BC up to the factor 1/|n|.
         const mpq_class ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
         const auto bc = [&](Vec2 p) -> mpq_class { return ey * (Q(p.x) - Q(w.p0.x)) - ex * (Q(p.y) - Q(w.p0.y)); };
@@ -145,14 +175,14 @@ long first_hit_oracle(Vec2 bs, Vec2 be, std::span<const Wall> walls) {
     return best;
 }
 
-PathOracle::PathOracle(std::span<const Wall> walls, std::span<const Ball> balls) : walls_(walls.begin(), walls.end()) {
+PathFollower::PathFollower(std::span<const Wall> walls, std::span<const Ball> balls) : walls_(walls.begin(), walls.end()) {
     for (const Ball& b : balls) {
         at_.push_back(b.pos);
-        for (const Wall& w : walls_) st_.push_back({side_oracle(b.pos, w), false});
+        for (const Wall& w : walls_) st_.push_back({side(b.pos, w), false});
     }
 }
 
-long PathOracle::advance(std::size_t i, Vec2 next) {
+long PathFollower::advance(std::size_t i, Vec2 next) {
     const Vec2 q = at_[i];
     at_[i] = next;
     if (q == next) return -1;
@@ -160,13 +190,13 @@ long PathOracle::advance(std::size_t i, Vec2 next) {
     for (std::size_t k = 0; k < walls_.size(); ++k) {
         const Wall& w = walls_[k];
         State& st = st_[i * walls_.size() + k];
-        const int sq = side_oracle(q, w), sr = side_oracle(next, w);
+        const int sq = side(q, w), sr = side(next, w);
         bool tunnel = false;
         if (sq != 0 && sr != 0) {
-            tunnel = sq == -sr && orient_oracle(q, next, w.p0) * orient_oracle(q, next, w.p1) <= 0;
+            tunnel = sq == -sr && orient(q, next, w.p0) * orient(q, next, w.p1) <= 0;
             st = {sr, false};
         } else if (sq != 0) {
-            st = {sq, on_closed_segment_oracle(next, w)};
+            st = {sq, on_closed_segment(next, w)};
         } else if (sr != 0) {
             tunnel = st.touched && st.last != 0 && sr != st.last;
             st = {sr, false};
@@ -178,48 +208,4 @@ long PathOracle::advance(std::size_t i, Vec2 next) {
     return found;
 }
 
-Vec2 mirror(Vec2 p) { return {-p.x, p.y}; }
-Vec2 rotate90(Vec2 p) { return {-p.y, p.x}; }
-
-Scene transform(const Scene& s, Vec2 (*f)(Vec2)) {
-    Scene out = s;
-    for (Wall& w : out.walls) w = {f(w.p0), f(w.p1)};
-    for (Ball& b : out.balls) b = {f(b.pos), f(b.vel)};
-    for (Circle& c : out.circles) c.c = f(c.c);
-    for (Rect& r : out.rects) {
-        const Vec2 a = f({r.left, r.bottom}), b = f({r.right, r.top});
-        r = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
-    }
-    out.expect_hash.reset();
-    out.expect_states.clear();
-    return out;
-}
-
-Scene translate(const Scene& s, Vec2 t) {
-    Scene out = s;
-    for (Wall& w : out.walls) w = {w.p0 + t, w.p1 + t};
-    for (Ball& b : out.balls) b.pos = b.pos + t;
-    for (Circle& c : out.circles) c.c = c.c + t;
-    for (Rect& r : out.rects) r = {r.left + t.x, r.bottom + t.y, r.right + t.x, r.top + t.y};
-    out.expect_hash.reset();
-    out.expect_states.clear();
-    return out;
-}
-
-bool translation_exact(const Scene& s, Vec2 t) {
-    const auto ok = [&](Vec2 p) { return sum_exact(p.x, t.x) && sum_exact(p.y, t.y); };
-    for (const Wall& w : s.walls)
-        if (!ok(w.p0) || !ok(w.p1)) return false;
-    for (const Ball& b : s.balls) {
-        // Be = Bs + v must be the same point, moved, before and after.
-        const Vec2 be = b.pos + b.vel;
-        if (!ok(b.pos) || !ok(be) || !(same_value((b.pos + t) + b.vel, be + t))) return false;
-    }
-    for (const Circle& c : s.circles)
-        if (!ok(c.c)) return false;
-    for (const Rect& r : s.rects)
-        if (!ok({r.left, r.bottom}) || !ok({r.right, r.top})) return false;
-    return true;
-}
-
-}  // namespace ricochet::props
+}  // namespace ricochet::truth

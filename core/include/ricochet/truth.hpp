@@ -1,0 +1,77 @@
+// Truth: ground truth for the checks, computed apart from every kernel. Kept independent on purpose
+// (N-version): its own floating-point filter and GMP fallback, sharing no code with predicates.hpp,
+// path.hpp or any kernel, so a bug there cannot hide itself here. Do not deduplicate it into them.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "ricochet/kernel.hpp"
+
+namespace ricochet::truth {
+
+/// sign((b − a) × (c − a)), exact for every finite double (own filter, GMP when it cannot decide).
+int orient(Vec2 a, Vec2 b, Vec2 c);
+/// sign of BC = n·(p − P0), n = (e_y, −e_x): +1 outside, −1 inside, 0 on; equals −orient(P0, P1, p).
+int side(Vec2 p, const Wall& w);
+/// sign(n·d) for a direction d: the side d points to.
+int direction_side(Vec2 d, const Wall& w);
+/// True if p lies on w's closed segment (on its line and within its bounding box), exactly.
+bool on_closed_segment(Vec2 p, const Wall& w);
+/// Where p lies against the region the walls enclose (even-odd rule, exact): +1 strictly inside, 0 on a
+/// wall, −1 strictly outside. Wall directions do not matter.
+int locate(Vec2 p, std::span<const Wall> walls);
+/// True if every wall end point is the end point of an even number of wall ends (counting each
+/// non-zero-length wall's two ends): the walls form closed chains, so locate's region is bounded by them.
+bool walls_closed(std::span<const Wall> walls);
+
+/// sign(|p − c|² − r²), exactly (GMP): −1 inside, 0 on, +1 outside.
+int circle_side(Vec2 p, const Circle& c);
+/// |p − c|² ≤ r², exactly (GMP).
+bool point_in_circle(Vec2 p, const Circle& c);
+/// |cA − cB|² ≤ (rA + rB)², exactly (GMP).
+bool circles_overlap(const Circle& a, const Circle& b);
+/// left ≤ x ≤ right and bottom ≤ y ≤ top (comparisons of doubles are exact).
+bool point_in_rect(Vec2 p, const Rect& r);
+/// Closed rectangles intersect.
+bool rects_overlap(const Rect& a, const Rect& b);
+
+/// | |w| − |v| | ≤ ((1 + b)^m − 1)·|v| + m·a, decided exactly except for |v| itself, which is irrational in
+/// general: it is bracketed by a 256-bit square root widened by 2^−200 relative (the only rounding).
+/// False when any of v, w, b, a has a non-finite component. The other functions take finite doubles only.
+bool speed_within(Vec2 v, Vec2 w, int m, double b, double a);
+/// sign(a × b) of two directions, exactly.
+int cross_sign(Vec2 a, Vec2 b);
+/// sign(a · b), exactly.
+int dot_sign(Vec2 a, Vec2 b);
+/// True if a + b is computed exactly in double.
+bool sum_exact(double a, double b);
+
+/// The exact decision for the leg a → b against w, by kernel.hpp's conventions: degenerate (zero-length
+/// wall or a = b), both inside, both outside, parallel (both on the line), leaving (a on the line),
+/// before P0 / past P1 (the leg's line meets the wall's line outside the closed segment), else a hit.
+Miss leg_miss(Vec2 a, Vec2 b, const Wall& w);
+/// The first wall the leg a → b hits (the earliest exact crossing, the lowest index on a tie), or −1.
+long first_hit(Vec2 a, Vec2 b, std::span<const Wall> walls);
+
+/// kernel.hpp's no-tunnelling definition, followed independently of ricochet::TunnelChecker: a piece
+/// from one open side to the other through the closed segment, or arriving on the closed segment from
+/// one side and leaving to the other, tunnels; after moving along the line either side is fine.
+class PathFollower {
+public:
+    /// Starts every ball at its initial position.
+    PathFollower(std::span<const Wall> walls, std::span<const Ball> balls);
+    /// Ball i moves on to next; returns the lowest wall the piece tunnels through, or −1.
+    long advance(std::size_t i, Vec2 next);
+
+private:
+    struct State {
+        int last = 0;          // side of the last point off the line, 0 after moving along it
+        bool touched = false;  // arrived on the closed segment since
+    };
+    std::vector<Wall> walls_;
+    std::vector<Vec2> at_;
+    std::vector<State> st_;
+};
+
+}  // namespace ricochet::truth

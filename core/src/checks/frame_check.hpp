@@ -1,0 +1,61 @@
+// Internal: one check as the checker runs it, frame after frame (the definitions are in checks.hpp).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "ricochet/checks.hpp"
+#include "ricochet/step_trace.hpp"
+
+namespace ricochet::checks {
+
+/// What a check sees of one frame of the run.
+struct Frame {
+    std::int64_t index = 0;                     ///< 0: the initial states and overlaps
+    std::span<const Event> events;              ///< the frame's events, in order
+    std::span<const Ball> before;               ///< each ball before the frame (empty at frame 0)
+    std::span<const BallMemory> memory_before;  ///< each ball's memory before the frame (empty at frame 0)
+    std::span<const StepTrace> traces;          ///< each ball's frame as its kernel stepped it, if asked for
+};
+
+/// One check with its state between frames.
+class FrameCheck {
+public:
+    virtual ~FrameCheck() = default;
+    /// The first failure of this check in the frame (the lowest ball), or nothing. Called once per frame,
+    /// frame 0 first; a check with worlds of its own steps them here.
+    virtual std::optional<CheckFailure> frame(const Frame& f) = 0;
+    /// True if the check reads Frame::traces.
+    virtual bool needs_traces() const { return false; }
+};
+
+/// The check c for scene under kernel; its own worlds (if any) step with world.
+std::unique_ptr<FrameCheck> make_check(Check c, const Scene& scene, KernelId kernel, const WorldOptions& world);
+
+std::unique_ptr<FrameCheck> make_no_tunnel(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_symmetry(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_boundary(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_speed(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_deterministic(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_oracle(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_swap(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_translation(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_broad_phase(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_round_trip(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_no_escape(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_bounce_side(const Scene& scene, KernelId kernel, const WorldOptions& world);
+
+/// A failure of check c at frame f for ball.
+inline CheckFailure failure(Check c, std::int64_t f, std::uint32_t ball, std::string message) {
+    return CheckFailure{c, f, ball, std::move(message)};
+}
+
+/// Compares two frames' events: bit for bit (bits) or by value. Describes the first difference as `who`
+/// giving something else, as a failure of c; nothing if they agree.
+std::optional<CheckFailure> compare_events(Check c, std::int64_t f, std::span<const Event> expected,
+                                           std::span<const Event> actual, bool bits, std::string_view who);
+
+}  // namespace ricochet::checks

@@ -1,0 +1,180 @@
+// oracle: every decision the kernel makes equals the exact one (truth.hpp), leg by leg on its own legs,
+// and every static test the scene poses.
+#include <cmath>
+#include <fmt/format.h>
+
+#include "frame_check.hpp"
+#include "ricochet/format.hpp"
+#include "ricochet/truth.hpp"
+
+namespace ricochet::checks {
+namespace {
+
+std::string wall_name(long w) { return w < 0 ? std::string("no wall") : fmt::format("wall {}", w); }
+
+class Oracle final : public FrameCheck {
+public:
+    Oracle(const Scene& scene, KernelId kernel) : scene_(scene), kernel_(kernel) {}
+
+    bool needs_traces() const override { return true; }
+
+    std::optional<CheckFailure> frame(const Frame& f) override {
+        if (f.index == 0)
+            if (auto bad = statics()) return bad;
+        if (auto bad = positions(f)) return bad;
+        if (f.index == 0) return std::nullopt;
+        for (std::size_t i = 0; i < f.before.size(); ++i)
+            if (auto bad = legs(f, static_cast<std::uint32_t>(i))) return bad;
+        return std::nullopt;
+    }
+
+private:
+    /// Frame 0: every pair of static shapes, in both orders.
+    std::optional<CheckFailure> statics() const {
+        const KernelId k = kernel_;
+        for (std::size_t i = 0; i < scene_.circles.size(); ++i)
+            for (std::size_t j = 0; j < scene_.circles.size(); ++j) {
+                const Circle &a = scene_.circles[i], &b = scene_.circles[j];
+                if (circles_overlap(k, a, b) != truth::circles_overlap(a, b))
+                    return failure(Check::oracle, 0, 0,
+                                   fmt::format("circles_overlap(circle {}, circle {}) = {}, exactly {}", i, j,
+                                               circles_overlap(k, a, b), truth::circles_overlap(a, b)));
+            }
+        for (std::size_t i = 0; i < scene_.rects.size(); ++i)
+            for (std::size_t j = 0; j < scene_.rects.size(); ++j) {
+                const Rect &a = scene_.rects[i], &b = scene_.rects[j];
+                if (rects_overlap(k, a, b) != truth::rects_overlap(a, b))
+                    return failure(Check::oracle, 0, 0,
+                                   fmt::format("rects_overlap(rect {}, rect {}) = {}, exactly {}", i, j,
+                                               rects_overlap(k, a, b), truth::rects_overlap(a, b)));
+            }
+        return std::nullopt;
+    }
+
+    /// Each printed state: its overlap events are exactly the shapes holding it, and its side of every wall
+    /// is the exact one.
+    std::optional<CheckFailure> positions(const Frame& f) const {
+        for (std::size_t j = 0; j < f.events.size(); ++j) {
+            const Event& e = f.events[j];
+            if (e.kind != Event::Kind::state) continue;
+            const auto fail = [&](std::string m) { return failure(Check::oracle, f.index, e.ball, std::move(m)); };
+            const Vec2 p = e.pos;
+            for (std::size_t w = 0; w < scene_.walls.size(); ++w) {
+                const Side got = classify(kernel_, p, scene_.walls[w]);
+                const int want = truth::side(p, scene_.walls[w]);
+                if (sign_of(got) != want)
+                    return fail(fmt::format("classify({}, wall {}) = {}, exactly {}", p, w, got, side_from_sign(want)));
+            }
+            // The overlaps of this ball as the frame printed them (ball-major, circles then rects, by index).
+            std::vector<std::pair<Event::Shape, std::uint32_t>> got, want;
+            for (const Event& o : f.events)
+                if (o.kind == Event::Kind::overlap && o.ball == e.ball) got.emplace_back(o.shape, o.index);
+            for (std::uint32_t c = 0; c < scene_.circles.size(); ++c)
+                if (truth::point_in_circle(p, scene_.circles[c])) want.emplace_back(Event::Shape::circle, c);
+            for (std::uint32_t r = 0; r < scene_.rects.size(); ++r)
+                if (truth::point_in_rect(p, scene_.rects[r])) want.emplace_back(Event::Shape::rect, r);
+            if (got != want) {
+                const auto list = [](const auto& v) {
+                    std::string s;
+                    for (const auto& [shape, i] : v)
+                        s += fmt::format("{}{} {}", s.empty() ? "" : ", ", shape == Event::Shape::circle ? "circle" : "rect", i);
+                    return s.empty() ? std::string("none") : s;
+                };
+                return fail(fmt::format("at {} the frame's overlaps are [{}], exactly [{}]", p, list(got), list(want)));
+            }
+        }
+        return std::nullopt;
+    }
+
+    /// Ball i's legs this frame, as its kernel swept them: each decision, each first hit and the order of
+    /// hits against the exact answers for that same leg.
+    std::optional<CheckFailure> legs(const Frame& f, std::uint32_t i) {
+        const auto fail = [&](std::string m) { return failure(Check::oracle, f.index, i, std::move(m)); };
+        const StepTrace& trace = f.traces[i];
+        // The kernel's hits, as the frame printed them.
+        std::vector<std::uint32_t> printed;
+        for (const Event& e : f.events)
+            if (e.kind == Event::Kind::hit && e.ball == i) printed.push_back(e.index);
+        if (!trace.legs_traced) return std::nullopt;
+        std::vector<std::uint32_t> traced;
+        std::vector<bool> decided(scene_.walls.size());
+        for (std::size_t l = 0; l < trace.legs.size(); ++l) {
+            const TracedLeg& leg = trace.legs[l];
+            const std::string where = fmt::format("leg {} ({} -> {})", l, leg.from, leg.to);
+            // A leg with an infinite or NaN end is not a segment: no exact decision exists to compare with
+            // (lecture-float's arithmetic overflows to one).
+            if (!std::isfinite(leg.from.x) || !std::isfinite(leg.from.y) || !std::isfinite(leg.to.x) ||
+                !std::isfinite(leg.to.y))
+                return fail(fmt::format("{}: the kernel swept a leg whose end is not finite", where));
+            if (leg.blocked) {
+                // The leg ends on the far side of the contact wall it was stopped by.
+                if (truth::side(leg.to, scene_.walls[leg.blocked_wall]) != -leg.blocked_side)
+                    return fail(fmt::format("{} is taken as leaving contact wall {} to its far side, but it does not "
+                                            "end there exactly",
+                                            where, leg.blocked_wall));
+                continue;
+            }
+            std::fill(decided.begin(), decided.end(), false);
+            for (std::uint32_t d = leg.first_decision; d < leg.first_decision + leg.decision_count; ++d) {
+                const TracedDecision& td = trace.decisions[d];
+                decided[td.wall] = true;
+                const Miss want = truth::leg_miss(leg.from, leg.to, scene_.walls[td.wall]);
+                if (td.miss != want)
+                    return fail(fmt::format("{} against wall {}: the kernel says {}, exactly {}", where, td.wall,
+                                            td.miss, want));
+            }
+            // A wall the kernel did not try (its broad phase left it out) must be missed, exactly.
+            for (std::uint32_t w = 0; w < scene_.walls.size(); ++w)
+                if (!decided[w] && !(leg.skipped && *leg.skipped == w) &&
+                    truth::leg_miss(leg.from, leg.to, scene_.walls[w]) == Miss::none)
+                    return fail(fmt::format("{} hits wall {} exactly, but the kernel never tried it", where, w));
+            long want = truth::first_hit(leg.from, leg.to, scene_.walls);
+            // The kernel's own rule may leave one wall out (lecture: the wall just bounced off).
+            if (leg.skipped) want = first_hit_without(leg, *leg.skipped);
+            const long got = leg.hit ? static_cast<long>(*leg.hit) : -1;
+            if (got != want)
+                return fail(fmt::format("{}: the kernel hits {} first, exactly {}", where, wall_name(got),
+                                        wall_name(want)));
+            if (leg.hit) traced.push_back(*leg.hit);
+        }
+        // A hit found at the bounce limit is not taken: the ball stays at its last safe point.
+        if (traced.size() == printed.size() + 1 && printed.size() == static_cast<std::size_t>(k_max_bounces))
+            traced.pop_back();
+        if (traced != printed)
+            return fail(fmt::format("the frame printed {} hit(s), the legs swept give {}", printed.size(), traced.size()));
+        // The frame's first hit against the exact kernel's frame from the same state and memory.
+        if (kernel_ != KernelId::exact) {
+            Ball ball = f.before[i];
+            BallMemory memory = f.memory_before[i];
+            hits_.clear();
+            (void)step_ball(KernelId::exact, ball, memory, scene_.walls, hits_, scratch_);
+            const long want = hits_.empty() ? -1 : static_cast<long>(hits_.front().wall);
+            const long got = printed.empty() ? -1 : static_cast<long>(printed.front());
+            if (want != got)
+                return fail(fmt::format("from {} moving {} the kernel hits {} first, the exact kernel hits {}",
+                                        f.before[i].pos, f.before[i].vel, wall_name(got), wall_name(want)));
+        }
+        return std::nullopt;
+    }
+
+    long first_hit_without(const TracedLeg& leg, std::uint32_t skipped) {
+        others_.assign(scene_.walls.begin(), scene_.walls.end());
+        // A zero-length wall is never hit: it stands in for the skipped one and keeps the indices.
+        others_[skipped] = Wall{};
+        return truth::first_hit(leg.from, leg.to, others_);
+    }
+
+    const Scene& scene_;
+    KernelId kernel_;
+    std::vector<HitEvent> hits_;
+    StepScratch scratch_;
+    std::vector<Wall> others_;
+};
+
+}  // namespace
+
+std::unique_ptr<FrameCheck> make_oracle(const Scene& scene, KernelId kernel, const WorldOptions&) {
+    return std::make_unique<Oracle>(scene, kernel);
+}
+
+}  // namespace ricochet::checks

@@ -1,0 +1,184 @@
+// The checks of checks.hpp: for each, a scene where it must pass and a kernel or scene where it must fail.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "ricochet/checks.hpp"
+#include "ricochet/step_trace.hpp"
+
+namespace ricochet {
+namespace {
+
+std::vector<Wall> box(double lo, double hi) {
+    return {{{lo, hi}, {lo, lo}}, {{lo, lo}, {hi, lo}}, {{hi, lo}, {hi, hi}}, {{hi, hi}, {lo, hi}}};
+}
+
+/// A closed box with a few balls, a circle and a rect: every check holds on it under robust and exact.
+Scene pinball() {
+    Scene s;
+    s.frames = 40;
+    s.walls = box(0, 10);
+    s.walls.push_back({{0, 2}, {3, 0.5}});
+    s.balls = {{{8, 5}, {4, 1}}, {{1, 1}, {0.75, 0.5}}, {{5, 5}, {-3, 2.5}}};
+    s.circles = {{{8, 6}, 0.0}, {{3, 7}, 1}};
+    s.rects = {{0, 0, 1, 1}, {1, 1, 2, 2}};
+    return s;
+}
+
+std::optional<CheckFailure> first_failure(const Scene& s, KernelId k, Check c) {
+    return run_checked(s, k, s.frames, std::vector<Check>{c}).failure;
+}
+
+TEST(Checks, EveryNameRoundTrips) {
+    for (Check c : k_all_checks) EXPECT_EQ(parse_check(check_name(c)), c);
+    EXPECT_FALSE(parse_check("no_tunnel"));
+}
+
+TEST(Checks, EveryCheckHoldsOnThePinballUnderRobustAndExact) {
+    for (KernelId k : {KernelId::robust, KernelId::exact})
+        for (Check c : k_all_checks) {
+            const auto f = first_failure(pinball(), k, c);
+            EXPECT_FALSE(f) << kernel_name(k) << ": " << f->str();
+        }
+}
+
+TEST(Checks, NoTunnelFailsWhenTheLectureKernelLeavesThroughAWallEnd) {
+    Scene s;
+    s.frames = 5;
+    s.walls = {{{0, 0}, {0, 4}}};
+    s.balls = {{{-3, 7}, {1, -1}}};
+    const auto f = first_failure(s, KernelId::lecture_double, Check::no_tunnel);
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->frame, 4);
+    EXPECT_FALSE(first_failure(s, KernelId::robust, Check::no_tunnel));
+}
+
+TEST(Checks, SpeedFailsWhenFloatLosesATinyVelocity) {
+    Scene s;
+    s.frames = 2;
+    s.walls = {{{1, -1}, {1, 1}}};
+    s.balls = {{{0.9999999999999999, 0}, {1e-300, 0}}};
+    const auto f = first_failure(s, KernelId::lecture_float, Check::speed);
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->frame, 1);
+    EXPECT_FALSE(first_failure(s, KernelId::robust, Check::speed));
+}
+
+TEST(Checks, SpeedCountsContactReflectionsWithoutAHit) {
+    // The ball rests on the wall's end point and is reflected off that contact wall every frame without a
+    // hit event: robust reports those reflections, so the speed change is allowed.
+    Scene s;
+    s.frames = 3;
+    s.walls = {{{0, 1}, {74, 74}}};
+    s.balls = {{{1.105431282474736e-75, 1}, {-1.105431282474736e-75, 0}}};
+    EXPECT_FALSE(first_failure(s, KernelId::robust, Check::speed));
+    // And the trace does count them.
+    Ball b = s.balls[0];
+    BallMemory m;
+    std::vector<HitEvent> hits;
+    StepScratch scratch;
+    StepTrace trace;
+    for (int frame = 0; frame < 2; ++frame) {
+        trace.clear();
+        scratch.trace = &trace;
+        (void)step_ball(KernelId::robust, b, m, s.walls, hits, scratch);
+    }
+    EXPECT_TRUE(hits.size() < 2 || trace.reflections > 0);
+}
+
+TEST(Checks, OracleFailsOnTheLectureKernelsGrazingBall) {
+    Scene s;
+    s.frames = 20;
+    s.walls = box(0, 10);
+    s.walls.push_back({{2, 3}, {8, 3}});
+    s.balls = {{{1, 3}, {1, 0}}, {{1, 2.9999999}, {1, 1e-7}}, {{1, 6}, {1, 0}}};
+    const auto f = first_failure(s, KernelId::lecture_double, Check::oracle);
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->frame, 1);
+    EXPECT_FALSE(first_failure(s, KernelId::robust, Check::oracle));
+}
+
+TEST(Checks, BoundaryFailsWhenTheLectureSweepHitsTheWallItStartsOn) {
+    // Frame 2 ends exactly on the wall (0, 0) → (0, 4) at (0, 4)'s line point; the lecture's sweep from
+    // a point on the line computes t_i = 0, a hit.
+    Scene s;
+    s.frames = 4;
+    s.walls = {{{0, 0}, {0, 4}}};
+    s.balls = {{{-2, 6}, {1, -1}}};
+    const auto f = first_failure(s, KernelId::lecture_double, Check::boundary);
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->frame, 2);
+    EXPECT_FALSE(first_failure(s, KernelId::robust, Check::boundary));
+}
+
+TEST(Checks, TranslationFailsForFloatFarFromTheOrigin) {
+    // (1, −2) moves these doubles exactly, but floats are 64 apart here: the ball rounds to 1e9 and the
+    // wall to 1e9 + 64, and moved by 1 both round to 1e9 + 64, so the side changes.
+    Scene s;
+    s.frames = 1;
+    s.walls = {{{1e9 + 33, -1e9}, {1e9 + 33, 1e9}}};
+    s.balls = {{{1e9 + 31.5, 3}, {0.5, 0}}};
+    EXPECT_TRUE(first_failure(s, KernelId::lecture_float, Check::translation));
+    EXPECT_FALSE(first_failure(s, KernelId::robust, Check::translation));
+}
+
+TEST(Checks, RoundTripFailsForAProvenanceLineThatBreaksTheFormat) {
+    Scene s = pinball();
+    s.frames = 0;
+    EXPECT_FALSE(first_failure(s, KernelId::robust, Check::round_trip));
+    s.provenance = {"fuzz x\nball 0 0 0 0"};
+    const auto f = first_failure(s, KernelId::robust, Check::round_trip);
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->frame, 0);
+}
+
+TEST(Checks, NoEscapeAppliesOnlyToClosedWalls) {
+    Scene s;
+    s.frames = 300;
+    s.walls = box(0, 10);
+    s.balls = {{{5, 5}, {3.25, 1.5}}};
+    EXPECT_FALSE(first_failure(s, KernelId::robust, Check::no_escape));
+    // The ball starts outside a closed box and is aimed through its corner: lecture-double gets in.
+    Scene far;
+    far.frames = 300;
+    far.walls = box(0, 10);
+    far.balls = {{{-3, 13}, {1, -1}}};
+    EXPECT_FALSE(first_failure(far, KernelId::robust, Check::no_escape));
+    // Open walls: a ball walking round a wall end changes the even-odd side legitimately.
+    Scene open = s;
+    open.walls.pop_back();
+    EXPECT_FALSE(first_failure(open, KernelId::lecture_double, Check::no_escape));
+}
+
+TEST(Checks, SwapSymmetryBroadPhaseAndDeterminismHoldForEveryBuiltInKernel) {
+    for (KernelId k : k_all_kernels)
+        for (Check c : {Check::swap, Check::broad_phase, Check::deterministic}) {
+            const auto f = first_failure(pinball(), k, c);
+            EXPECT_FALSE(f) << kernel_name(k) << ": " << f->str();
+        }
+}
+
+TEST(Checks, TraceIsEmptyWithoutAskingAndFilledWhenAsked) {
+    Scene s = pinball();
+    Ball b = s.balls[0];
+    BallMemory m;
+    std::vector<HitEvent> hits;
+    StepScratch scratch;
+    (void)step_ball(KernelId::robust, b, m, s.walls, hits, scratch);
+    EXPECT_EQ(scratch.trace, nullptr);
+    StepTrace trace;
+    scratch.trace = &trace;
+    b = s.balls[0];
+    m = {};
+    hits.clear();
+    (void)step_ball(KernelId::robust, b, m, s.walls, hits, scratch);
+    ASSERT_EQ(hits.size(), 1u);  // the lecture's example: (8, 5) + (4, 1) hits the right wall at (10, 5.5)
+    ASSERT_EQ(trace.legs.size(), 2u);
+    EXPECT_EQ(trace.legs[0].hit, std::optional<std::uint32_t>(2));
+    EXPECT_EQ(trace.legs[0].decision_count, s.walls.size());
+    EXPECT_FALSE(trace.legs[1].hit);
+    EXPECT_EQ(trace.reflections, 1);
+}
+
+}  // namespace
+}  // namespace ricochet

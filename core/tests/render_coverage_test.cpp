@@ -1,0 +1,224 @@
+// Render: what the SVG draws, where, and from which frames. Positions are worked by hand from the
+// picture's mapping: bounds padded by 5 % of the larger span, scale = (width − 80) / padded span,
+// sx = (x − x0)·scale + 40, sy = (y1 − y)·scale + 40 (y up in the world, down in SVG).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "ricochet/render.hpp"
+
+namespace ricochet {
+namespace {
+
+std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+
+Event state(std::int64_t frame, std::uint32_t ball, Vec2 pos, Vec2 vel = {}) {
+    return {Event::Kind::state, frame, ball, Event::Shape::none, 0, pos, vel};
+}
+
+Event hit(std::int64_t frame, std::uint32_t ball, std::uint32_t wall, Vec2 pos) {
+    return {Event::Kind::hit, frame, ball, Event::Shape::none, wall, pos, {}};
+}
+
+TEST(Render, AnEmptySceneIsTheUnitSquarePictureAndNothingElse) {
+    // Nothing to bound: [0, 1]², padded by 0.05 to a span of 1.1, 720 px across: 800 × (800 + 30).
+    const std::string svg = render_svg(Scene{}, CheckedRun{});
+    EXPECT_EQ(svg,
+              "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"830\" viewBox=\"0 0 800 830\" "
+              "font-family=\"sans-serif\" font-size=\"12\">\n"
+              "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+              "<text x=\"8\" y=\"820.0\">kernel robust, frames 0..0, x in [0, 1], y in [0, 1]</text>\n"
+              "</svg>\n");
+}
+
+TEST(Render, TheWidthOptionScalesThePicture) {
+    // 400 px: 320 px for the padded span, 400 × 430.
+    RenderOptions o;
+    o.width = 400;
+    const std::string svg = render_svg(Scene{}, CheckedRun{}, o);
+    EXPECT_TRUE(has(svg, "width=\"400\" height=\"430\" viewBox=\"0 0 400 430\"")) << svg;
+}
+
+// The box [0, 10]²: padded to [−0.5, 10.5]², scale 720/11, so 0 ↦ 72.727 and 10 ↦ 727.273 (sx), and
+// 10 ↦ 72.727, 0 ↦ 727.273 (sy). One ball; what it draws depends on the run's events.
+Scene box_scene() {
+    Scene s;
+    s.kernel = KernelId::lecture_double;
+    s.walls = {{{0, 0}, {10, 0}}, {{10, 10}, {0, 10}}};
+    s.rects = {{1, 1, 3, 2}};
+    s.circles = {{{5, 5}, 1}};
+    s.balls = {{{0, 0}, {5, 0}}};
+    return s;
+}
+
+TEST(Render, WallsNormalsRectsAndCirclesSitWhereTheMappingPutsThem) {
+    const std::string svg = render_svg(box_scene(), CheckedRun{});
+    EXPECT_TRUE(has(svg, "<text x=\"8\" y=\"820.0\">kernel lecture-double, frames 0..0, x in [0, 10], y in [0, 10]</text>"))
+        << svg;
+    // Wall 0, (0, 0) → (10, 0): along the bottom.
+    EXPECT_TRUE(has(svg, "<line x1=\"72.727\" y1=\"727.273\" x2=\"727.273\" y2=\"727.273\" stroke=\"black\""));
+    // Its normal (e_y, −e_x)/|e| = (0, −1) from the midpoint (5, 0), 0.04·11 = 0.44 long: tip (5, −0.44),
+    // sy = 10.94·720/11 + 40 = 756.073.
+    EXPECT_TRUE(has(svg, "<line x1=\"400.000\" y1=\"727.273\" x2=\"400.000\" y2=\"756.073\" stroke=\"#888\""));
+    // P0 marked 2 px up and left of (72.727, 727.273); the label 4 px right and down of the tip.
+    EXPECT_TRUE(has(svg, "<rect x=\"70.727\" y=\"725.273\" width=\"4\" height=\"4\" fill=\"black\"/>"
+                         "<text x=\"404.000\" y=\"760.073\" fill=\"#555\">w0</text>"));
+    // Wall 1, (10, 10) → (0, 10): normal (0, 1), tip (5, 10.44), sy = 0.06·720/11 + 40 = 43.927.
+    EXPECT_TRUE(has(svg, "<line x1=\"400.000\" y1=\"72.727\" x2=\"400.000\" y2=\"43.927\" stroke=\"#888\""));
+    EXPECT_TRUE(has(svg, ">w1</text>"));
+    // The rect [1, 3] × [1, 2]: top-left (1, 2) ↦ (1.5·720/11 + 40, 8.5·720/11 + 40), 2 × 1 world units.
+    EXPECT_TRUE(has(svg, "<rect x=\"138.182\" y=\"596.364\" width=\"130.909\" height=\"65.455\" fill=\"#2ca02c\""));
+    EXPECT_TRUE(has(svg, "<text x=\"141.182\" y=\"609.364\" fill=\"#2ca02c\">r0</text>"));
+    // The circle at (5, 5), r = 1: centre (400, 400), radius 65.455; label 3 px right and up.
+    EXPECT_TRUE(has(svg, "<circle cx=\"400.000\" cy=\"400.000\" r=\"65.455\" fill=\"#ff7f0e\""));
+    EXPECT_TRUE(has(svg, "<text x=\"403.000\" y=\"397.000\" fill=\"#ff7f0e\">c0</text>"));
+    // Statics before walls, so walls are drawn over them; no ball, no path, no failure.
+    EXPECT_LT(svg.find(">r0<"), svg.find(">c0<"));
+    EXPECT_LT(svg.find(">c0<"), svg.find(">w0<"));
+    EXPECT_EQ(count(svg, "<polyline"), 0u);
+    EXPECT_FALSE(has(svg, "red"));
+}
+
+TEST(Render, AZeroLengthWallHasNoNormalAndATinyCircleStaysVisible) {
+    Scene s = box_scene();
+    s.walls.push_back({{4, 4}, {4, 4}});
+    s.circles.push_back({{6, 6}, 0.0});
+    const std::string svg = render_svg(s, CheckedRun{});
+    // Three walls drawn, two normals (the zero-length one has none), but all three labelled.
+    EXPECT_EQ(count(svg, "stroke=\"black\" stroke-width=\"2.5\""), 3u);
+    EXPECT_EQ(count(svg, "stroke=\"#888\""), 2u);
+    EXPECT_TRUE(has(svg, ">w2</text>"));
+    // A radius-0 circle is drawn 1.5 px wide.
+    EXPECT_TRUE(has(svg, "r=\"1.500\" fill=\"#ff7f0e\""));
+}
+
+TEST(Render, ASinglePointSceneGetsAUnitSpanAroundIt) {
+    // One ball at rest at (2, 3): no span, so a span of 1, padded to [1.95, 2.05] × [2.95, 3.05]; the
+    // point maps to the picture's centre (400, 400) and the picture is 800 × 830.
+    Scene s;
+    s.balls = {{{2, 3}, {0, 0}}};
+    CheckedRun run;
+    run.events = {state(0, 0, {2, 3})};
+    const std::string svg = render_svg(s, run);
+    EXPECT_TRUE(has(svg, "width=\"800\" height=\"830\""));
+    EXPECT_TRUE(has(svg, "x in [2, 2], y in [3, 3]"));
+    EXPECT_TRUE(has(svg, "<polyline points=\"400.000,400.000 \" fill=\"none\" stroke=\"#1f77b4\""));
+    // Start (hollow, labelled) and end (filled) markers at the same point.
+    EXPECT_TRUE(has(svg, "<circle cx=\"400.000\" cy=\"400.000\" r=\"5\" fill=\"white\" stroke=\"#1f77b4\""));
+    EXPECT_TRUE(has(svg, "<text x=\"407.000\" y=\"393.000\" fill=\"#1f77b4\">b0</text>"));
+    EXPECT_TRUE(has(svg, "<circle cx=\"400.000\" cy=\"400.000\" r=\"5\" fill=\"#1f77b4\"/>"));
+}
+
+// A ball in [0, 10]² (walls give the bounds) with states at frames 0..3 and a hit in frames 1 and 3.
+CheckedRun path_run() {
+    CheckedRun run;
+    run.frames_run = 3;
+    run.events = {state(0, 0, {0, 0}, {5, 0}),
+                  {Event::Kind::overlap, 0, 0, Event::Shape::circle, 0, {}, {}},
+                  hit(1, 0, 0, {5, 0}),
+                  state(1, 0, {5, 5}),
+                  state(2, 0, {10, 5}),
+                  hit(3, 0, 1, {10, 10}),
+                  state(3, 0, {0, 10})};
+    return run;
+}
+
+TEST(Render, APathRunsThroughEveryStateAndHitInOrder) {
+    const std::string svg = render_svg(box_scene(), path_run());
+    EXPECT_TRUE(has(svg, "frames 0..3"));
+    // (0,0) (5,0) (5,5) (10,5) (10,10) (0,10), the overlap skipped.
+    EXPECT_TRUE(has(svg, "<polyline points=\"72.727,727.273 400.000,727.273 400.000,400.000 727.273,400.000 "
+                         "727.273,72.727 72.727,72.727 \" fill=\"none\" stroke=\"#1f77b4\""));
+    // Both hits marked; start at (0, 0), end at (0, 10).
+    EXPECT_TRUE(has(svg, "<circle cx=\"400.000\" cy=\"727.273\" r=\"3\" fill=\"#1f77b4\"/>"));
+    EXPECT_TRUE(has(svg, "<circle cx=\"727.273\" cy=\"72.727\" r=\"3\" fill=\"#1f77b4\"/>"));
+    EXPECT_EQ(count(svg, "r=\"3\""), 2u);
+    EXPECT_TRUE(has(svg, "<circle cx=\"72.727\" cy=\"727.273\" r=\"5\" fill=\"white\""));
+    EXPECT_TRUE(has(svg, "<circle cx=\"72.727\" cy=\"72.727\" r=\"5\" fill=\"#1f77b4\"/>"));
+}
+
+TEST(Render, AFrameRangeDrawsFromTheFirstFramesStateToTheLastFrames) {
+    // Frames 1..2: frame 1's hit lies before its state (the ball reached it in frame 1), so the path
+    // starts at frame 1's state (5, 5) and ends at frame 2's (10, 5); frame 3 is not drawn.
+    RenderOptions o;
+    o.first_frame = 1;
+    o.last_frame = 2;
+    const std::string svg = render_svg(box_scene(), path_run(), o);
+    EXPECT_TRUE(has(svg, "frames 1..2"));
+    EXPECT_TRUE(has(svg, "<polyline points=\"400.000,400.000 727.273,400.000 \""));
+    EXPECT_EQ(count(svg, "r=\"3\""), 0u);
+    EXPECT_TRUE(has(svg, "<circle cx=\"400.000\" cy=\"400.000\" r=\"5\" fill=\"white\""));
+    EXPECT_TRUE(has(svg, "<circle cx=\"727.273\" cy=\"400.000\" r=\"5\" fill=\"#1f77b4\"/>"));
+}
+
+TEST(Render, BoundsCoverOnlyTheFramesDrawn) {
+    // No statics: the bounds are the drawn events'. Frames 2..3 hold (10, 5), (10, 10), (0, 10): x in
+    // [0, 10], y in [5, 10]; the point (0, 0) of frame 0 is left out.
+    RenderOptions o;
+    o.first_frame = 2;
+    Scene s;
+    s.balls = {{{0, 0}, {5, 0}}};
+    const std::string svg = render_svg(s, path_run(), o);
+    EXPECT_TRUE(has(svg, "frames 2..3, x in [0, 10], y in [5, 10]")) << svg;
+}
+
+TEST(Render, ABallWithNothingInRangeDrawsNoPathAndColoursCycleByEight) {
+    // Nine balls, only balls 0 and 8 have events: ball 8 takes ball 0's colour; balls 1..7 draw nothing.
+    Scene s;
+    s.balls.assign(9, Ball{});
+    CheckedRun run;
+    run.events = {state(0, 0, {0, 0}), state(0, 8, {1, 1})};
+    const std::string svg = render_svg(s, run);
+    EXPECT_EQ(count(svg, "<polyline"), 2u);
+    EXPECT_EQ(count(svg, "stroke=\"#1f77b4\" stroke-width=\"1.5\""), 2u);
+    EXPECT_TRUE(has(svg, ">b0</text>"));
+    EXPECT_TRUE(has(svg, ">b8</text>"));
+    EXPECT_FALSE(has(svg, ">b1</text>"));
+}
+
+TEST(Render, AFailureIsACrossAtTheBallsStateAndItsMessageIsEscaped) {
+    // Ball 1 also has a state in frame 2, at (0, 5): the cross is only at ball 0's.
+    Scene s = box_scene();
+    s.balls.push_back({{0, 5}, {0, 0}});
+    CheckedRun run = path_run();
+    run.events.push_back(state(2, 1, {0, 5}));
+    CheckFailure f;
+    f.check = Check::no_tunnel;
+    f.frame = 2;
+    f.ball = 0;
+    f.message = "piece (0, 8) -> (-4, 9) < wall & more";
+    run.failure = f;
+    const std::string svg = render_svg(s, run);
+    // Frame 2's state (10, 5) ↦ (727.273, 400): a cross 9 px each way.
+    EXPECT_TRUE(has(svg, "<g stroke=\"red\" stroke-width=\"3\"><line x1=\"718.273\" y1=\"391.000\" x2=\"736.273\" "
+                         "y2=\"409.000\"/><line x1=\"718.273\" y1=\"409.000\" x2=\"736.273\" y2=\"391.000\"/></g>"));
+    EXPECT_EQ(count(svg, "<g stroke=\"red\""), 1u);
+    EXPECT_TRUE(has(svg, "piece (0, 8) -&gt; (-4, 9) &lt; wall &amp; more</text>"));
+    EXPECT_FALSE(has(svg, "-> (-4"));
+}
+
+TEST(Render, ALongFailureMessageIsCutTo140Characters) {
+    CheckedRun run = path_run();
+    CheckFailure f;
+    f.frame = 7;  // no state at frame 7: no cross, only the message
+    f.message = std::string(300, 'x');
+    run.failure = f;
+    const std::string svg = render_svg(box_scene(), run);
+    EXPECT_EQ(count(svg, "<g stroke=\"red\""), 0u);
+    const std::string open = "<text x=\"8\" y=\"18\" fill=\"red\">";
+    const std::size_t from = svg.find(open);
+    ASSERT_NE(from, std::string::npos);
+    const std::size_t to = svg.find("</text>", from);
+    const std::string text = svg.substr(from + open.size(), to - from - open.size());
+    EXPECT_EQ(text.size(), 140u);
+    EXPECT_EQ(text, f.str().substr(0, 137) + "...");
+}
+
+}  // namespace
+}  // namespace ricochet

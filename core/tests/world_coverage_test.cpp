@@ -1,0 +1,156 @@
+// World and its parallel stepper: the same events, worked by hand, on every thread count (more threads
+// than balls, no thread at all, a moved World); what a World says it skips; which ball a range error names.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "ricochet/format.hpp"
+#include "ricochet/world.hpp"
+
+namespace ricochet {
+namespace {
+
+std::vector<std::string> lines(const std::vector<Event>& events) {
+    std::vector<std::string> out;
+    for (const Event& e : events) out.push_back(format_event(e));
+    return out;
+}
+
+// Balls k = 0..n−1 at (8, k) moving (4, 0) towards the wall x = 10, ball n−1 at rest. A moving ball's leg
+// (8, k) → (12, k) meets the wall at s = 0.5, B_i = (10, k); n̂ = (1, 0), so v' = (−4, 0) and the other
+// half of the frame takes it back to (8, k). Frame 2 goes on to (4, k).
+Scene column(std::uint32_t n) {
+    Scene s;
+    s.walls = {{{10, -100}, {10, 100}}};
+    for (std::uint32_t k = 0; k + 1 < n; ++k) s.balls.push_back({{8, double(k)}, {4, 0}});
+    s.balls.push_back({{0, -1}, {0, 0}});
+    return s;
+}
+
+std::vector<std::string> column_by_hand(std::uint32_t n) {
+    std::vector<std::string> want;
+    for (std::uint32_t k = 0; k + 1 < n; ++k) want.push_back(fmt::format("state 0 {} 8 {} 4 0", k, k));
+    want.push_back(fmt::format("state 0 {} 0 -1 0 0", n - 1));
+    for (std::uint32_t k = 0; k + 1 < n; ++k) {
+        want.push_back(fmt::format("hit 1 {} 0 10 {}", k, k));
+        want.push_back(fmt::format("state 1 {} 8 {} -4 0", k, k));
+    }
+    want.push_back(fmt::format("state 1 {} 0 -1 0 0", n - 1));
+    for (std::uint32_t k = 0; k + 1 < n; ++k) want.push_back(fmt::format("state 2 {} 4 {} -4 0", k, k));
+    want.push_back(fmt::format("state 2 {} 0 -1 0 0", n - 1));
+    return want;
+}
+
+TEST(WorldThreads, EveryThreadCountGivesTheEventsWorkedByHand) {
+    // 7 balls: 3 threads share them (parts of 2, 2 and 3 balls); 16 threads are more than 7/2, so one
+    // thread steps every part, most of them empty; 0 threads is one.
+    for (BroadPhase bp : {BroadPhase::none, BroadPhase::grid, BroadPhase::bvh})
+        for (unsigned threads : {0u, 1u, 2u, 3u, 16u}) {
+            EXPECT_EQ(lines(run_scene(column(7), KernelId::robust, 2, {.broad_phase = bp, .threads = threads})),
+                      column_by_hand(7))
+                << threads << " threads, broad phase " << int(bp);
+        }
+}
+
+TEST(WorldThreads, OneBallOnManyThreads) {
+    EXPECT_EQ(lines(run_scene(column(1), KernelId::robust, 2, {.threads = 4})), column_by_hand(1));
+    EXPECT_EQ(lines(run_scene(column(2), KernelId::exact, 2, {.threads = 4})), column_by_hand(2));
+}
+
+TEST(WorldThreads, AnEmptySceneHasNoEventsAndNothingToSkipButTheFallback) {
+    const World w(Scene{}, KernelId::robust, {.threads = 3});
+    EXPECT_EQ(w.wall_index(), nullptr);
+    EXPECT_EQ(w.skipped(), "no static-test pass (no circles or rectangles); exact fallback: kept (no filter-only proof)");
+    EXPECT_TRUE(run_scene(Scene{}, KernelId::robust, 5, {.threads = 3}).empty());
+}
+
+TEST(WorldThreads, AMovedWorldStepsOnFromWhereItWas) {
+    World a(column(3), KernelId::robust, {.threads = 2});
+    std::vector<Event> events;
+    a.start(events);
+    ASSERT_FALSE(a.step(events));
+    World b(std::move(a));
+    ASSERT_FALSE(b.step(events));
+    EXPECT_EQ(b.frame(), 2);
+    EXPECT_EQ(lines(events), column_by_hand(3));
+    World c(Scene{}, KernelId::exact);
+    c = std::move(b);
+    EXPECT_EQ(c.frame(), 2);
+    EXPECT_EQ(c.kernel(), KernelId::robust);
+    ASSERT_EQ(c.balls().size(), 3u);
+    EXPECT_EQ(c.balls()[0], (Ball{{4, 0}, {-4, 0}}));
+}
+
+TEST(WorldSkips, EachConfigurationSaysWhatItSkips) {
+    Scene s = column(2);
+    EXPECT_EQ(World(s, KernelId::robust).skipped(),
+              "no static-test pass (no circles or rectangles); walls: uniform-grid broad phase; "
+              "exact fallback: kept (no filter-only proof)");
+    s.circles = {{{0, 0}, 1}};
+    EXPECT_EQ(World(s, KernelId::robust, {.broad_phase = BroadPhase::bvh}).skipped(),
+              "static tests: one cell lookup per ball; walls: BVH broad phase; exact fallback: kept (no filter-only proof)");
+    // No broad phase: neither an index for the walls nor one for the statics, so no clause for either.
+    EXPECT_EQ(World(s, KernelId::robust, {.broad_phase = BroadPhase::none}).skipped(),
+              "exact fallback: kept (no filter-only proof)");
+    // The exact kernel never gets a wall index, but the statics still get theirs.
+    EXPECT_EQ(World(s, KernelId::exact).skipped(),
+              "static tests: one cell lookup per ball; exact fallback: kept (no filter-only proof)");
+}
+
+TEST(WorldStatics, OverlapsWithAndWithoutTheStaticIndexAgree) {
+    // A ball resting at (1, 1) lies in circle 1 (centre (1, 2), r = 1: distance exactly 1) and rect 0,
+    // not in circle 0; the overlaps follow the states, circles before rects.
+    Scene s;
+    s.balls = {{{1, 1}, {0, 0}}, {{5, 5}, {0, 0}}};
+    s.circles = {{{4, 4}, 0.5}, {{1, 2}, 1}};
+    s.rects = {{0, 0, 1, 1}, {2, 2, 3, 3}};
+    const std::vector<std::string> want = {"state 0 0 1 1 0 0", "state 0 1 5 5 0 0", "overlap 0 0 circle 1",
+                                           "overlap 0 0 rect 0",  "state 1 0 1 1 0 0", "state 1 1 5 5 0 0",
+                                           "overlap 1 0 circle 1", "overlap 1 0 rect 0"};
+    for (BroadPhase bp : {BroadPhase::none, BroadPhase::grid})
+        EXPECT_EQ(lines(run_scene(s, KernelId::robust, 1, {.broad_phase = bp})), want) << int(bp);
+}
+
+TEST(WorldRange, TheErrorNamesTheFirstBallThatWouldLeaveAndEveryBallKeepsItsState) {
+    // Balls 1 and 2 would pass 2^256 ≈ 1.158e77 in frame 1; ball 0 moves on. The error is ball 1's, and
+    // both keep their states of frame 0 (still printed).
+    Scene s;
+    s.balls = {{{0, 0}, {1, 0}}, {{0, 1e77}, {0, 1e77}}, {{-1e77, 0}, {-1e77, 0}}};
+    World w(s, KernelId::robust, {.threads = 2});
+    std::vector<Event> events;
+    w.start(events);
+    events.clear();
+    const auto error = w.step(events);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->frame, 1);
+    EXPECT_EQ(error->ball, 1u);
+    EXPECT_EQ(error->status, FrameStatus::out_of_range);
+    EXPECT_EQ(error->state, s.balls[1]);
+    EXPECT_EQ(error->message(),
+              "frame 1 ball 1: the ball at (0, 1e+77) moving (0, 1e+77) would leave the accepted range "
+              "(|coordinate| <= 2^256, finite); the run stops here");
+    EXPECT_EQ(lines(events), (std::vector<std::string>{"state 1 0 1 0 1 0", "state 1 1 0 1e+77 0 1e+77",
+                                                       "state 1 2 -1e+77 0 -1e+77 0"}));
+    try {
+        (void)run_scene(s, KernelId::robust, 1);
+        ADD_FAILURE() << "expected StepFailure";
+    } catch (const StepFailure& f) {
+        EXPECT_EQ(std::string(f.what()), error->message());
+        EXPECT_EQ(f.error().ball, 1u);
+    }
+}
+
+TEST(WorldRange, ABallAlreadyOutOfRangeIsAnErrorInFrameOne) {
+    Scene s;
+    s.balls = {{{0x1p257, 0}, {0, 0}}};
+    World w(s, KernelId::lecture_double);
+    std::vector<Event> events;
+    const auto error = w.step(events);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->ball, 0u);
+    EXPECT_EQ(lines(events), (std::vector<std::string>{fmt::format("state 1 0 {} 0 0 0", 0x1p257)}));
+}
+
+}  // namespace
+}  // namespace ricochet

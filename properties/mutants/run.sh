@@ -1,0 +1,215 @@
+#!/usr/bin/env bash
+# Mutation score of the harness: for each NN-name.patch here, a mutant of core/ is built in a scratch copy
+# of the tree and attacked by the property suite, then (if it survives) by a fuzz campaign. A mutant is
+# caught only if the harness leaves a saved scene log that fails `ricochet replay` on the mutant and passes
+# on the unmutated build: the contract is that a failure the harness reports is one replay reproduces.
+#
+#   properties/mutants/run.sh [--only NN[,NN...]] [--out DIR] [--fuzz-time S] [--no-fuzz] [--no-unit]
+#
+# DIR (default build-mutants/ in the checkout, ignored by git) keeps everything between runs, so a run can
+# be restarted with --only: tree/ (the scratch copy; the checkout is never modified), gcc/ (RelWithDebInfo:
+# ricochet, ricochet_properties), clang/ (clang-14 + libFuzzer: ricochet, fuzz_*; built only when a mutant
+# survives the properties), ref/ricochet (the unmutated CLI), NN/ (each mutant's logs and outputs) and
+# results.tsv (one line per mutant; the table is printed from it). Unless --no-unit, each mutant also runs
+# core/tests/promise_test (reported in its own column, not scored: a unit test is not the harness).
+#
+# Settings, fixed so that a run measures the same thing each time:
+#   RICOCHET_KERNEL=robust, RC_PARAMS="seed=$MUT_SEED max_success=$MUT_CASES" (defaults 1 and 150: about
+#   10 s for the robust suite on a quiet core), fuzz: `ricochet fuzz --kernel robust --time $MUT_FUZZ_TIME
+#   --seed $MUT_SEED` (default 60 s) with a fresh cache per mutant (seeded from fuzz/corpus/).
+# Exit status: 0 after a complete run (the score is a measurement), 2 on a broken setup (a patch that does
+# not apply, a build that fails, a reference build that fails its own logs).
+set -uo pipefail
+
+here=$(cd "$(dirname "$0")" && pwd)
+src=$(cd "$here/../.." && pwd)
+out="$src/build-mutants"
+only=""
+fuzz_time=${MUT_FUZZ_TIME:-60}
+do_fuzz=1
+do_unit=1
+seed=${MUT_SEED:-1}
+cases=${MUT_CASES:-150}
+jobs=${MUT_JOBS:-2}
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --only) only=$2; shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    --fuzz-time) fuzz_time=$2; shift 2 ;;
+    --no-fuzz) do_fuzz=0; shift ;;
+    --no-unit) do_unit=0; shift ;;
+    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
+    *) echo "run.sh: unknown argument '$1'" >&2; exit 2 ;;
+  esac
+done
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+case "$out/" in "$src"/tree/*|"$src"/core/*) echo "run.sh: --out must not be inside the sources" >&2; exit 2 ;; esac
+tree="$out/tree"
+results="$out/results.tsv"
+touch "$results"
+
+die() { echo "run.sh: $*" >&2; exit 2; }
+now() { date +%s; }
+
+# The scratch tree: every tracked file of the checkout, copied where its content differs (a fresh mtime,
+# so ninja rebuilds exactly what a patch or its reversal touched).
+sync_tree() {
+  mkdir -p "$tree"
+  (cd "$src" && git ls-files -z) | while IFS= read -r -d '' f; do
+    if [ ! -f "$tree/$f" ] || ! cmp -s "$src/$f" "$tree/$f"; then
+      mkdir -p "$tree/$(dirname "$f")"
+      cp "$src/$f" "$tree/$f"
+    fi
+  done
+}
+
+build_gcc() {
+  if [ ! -f "$out/gcc/CMakeCache.txt" ]; then
+    cmake -S "$tree" -B "$out/gcc" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRICOCHET_FUZZ=OFF \
+      -DRICOCHET_BENCH=OFF > "$out/gcc-configure.log" 2>&1 || return 1
+  fi
+  ninja -C "$out/gcc" -j"$jobs" ricochet ricochet_properties > "$1" 2>&1
+}
+
+build_clang() {
+  if [ ! -f "$out/clang/CMakeCache.txt" ]; then
+    CC=clang-14 CXX=clang++-14 cmake -S "$tree" -B "$out/clang" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DRICOCHET_FUZZ=ON -DRICOCHET_BENCH=OFF -DRICOCHET_TESTS=OFF > "$out/clang-configure.log" 2>&1 || return 1
+  fi
+  ninja -C "$out/clang" -j"$jobs" ricochet fuzz_parser fuzz_static fuzz_sweep fuzz_scene > "$1" 2>&1
+}
+
+# The first saved log under $1 that fails replay on the mutant and passes on the unmutated build; prints
+# "LOG" or nothing. Every log's verdicts go to $2.
+reproduced_log() {
+  local dir=$1 verdicts=$2 log
+  : > "$verdicts"
+  [ -d "$dir" ] || return 0
+  while IFS= read -r log; do
+    "$out/gcc/cli/ricochet" replay "$log" > "$log.mutant.txt" 2>&1
+    local m=$?
+    "$out/ref/ricochet" replay "$log" > "$log.ref.txt" 2>&1
+    local r=$?
+    echo "$(basename "$log") mutant=$m ref=$r" >> "$verdicts"
+    if [ "$m" = 1 ] && [ "$r" = 0 ]; then
+      echo "$log"
+      return 0
+    fi
+  done < <(find "$dir" -name '*.scene' | sort)
+}
+
+# --- the unmutated build -----------------------------------------------------------------------------
+echo "== reference: syncing $tree and building (gcc RelWithDebInfo) =="
+t0=$(now)
+sync_tree
+build_gcc "$out/gcc-ref-build.log" || die "the unmutated gcc build fails ($out/gcc-ref-build.log)"
+mkdir -p "$out/ref"
+cp "$out/gcc/cli/ricochet" "$out/ref/ricochet"
+"$out/ref/ricochet" replay "$tree/replays" > "$out/ref-corpus.txt" 2>&1 ||
+  die "the unmutated build fails its own corpus ($out/ref-corpus.txt)"
+echo "   built and corpus clean in $(( $(now) - t0 )) s"
+if [ "$do_unit" = 1 ]; then
+  ninja -C "$out/gcc" -j"$jobs" promise_test > "$out/unit-ref-build.log" 2>&1 || die "promise_test does not build"
+  "$out/gcc/core/tests/promise_test" > "$out/unit-ref.txt" 2>&1 || die "promise_test fails unmutated ($out/unit-ref.txt)"
+fi
+# The property suite unmutated, with the settings every mutant gets: its time is the budget, and a
+# failure here would be the harness's own (a mutant is never credited with it: its log would fail on ref).
+rm -rf "$out/ref-props"; mkdir -p "$out/ref-props"
+ps=$(now)
+RICOCHET_KERNEL=robust RICOCHET_REPLAY_DIR="$out/ref-props" RC_PARAMS="seed=$seed max_success=$cases" \
+  timeout 300 "$out/gcc/properties/ricochet_properties" > "$out/ref-props.txt" 2>&1
+echo "   unmutated property suite: exit $? in $(( $(now) - ps )) s (RC_PARAMS=\"seed=$seed max_success=$cases\")"
+
+patches=()
+for p in "$here"/[0-9][0-9]-*.patch; do
+  nn=$(basename "$p" | cut -c1-2)
+  if [ -n "$only" ] && ! [[ ",$only," == *",$nn,"* ]]; then continue; fi
+  patches+=("$p")
+done
+[ ${#patches[@]} -gt 0 ] || die "no patch matches --only $only"
+
+i=0
+for p in "${patches[@]}"; do
+  i=$((i + 1))
+  name=$(basename "$p" .patch)
+  nn=${name:0:2}
+  work="$out/$nn"
+  rm -rf "$work"
+  mkdir -p "$work"
+  start=$(now)
+  echo "== [$i/${#patches[@]}] $name: $(head -1 "$p" | sed 's/^# //')"
+  sync_tree
+  patch -p1 -s -d "$tree" --no-backup-if-mismatch < "$p" > "$work/patch.log" 2>&1 || die "$name does not apply ($work/patch.log)"
+  build_gcc "$work/gcc-build.log" || die "$name: the gcc build fails ($work/gcc-build.log)"
+  echo "   built ($(( $(now) - start )) s)"
+
+  # The committed corpus against the mutant: reported, not scored (it is not the harness generating).
+  "$out/gcc/cli/ricochet" replay "$tree/replays" > "$work/corpus.txt" 2>&1
+  corpus=$(grep -Eo '[0-9]+ failed' "$work/corpus.txt" | tail -1 | cut -d' ' -f1)
+  corpus=${corpus:-?}
+
+  unit="-"
+  if [ "$do_unit" = 1 ]; then
+    if ninja -C "$out/gcc" -j"$jobs" promise_test > "$work/unit-build.log" 2>&1; then
+      timeout 300 "$out/gcc/core/tests/promise_test" > "$work/unit.txt" 2>&1 && unit=pass ||
+        unit="FAIL:$(grep -Eo '^\[  FAILED  \] Promise\.[A-Za-z]+' "$work/unit.txt" | sed 's/.*Promise\.//' | sort -u | tr '\n' ' ')"
+    else
+      die "$name: promise_test does not build ($work/unit-build.log)"
+    fi
+  fi
+
+  caught="-"
+  log="-"
+  # The property suite, robust, fixed seed and case count.
+  ps=$(now)
+  mkdir -p "$work/props"
+  RICOCHET_KERNEL=robust RICOCHET_REPLAY_DIR="$work/props" RC_PARAMS="seed=$seed max_success=$cases" \
+    timeout 300 "$out/gcc/properties/ricochet_properties" > "$work/props.txt" 2>&1
+  prc=$?
+  failed_props=$(grep -Eo '^\[  FAILED  \] Kernels/[A-Za-z]+\.[A-Za-z]+' "$work/props.txt" | sed 's/.*\.//' | sort -u | tr '\n' ' ')
+  echo "   properties: exit $prc in $(( $(now) - ps )) s; failed: ${failed_props:-none}"
+  hit=$(reproduced_log "$work/props" "$work/props-verdicts.txt")
+  if [ -n "$hit" ]; then
+    caught="property:$(basename "$hit" | sed 's/-[0-9a-f]*\.scene$//')"
+    log=${hit#"$out/"}
+  elif [ "$do_fuzz" = 1 ]; then
+    fs=$(now)
+    build_clang "$work/clang-build.log" || die "$name: the clang build fails ($work/clang-build.log)"
+    echo "   clang build $(( $(now) - fs )) s; fuzzing $fuzz_time s"
+    fs=$(now)
+    timeout $((fuzz_time + 300)) "$out/clang/cli/ricochet" fuzz --kernel robust --time "$fuzz_time" --seed "$seed" \
+      --cache-dir "$work/fuzz-cache" --replay-dir "$work/fuzz" > "$work/fuzz.txt" 2>&1
+    frc=$?
+    echo "   fuzz: exit $frc in $(( $(now) - fs )) s; logs: $(find "$work/fuzz" -name '*.scene' 2>/dev/null | wc -l)"
+    hit=$(reproduced_log "$work/fuzz" "$work/fuzz-verdicts.txt")
+    if [ -n "$hit" ]; then
+      caught="fuzz:$(basename "$hit" | sed 's/^fuzz-//; s/-[0-9a-f]*\.scene$//')"
+      log=${hit#"$out/"}
+    fi
+  fi
+  # Reported but not caught: a harness failure whose saved log does not reproduce it.
+  note=""
+  [ "$caught" = "-" ] && [ "$prc" != 0 ] && note="properties failed (${failed_props% }) but no log reproduces"
+  [ "$caught" = "-" ] && [ "${frc:-0}" = 1 ] && note="${note:+$note; }fuzz failed but no log reproduces"
+  secs=$(( $(now) - start ))
+  grep -v "^$name	" "$results" > "$results.new"; mv "$results.new" "$results"
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "$caught" "$secs" "$log" "$corpus" "${unit% }" "$note" >> "$results"
+  echo "   => ${caught/#-/SURVIVED} ($secs s)${note:+; $note}"
+  unset frc
+done
+
+# Leave the scratch tree unmutated.
+sync_tree
+
+echo
+echo "| mutant | caught by | seconds | log | corpus logs failing | promise_test | note |"
+echo "| --- | --- | ---: | --- | ---: | --- | --- |"
+sort "$results" | while IFS=$'\t' read -r name caught secs log corpus unit note; do
+  echo "| $name | $caught | $secs | $log | $corpus | $unit | $note |"
+done
+total=$(wc -l < "$results")
+killed=$(awk -F'\t' '$2 != "-"' "$results" | wc -l)
+echo
+echo "score: $killed / $total mutants caught by the harness (properties, then fuzz, with a reproducing log)"
+exit 0
