@@ -31,10 +31,12 @@ coverage() {
   rm -rf "$dir/profiles" "$dir/tmp" && mkdir -p "$dir/profiles" "$dir/tmp"
   ctest --preset coverage -j "$jobs" || status=$?
   llvm-profdata-14 merge -sparse "$dir"/profiles/*.profraw -o "$dir/coverage.profdata"
-  # Every instrumented executable of the build (the core is linked into each of them).
+  # Every instrumented executable of the build (the core is linked into each of them): llvm-cov takes the
+  # first one as its argument, the others after -object.
   local objects=() f
   while IFS= read -r f; do
-    llvm-readelf-14 -S "$f" 2>/dev/null | grep -q __llvm_covmap && objects+=(-object "$f")
+    llvm-readelf-14 -S "$f" 2>/dev/null | grep -q __llvm_covmap || continue
+    if [ ${#objects[@]} = 0 ]; then objects=("$f"); else objects+=(-object "$f"); fi
   done < <(find "$dir" -type f -perm -u+x ! -name '*.so*' ! -path '*/CMakeFiles/*' | sort)
   local filter=(-ignore-filename-regex='/core/tests/' "$PWD/core/")
   llvm-cov-14 show -instr-profile="$dir/coverage.profdata" "${objects[@]}" -format=html \
