@@ -55,8 +55,10 @@ StaticIndex::StaticIndex(std::span<const Circle> circles, std::span<const Rect> 
         }
     const double n = static_cast<double>(circles.size() + rects.size());
     const double width = xmax - xmin, height = ymax - ymin;
+    // Bounds lie in ±k_static_far, so h is finite; shapes past 2^120 all sit at the far bound (no width).
     double h = width > 0.0 && height > 0.0 ? std::sqrt(width * height / n) : std::max(width, height) / n;
-    if (!(h > 0.0) || !std::isfinite(h)) h = 1.0;
+    if (!(h > 0.0)) h = 1.0;
+    // Cap the cells at 2^22: about n cells are needed, so only scenes of millions of shapes reach it.
     while ((width / h + 2.0) * (height / h + 2.0) > double(1 << 22)) h *= 1.5;
     inv_ = 1.0 / h;
     ox_ = xmin;
