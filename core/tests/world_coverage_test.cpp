@@ -1,11 +1,14 @@
 // World and its parallel stepper: the same events, worked by hand, on every thread count (more threads
-// than balls, no thread at all, a moved World); what a World says it skips; which ball a range error names.
+// than balls, no thread at all, a moved World); what a World says it skips; which ball a range error names;
+// five walls meeting at one point; record's choice of frames; check names, hash digits and format specs.
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
 #include "ricochet/format.hpp"
+#include "ricochet/hash.hpp"
+#include "ricochet/record.hpp"
 #include "ricochet/world.hpp"
 
 namespace ricochet {
@@ -154,9 +157,6 @@ TEST(WorldRange, ABallAlreadyOutOfRangeIsAnErrorInFrameOne) {
 
 }  // namespace
 }  // namespace ricochet
-
-#include "ricochet/hash.hpp"
-#include "ricochet/record.hpp"
 
 namespace ricochet {
 namespace {
