@@ -69,8 +69,8 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
     std::uint32_t bounced_wall = memory.bounced_wall;
     detail::Keep bounced{memory.bounced_from != 0 ? &walls[memory.bounced_wall] : nullptr, memory.bounced_from};
     for (int bounce = 0;; ++bounce) {
-        // A ball brought to rest does no sweep; a motion below an ulp of the position does not move it.
-        if (v == Vec2{}) break;
+        // A motion below an ulp of the position does not move the ball; v = 0 (a subnormal velocity a
+        // reflection rounded away) gives b = q too, so it needs no test of its own.
         const Vec2 b = q + rest * v;
         if (b == q) break;
         if (bounce == k_max_bounces) {
@@ -79,8 +79,11 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
         }
         // A leg that would leave a contact wall to its far side bounces off that wall instead.
         const Contact* blocked = nullptr;
-        for (std::uint8_t k = 0; k < memory.count && blocked == nullptr; ++k)
-            if (exact::side(b, walls[memory.contacts[k].wall]) == -memory.contacts[k].side) blocked = &memory.contacts[k];
+        for (std::uint8_t k = 0; k < memory.count; ++k)
+            if (exact::side(b, walls[memory.contacts[k].wall]) == -memory.contacts[k].side) {
+                blocked = &memory.contacts[k];
+                break;
+            }
         if (blocked != nullptr) {
             if (StepTrace* t = scratch.trace) {
                 t->legs.push_back({q, b, true, blocked->wall, blocked->side, std::nullopt, 0, 0, std::nullopt});

@@ -55,6 +55,7 @@ StaticIndex::StaticIndex(std::span<const Circle> circles, std::span<const Rect> 
         }
     const double n = static_cast<double>(circles.size() + rects.size());
     const double width = xmax - xmin, height = ymax - ymin;
+    // Bounds lie in ±k_static_far, so the width and height are finite.
     // About one cell per static, two cells of border per axis, at most 2^22 cells.
     const double h = detail::grid_fit(detail::grid_cell_size(width, height, n), width, height, 2.0,
                                       detail::grid_budget(n, double(1 << 22)));

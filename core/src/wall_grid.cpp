@@ -118,7 +118,7 @@ void WallGrid::prefetch(Vec2 p, int stage, std::span<const Wall> walls) const {
         __builtin_prefetch(&items_[first]);
         return;
     }
-    for (std::uint32_t k = first; k < last && k < first + 4; ++k) __builtin_prefetch(&walls[items_[k]]);
+    for (std::uint32_t k = first; k < std::min(last, first + 4); ++k) __builtin_prefetch(&walls[items_[k]]);
 }
 
 }  // namespace ricochet

@@ -191,3 +191,42 @@ TEST(StaticIndexLayout, OneShapeAtAPointAndShapesOnALine) {
 
 }  // namespace
 }  // namespace ricochet
+
+namespace ricochet {
+namespace {
+
+TEST(WallGridLayout, WallsBeyondTheRangeWhoseAreaOverflowsStillGetAGrid) {
+    // Two walls crossing at the origin, 4e200 across: width·height overflows, so the cell side falls
+    // back to 1 and then grows by 1.5 until the cell cap fits; both walls still pass through the origin.
+    const std::vector<Wall> huge = {{{-1e200, -1e200}, {1e200, 1e200}}, {{-1e200, 1e200}, {1e200, -1e200}}};
+    const WallGrid grid(huge);
+    EXPECT_EQ(sorted(query(grid, {-1, 0}, {1, 0})), (Ids{0, 1}));
+    EXPECT_LE(grid.bytes(), 4 * ((std::size_t{1} << 24) + 1 + 2 * 4096));
+}
+
+TEST(WallGridLayout, AnEmptyGridIgnoresCacheHints) {
+    // No cells to fetch from: every stage returns before reading the (empty) cell arrays.
+    const WallGrid none(std::span<const Wall>{});
+    for (int stage : {0, 1, 2}) none.prefetch({0, 0}, stage, {});
+    EXPECT_EQ(none.bytes(), 0u);
+}
+
+TEST(StaticIndexLayout, ShapesPastTwoToThe120SitAtTheFarBound) {
+    // A circle at (2^200, 2^200): both box ends clamp to 2^120 in x and in y, no width and no height, so
+    // one cell of side 1 holds it; a point anywhere finds it (a superset, as the index promises).
+    const std::vector<Circle> corner = {{{0x1p200, 0x1p200}, 1}};
+    const StaticIndex one(corner, {});
+    EXPECT_EQ(one.query({0x1p200, 0x1p200}).circles.size(), 1u);
+    EXPECT_EQ(one.query({0, 0}).circles.size(), 1u);
+    // With a rect at the origin: x spans the range, y too; the far circle and the rect part ways.
+    const std::vector<Circle> far_right = {{{0x1p200, 0}, 1}};
+    const StaticIndex two(far_right, std::vector<Rect>{{-1, -1, 1, 1}});
+    const auto at_far = two.query({0x1p200, 0}), at_origin = two.query({0, 0});
+    EXPECT_EQ(at_far.circles.size(), 1u);
+    EXPECT_TRUE(at_far.rects.empty());
+    EXPECT_TRUE(at_origin.circles.empty());
+    EXPECT_EQ(at_origin.rects.size(), 1u);
+}
+
+}  // namespace
+}  // namespace ricochet

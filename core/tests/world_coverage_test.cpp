@@ -1,11 +1,14 @@
 // World and its parallel stepper: the same events, worked by hand, on every thread count (more threads
-// than balls, no thread at all, a moved World); what a World says it skips; which ball a range error names.
+// than balls, no thread at all, a moved World); what a World says it skips; which ball a range error names;
+// five walls meeting at one point; record's choice of frames; check names, hash digits and format specs.
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
 #include "ricochet/format.hpp"
+#include "ricochet/hash.hpp"
+#include "ricochet/record.hpp"
 #include "ricochet/world.hpp"
 
 namespace ricochet {
@@ -150,6 +153,79 @@ TEST(WorldRange, ABallAlreadyOutOfRangeIsAnErrorInFrameOne) {
     ASSERT_TRUE(error);
     EXPECT_EQ(error->ball, 0u);
     EXPECT_EQ(lines(events), (std::vector<std::string>{fmt::format("state 1 0 {} 0 0 0", 0x1p257)}));
+}
+
+}  // namespace
+}  // namespace ricochet
+
+namespace ricochet {
+namespace {
+
+TEST(WorldSkips, RectsAloneGetTheStaticIndex) {
+    Scene s;
+    s.rects = {{0, 0, 1, 1}};
+    EXPECT_EQ(World(s, KernelId::robust).skipped(),
+              "static tests: one cell lookup per ball; exact fallback: kept (no filter-only proof)");
+}
+
+TEST(WorldContacts, FiveWallsMeetingAtTheEndPointAreMoreThanMemoryHolds) {
+    // Five walls through the origin (slopes 1, −1, 0, ∞, 1/2); the ball's leg (3, 1) → (0, 0), of slope
+    // 1/3, crosses none of them before its end, where all five meet: more contacts than BallMemory's four,
+    // so the end is walked back to q + (1 − 2^-50)·(−3, −1) = (3·2^-50, 2^-50), and the hit is wall 0's
+    // (the lowest index of a tie).
+    Scene s;
+    s.walls = {{{-4, -4}, {4, 4}}, {{-4, 4}, {4, -4}}, {{-4, 0}, {4, 0}}, {{0, -4}, {0, 4}}, {{-4, -2}, {4, 2}}};
+    s.balls = {{{3, 1}, {-3, -1}}};
+    const std::vector<Event> ev = run_scene(s, KernelId::robust, 1, {.broad_phase = BroadPhase::none});
+    ASSERT_GE(ev.size(), 3u);
+    EXPECT_EQ(ev[1].kind, Event::Kind::hit);
+    EXPECT_EQ(ev[1].index, 0u);
+    EXPECT_EQ(ev[1].pos, (Vec2{0x3p-50, 0x1p-50}));
+}
+
+TEST(Record, LongRunsRecordEightSpreadFramesOfTheFirstEightBalls) {
+    // 9 balls × 17 frames > 64: frames 16·k/8 for k = 1..8 (2, 4, …, 16), balls 0..7 only.
+    Scene s;
+    s.frames = 16;
+    for (int k = 0; k < 9; ++k) s.balls.push_back({{double(k), 0}, {0, 1}});
+    const CheckedRun run = record_expectations(s);
+    ASSERT_FALSE(run.error);
+    ASSERT_EQ(s.expect_states.size(), 64u);
+    EXPECT_EQ(s.expect_hash, run.hash);
+    for (std::size_t i = 0; i < s.expect_states.size(); ++i) {
+        const ExpectState& e = s.expect_states[i];
+        EXPECT_EQ(e.frame, std::int64_t(2 * (i / 8 + 1))) << i;
+        EXPECT_EQ(e.ball, std::uint32_t(i % 8)) << i;
+        EXPECT_EQ(e.state, (Ball{{double(i % 8), double(e.frame)}, {0, 1}})) << i;
+    }
+}
+
+TEST(Record, ARunThatLeavesTheRangeRecordsNothing) {
+    Scene s;
+    s.frames = 3;
+    s.balls = {{{0, 1e77}, {0, 1e77}}};
+    s.expect_hash = 7;
+    const CheckedRun run = record_expectations(s);
+    ASSERT_TRUE(run.error);
+    EXPECT_EQ(run.error->frame, 1);
+    EXPECT_EQ(s.expect_hash, 7u);
+    EXPECT_TRUE(s.expect_states.empty());
+}
+
+TEST(NamesAndHashes, OutOfEnumChecksAndHashDigitsOutsideTheAlphabet) {
+    EXPECT_EQ(check_name(static_cast<Check>(99)), "?");
+    EXPECT_EQ(parse_check("?"), std::nullopt);
+    // ' ' sorts below '0', ':' between '9' and 'A', '`' between 'F' and 'a'.
+    EXPECT_FALSE(parse_hash("000000000000000 "));
+    EXPECT_FALSE(parse_hash("000000000000000:"));
+    EXPECT_FALSE(parse_hash("000000000000000`"));
+    EXPECT_EQ(parse_hash("00000000000000aF"), 0xafULL);
+}
+
+TEST(FormatSpecs, CoreValuesAcceptAnEmptySpecAndRefuseAnyOther) {
+    EXPECT_EQ(fmt::format("{:}", Vec2{1, -0.5}), "(1, -0.5)");
+    EXPECT_THROW((void)fmt::format(fmt::runtime("{:>9}"), Vec2{1, 2}), fmt::format_error);
+    EXPECT_THROW((void)fmt::format(fmt::runtime("{:x}"), Wall{}), fmt::format_error);
 }
 
 }  // namespace
