@@ -153,7 +153,7 @@ for p in "${patches[@]}"; do
   if [ "$do_unit" = 1 ]; then
     if ninja -C "$out/gcc" -j"$jobs" promise_test > "$work/unit-build.log" 2>&1; then
       timeout 300 "$out/gcc/core/tests/promise_test" > "$work/unit.txt" 2>&1 && unit=pass ||
-        unit="FAIL:$(grep -Eo '^\[  FAILED  \] Promise\.[A-Za-z]+' "$work/unit.txt" | sed 's/.*Promise\.//' | cut -c1-40 | tr '\n' ' ')"
+        unit="FAIL:$(grep -Eo '^\[  FAILED  \] Promise\.[A-Za-z]+' "$work/unit.txt" | sed 's/.*Promise\.//' | sort -u | tr '\n' ' ')"
     else
       die "$name: promise_test does not build ($work/unit-build.log)"
     fi
