@@ -1,6 +1,6 @@
 // Failure logs: the scene log a harness saves when a run breaks a check (docs/scene-log.md, "Saved
-// failures"). On the code that produced it, `ricochet replay` fails the log with the same check at the
-// same frame (a lecture kernel's log expects that failure, so replay passes while it reproduces).
+// failure logs"). On the code that produced it, `ricochet replay` fails the log with the same check at
+// the same frame (a lecture kernel's log expects that failure, so replay passes while it reproduces).
 #pragma once
 
 #include <cstdint>
