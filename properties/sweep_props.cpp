@@ -38,5 +38,12 @@ TEST_P(Sweep, BounceSpeed) {
                  GetParam());
 }
 
+/// Every well-conditioned hit point is within k_hit_accuracy_ulps·ε·M of the exact crossing of its leg.
+TEST_P(Sweep, HitAccuracy) {
+    run_property({"HitAccuracy", Check::accuracy, gen::wall_scene(3, 4), checked({Check::accuracy}, classify_legs),
+                  3000},
+                 GetParam());
+}
+
 }  // namespace
 }  // namespace ricochet::props

@@ -20,6 +20,7 @@ std::string_view check_name(Check c) {
         case Check::round_trip: return "round-trip";
         case Check::no_escape: return "no-escape";
         case Check::bounce_side: return "bounce-side";
+        case Check::accuracy: return "accuracy";
     }
     return "?";
 }

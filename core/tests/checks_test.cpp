@@ -42,6 +42,26 @@ TEST(Checks, EveryCheckHoldsOnThePinballUnderRobustAndExact) {
         }
 }
 
+TEST(Checks, AccuracyFailsForFloatsRoundingAndHoldsForRobust) {
+    // The leg (0.1, 0.1) → (2.1, 0.3) crosses the wall x = 1 at a steep angle (well-conditioned): robust's
+    // B_i is within a few ulps, lecture-float's is off by about 2^-24 relative, ~10^6 times the bound.
+    Scene s;
+    s.frames = 1;
+    s.walls = {{{1, -1}, {1, 1}}};
+    s.balls = {{{0.1, 0.1}, {2, 0.2}}};
+    EXPECT_FALSE(first_failure(s, KernelId::robust, Check::accuracy));
+    EXPECT_FALSE(first_failure(s, KernelId::lecture_double, Check::accuracy));
+    const auto f = first_failure(s, KernelId::lecture_float, Check::accuracy);
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->frame, 1);
+    EXPECT_NE(f->message.find("eps*M from the exact crossing"), std::string::npos) << f->message;
+    // The same leg grazing the wall (|e × d| < |e|∞·|d|∞ / 4) is not held to the bound.
+    Scene graze = s;
+    graze.walls = {{{-1, 0.2}, {3, 0.2 + 0.5 / 1024}}};
+    graze.balls = {{{0.1, 0.1}, {2, 0.2}}};
+    EXPECT_FALSE(first_failure(graze, KernelId::lecture_float, Check::accuracy));
+}
+
 TEST(Checks, NoTunnelFailsWhenTheLectureKernelLeavesThroughAWallEnd) {
     Scene s;
     s.frames = 5;

@@ -16,6 +16,7 @@
 #include "ricochet/hash.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/scene_log_format.hpp"
+#include "ricochet/truth.hpp"
 
 namespace ricochet {
 namespace {
@@ -92,6 +93,31 @@ TEST(Promise, RobustHitTimeAndPointAreWithinAFewUlpsOfExactForWellConditionedHit
     EXPECT_GT(checked, 20000) << "the workload must reach well-conditioned hits";
     std::printf("well-conditioned hits: %d; worst |dB| = %.2f eps*M, worst |dt|*|d| = %.2f eps*M (bound %.0f)\n",
                 checked, worst_b, worst_t, k_hit_ulps_of_m);
+}
+
+TEST(Promise, TheAccuracyCheckHoldsRobustToTheBoundAndSeesAPointMovedPastIt) {
+    // truth::hit_accuracy (the `accuracy` check) on the same workload: robust's B_i is within the bound,
+    // the point moved by 300·ε·M in x is not, moved by 100·ε·M it still is.
+    std::mt19937_64 rng(20261201);
+    int checked = 0;
+    for (double s : {1.0, 0x1p-30, 0x1p30, 1e15, 0x1p200})
+        for (int n = 0; n < 4000; ++n) {
+            const Case c = random_case(rng, s);
+            const Vec2 be = c.bs + c.v;
+            if (c.w.p0 == c.w.p1 || !well_conditioned(c.w, be - c.bs)) continue;
+            const Sweep got = sweep(KernelId::robust, c.bs, c.v, c.w);
+            if (!got.hit()) continue;
+            const truth::HitAccuracy r = truth::hit_accuracy(c.bs, be, c.w, got.point, 256.0);
+            if (!r.conditioned) continue;  // the long-double filter may let a borderline case through
+            ++checked;
+            ASSERT_TRUE(r.within) << "scale " << s << " case " << n << ": " << r.error << " eps*M";
+            const double unit = magnitude(c.bs, be, c.w) * k_eps;
+            const double near = truth::hit_accuracy(c.bs, be, c.w, {got.point.x + 100 * unit, got.point.y}, 256.0).error;
+            EXPECT_TRUE(truth::hit_accuracy(c.bs, be, c.w, {got.point.x + 100 * unit, got.point.y}, 256.0).within)
+                << near;
+            EXPECT_FALSE(truth::hit_accuracy(c.bs, be, c.w, {got.point.x + 300 * unit, got.point.y}, 256.0).within);
+        }
+    EXPECT_GT(checked, 4000);
 }
 
 /// One frame, one wall, one ball under kernel k.

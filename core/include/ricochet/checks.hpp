@@ -65,8 +65,17 @@
 //   bounce-side    After a ball hits a wall from side s (the side of its previous printed point; along the
 //                  line, the side it last met that wall from), none of its printed points lies strictly on the
 //                  wall's side −s until its next hit, that hit's point included (BallMemory, kernel.hpp).
+//   accuracy       kernel.hpp's "t_i and B_i within a few ulps of the exact crossing for well-conditioned
+//                  hits", made precise for what a log shows, B_i: for each leg a → b of the frame's legs
+//                  that took a hit, with e = P1 − P0 of its wall and d = b − a, if |e × d| ≥ |e|∞·|d|∞ / 4
+//                  and |e|∞, |d|∞ ≥ 2^−400 (exactly), the printed hit point is within
+//                  k_hit_accuracy_ulps·ε·M (256 · 2^−53 · M, M the largest magnitude of the coordinates of
+//                  a, b, P0, P1) of the exact crossing a + s·d, s = BC(a) / (BC(a) − BC(b)), in each
+//                  coordinate. The same bound for every kernel: robust keeps it (its derivation is in
+//                  promise_test.cpp), lecture-float does not (2^−24 rounding). The exact kernel's legs are
+//                  rational, so it has none to check (its B_i is its exact crossing, rounded once).
 //
-// speed and oracle read the frame's StepTrace: each ball is stepped again from its state and memory before
+// speed, oracle and accuracy read the frame's StepTrace: each ball is stepped again from its state and memory before
 // the frame with a trace (the same wall index); that step must end in the run's state bit for bit, else
 // the first of them in the scene's order fails for that ball.
 //
@@ -95,6 +104,11 @@ struct SpeedBound {
 /// The kernel's stated speed bound, from the kernel table (KernelOps): k_speed_rel_bound and
 /// k_speed_abs_bound for robust and exact; the lecture kernels' own (kernel_lecture.hpp).
 SpeedBound speed_bound(KernelId kernel);
+
+/// The `accuracy` check's bound on a well-conditioned hit point's error, in units of ε·M (ε = 2^−53, M the
+/// largest coordinate of the leg and the wall): robust's construction errs by at most 130 (derivation in
+/// core/tests/promise_test.cpp), so 256 leaves a factor of 2.
+inline constexpr double k_hit_accuracy_ulps = 256.0;
 
 /// The first broken invariant of a run.
 struct CheckFailure {

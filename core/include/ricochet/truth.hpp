@@ -54,6 +54,25 @@ Miss leg_miss(Vec2 a, Vec2 b, const Wall& w);
 /// The first wall the leg a → b hits (the earliest exact crossing, the lowest index on a tie), or −1.
 long first_hit(Vec2 a, Vec2 b, std::span<const Wall> walls);
 
+/// How close a hit point is to the exact crossing (the `accuracy` check, checks.hpp).
+struct HitAccuracy {
+    /// |e × d| ≥ |e|∞·|d|∞ / 4 (e = P1 − P0, d = b − a: the leg crosses the line at an angle that is not
+    /// grazing) and |e|∞, |d|∞ ≥ 2^−400 (no product of the construction underflows), all exactly.
+    bool conditioned = false;
+    /// |p − X| ≤ ulps·ε·M in each coordinate, exactly, where X = a + s·d with s = BC(a) / (BC(a) − BC(b))
+    /// is the exact crossing of the leg's line with the wall's, ε = 2^−53 and M the largest magnitude of the
+    /// coordinates of a, b, P0 and P1. Only meaningful when conditioned.
+    bool within = false;
+    /// max |p − X| per coordinate in units of ε·M, rounded (for messages).
+    double error = 0.0;
+};
+/// The hit point p of the leg a → b on w against the exact crossing, with the bound ulps·ε·M. kept, if not
+/// null, is the wall the ball last bounced off, met from side kept_from (BallMemory): the bounce-side rule
+/// keeps every printed point off that line's side −kept_from, so a crossing that does not lie strictly on
+/// side kept_from may be out of the ball's reach, and the hit is not conditioned.
+HitAccuracy hit_accuracy(Vec2 a, Vec2 b, const Wall& w, Vec2 p, double ulps, const Wall* kept = nullptr,
+                         int kept_from = 0);
+
 /// kernel.hpp's no-tunnelling definition, followed independently of ricochet::TunnelChecker: a piece
 /// from one open side to the other through the closed segment, or arriving on the closed segment from
 /// one side and leaving to the other, tunnels; after moving along the line either side is fine.
