@@ -1,23 +1,12 @@
 #include "path.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numeric>
 
 #include "ricochet/predicates.hpp"
 
 namespace ricochet::detail {
-namespace {
-
-/// The points make_safe walks back to, as fractions of the piece q → r, nearest first. A rounding error of
-/// a few ulps is undone by the first steps (2^-50 of the piece is a few ulps of its larger coordinate);
-/// the coarser ones cover a point rounded across several lines at once; the last, 0, is q itself, where
-/// the ball already is.
-constexpr std::array<double, 8> k_walk_back = {1 - 0x1p-50, 1 - 0x1p-46, 1 - 0x1p-40, 1 - 0x1p-30,
-                                               1 - 0x1p-20, 1 - 0x1p-10, 0.5,         0.0};
-
-}  // namespace
 
 std::span<const std::uint32_t> candidates(std::span<const Wall> walls, const WallIndex* index, Vec2 a, Vec2 b,
                                           std::vector<std::uint32_t>& out, std::vector<std::uint32_t>& all) {
@@ -105,12 +94,24 @@ Vec2 make_safe(const SafePiece& piece) {
         return piece_allowed(q, c, piece.memory, piece.walls, piece.index, piece.scratch);
     };
     if (ok(r)) return r;
+    // Walk back from r towards q: first by 1, 2, 4, … ulps of the piece's largest coordinate M, as
+    // fractions g of the piece (one ulp of M is about g = 2^-52·M / |d|∞ of it), so a point rounded a few
+    // ulps across a line comes back within a few ulps (the `accuracy` check holds robust's hit points to
+    // 256·ε·M), and the doubling steps up to a quarter of the piece cover a point rounded across several
+    // lines at once; then half the piece, then q itself, where the ball already is. Fixed fractions of the
+    // piece (2^-50, 2^-46, …, 2^-10, as before) moved a short piece far from the origin by 2^-20 of its
+    // length, hundreds of ulps of M, before the first that was not a no-op.
     const Vec2 d = r - q;
-    for (double f : k_walk_back) {
-        const Vec2 c = f == 0.0 ? q : q + f * d;
-        if (ok(c)) return c;
+    const double m = std::max({std::fabs(q.x), std::fabs(q.y), std::fabs(r.x), std::fabs(r.y)});
+    const double d_inf = std::max(std::fabs(d.x), std::fabs(d.y));
+    // An ulp of M that underflows (M subnormal) starts the walk at 2^-60 of the piece; g doubles, so the
+    // loop runs at most 60 times.
+    for (double g = std::max(m * 0x1p-52 / d_inf, 0x1p-60); g < 0.5; g *= 2.0) {
+        const Vec2 c = q + (1.0 - g) * d;
+        if (c != r && ok(c)) return c;
     }
-    return q;
+    const Vec2 half = q + 0.5 * d;
+    return ok(half) ? half : q;
 }
 
 }  // namespace ricochet::detail

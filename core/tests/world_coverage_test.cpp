@@ -171,8 +171,9 @@ TEST(WorldSkips, RectsAloneGetTheStaticIndex) {
 TEST(WorldContacts, FiveWallsMeetingAtTheEndPointAreMoreThanMemoryHolds) {
     // Five walls through the origin (slopes 1, −1, 0, ∞, 1/2); the ball's leg (3, 1) → (0, 0), of slope
     // 1/3, crosses none of them before its end, where all five meet: more contacts than BallMemory's four,
-    // so the end is walked back to q + (1 − 2^-50)·(−3, −1) = (3·2^-50, 2^-50), and the hit is wall 0's
-    // (the lowest index of a tie).
+    // so the end is walked back by one ulp of M = 3, as a fraction g = 3·2^-52 / 3 = 2^-52 of the piece:
+    // q + (1 − 2^-52)·(−3, −1), where (1 − 2^-52)·(−3) = −3 + 1.5·2^-51 is a tie that rounds to even,
+    // −3 + 2^-50, so the point is (2^-50, 2^-52); and the hit is wall 0's (the lowest index of a tie).
     Scene s;
     s.walls = {{{-4, -4}, {4, 4}}, {{-4, 4}, {4, -4}}, {{-4, 0}, {4, 0}}, {{0, -4}, {0, 4}}, {{-4, -2}, {4, 2}}};
     s.balls = {{{3, 1}, {-3, -1}}};
@@ -180,7 +181,7 @@ TEST(WorldContacts, FiveWallsMeetingAtTheEndPointAreMoreThanMemoryHolds) {
     ASSERT_GE(ev.size(), 3u);
     EXPECT_EQ(ev[1].kind, Event::Kind::hit);
     EXPECT_EQ(ev[1].index, 0u);
-    EXPECT_EQ(ev[1].pos, (Vec2{0x3p-50, 0x1p-50}));
+    EXPECT_EQ(ev[1].pos, (Vec2{0x1p-50, 0x1p-52}));
 }
 
 TEST(Record, LongRunsRecordEightSpreadFramesOfTheFirstEightBalls) {
