@@ -42,8 +42,9 @@
 //                  (the earliest exact crossing, the lowest index on a tie; a wall the kernel's own rule
 //                  skips, lecture's wall just bounced off, left out); a leg it ended at a contact wall ends
 //                  exactly on that wall's far side; the hits it took, in order, are the frame's hit events.
-//                  And the frame's first hit equals the exact kernel's from the same state and memory. The
-//                  exact kernel's legs are rational, so it has only the static parts.
+//                  And the frame's first hit equals the exact kernel's from the same state and memory (unless
+//                  the exact kernel's frame leaves the accepted range). The exact kernel's legs are rational,
+//                  so it has only the static parts.
 //   swap           circles_overlap(a, b) = circles_overlap(b, a) and rects_overlap likewise for every pair of
 //                  static shapes (frame 0); for each printed state p, v and every wall w, the wall walked the
 //                  other way gives p and Be = p + v the opposite side and the sweep from p the same hit or miss.

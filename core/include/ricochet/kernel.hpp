@@ -39,7 +39,8 @@
 // k_coordinate_limit (2^256 ≈ 1.2e77), and every ball position staying in that range. Predicates are
 // exact for every finite double; the range keeps constructions (t_i, B_i, v') free of overflow.
 // Robust error bounds, inside the range: t_i and B_i are within a few ulps of the exact crossing of
-// the leg for well-conditioned hits (|n̂·d| not tiny against |d|); v' satisfies
+// the leg for well-conditioned hits (|n̂·d| not tiny against |d|; the `accuracy` check of checks.hpp
+// makes both precise: 256·ε·M for B_i when |e × d| ≥ |e|∞·|d|∞/4); v' satisfies
 // | |v'| − |v| | ≤ k_speed_rel_bound·|v| + k_speed_abs_bound (2^-48 and 2^-1068) per bounce.
 #pragma once
 
