@@ -108,7 +108,10 @@ struct LectureKernel {
                 pos = pos + d;
                 break;
             }
-            if (traced != nullptr) traced->hit = best;
+            if (traced != nullptr) {
+                traced->hit = best;
+                traced->hit_t = static_cast<double>(hit.t);
+            }
             if (bounce == k_max_bounces) {
                 status = FrameStatus::bounce_limit;
                 break;

@@ -139,8 +139,11 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
             q = end;
             break;
         }
-        if (traced != nullptr) traced->hit = best;
         const double s = crossing(q, b, walls[best], best_sb);
+        if (traced != nullptr) {
+            traced->hit = best;
+            traced->hit_t = s;
+        }
         const Vec2 x = detail::make_safe({.q = q, .r = best_sb == 0 ? b : q + s * (b - q), .memory = memory,
                                           .walls = walls, .index = index, .scratch = scratch,
                                           .keep = {detail::Keep{&walls[best], best_sq}, bounced}});

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "ricochet/checks.hpp"
+#include "ricochet/kernel.hpp"
 #include "ricochet/step_trace.hpp"
 
 namespace ricochet {
@@ -54,12 +55,41 @@ TEST(Checks, AccuracyFailsForFloatsRoundingAndHoldsForRobust) {
     const auto f = first_failure(s, KernelId::lecture_float, Check::accuracy);
     ASSERT_TRUE(f);
     EXPECT_EQ(f->frame, 1);
-    EXPECT_NE(f->message.find("eps*M from the exact crossing"), std::string::npos) << f->message;
+    // Its t_i (the trace's leg fraction) is off first; the printed point's own bound is what it is off by next.
+    EXPECT_NE(f->message.find("at t_i = "), std::string::npos) << f->message;
+    EXPECT_NE(f->message.find("eps*M along the leg from the exact crossing"), std::string::npos) << f->message;
     // The same leg grazing the wall (|e × d| < |e|∞·|d|∞ / 4) is not held to the bound.
     Scene graze = s;
     graze.walls = {{{-1, 0.2}, {3, 0.2 + 0.5 / 1024}}};
     graze.balls = {{{0.1, 0.1}, {2, 0.2}}};
     EXPECT_FALSE(first_failure(graze, KernelId::lecture_float, Check::accuracy));
+}
+
+TEST(Checks, OracleHoldsAtTheBounceLimitAndTheTraceSaysItStopped) {
+    // A corridor 2^-40 wide crossed at speed 1: every frame needs thousands of bounces and stops at 16.
+    // oracle counts the bounces against the spec's 16 and finds the ball at the last point of its path.
+    const double h = 0x1p-40;
+    Scene s;
+    s.frames = 3;
+    s.walls = {{{-10, 0}, {10, 0}}, {{10, h}, {-10, h}}};
+    s.balls = {{{0, h / 2}, {1, 1}}};
+    for (KernelId k : {KernelId::robust, KernelId::lecture_double, KernelId::lecture_float}) {
+        // The lecture kernels' first frame only: in the next they take a ball on the wall leaving it for a hit.
+        const std::int64_t frames = k == KernelId::robust ? s.frames : 1;
+        const CheckedRun run = run_checked(s, k, frames, std::vector<Check>{Check::oracle});
+        EXPECT_FALSE(run.failure) << kernel_name(k) << ": " << run.failure->str();
+        std::size_t hits = 0;
+        for (const Event& e : run.events) hits += e.kind == Event::Kind::hit && e.frame == 1;
+        EXPECT_EQ(hits, 16u) << kernel_name(k);
+    }
+    StepTrace trace;
+    StepScratch scratch;
+    scratch.trace = &trace;
+    Ball ball = s.balls[0];
+    BallMemory memory;
+    std::vector<HitEvent> hits;
+    EXPECT_EQ(step_ball(KernelId::robust, ball, memory, s.walls, hits, scratch), FrameStatus::bounce_limit);
+    EXPECT_EQ(trace.legs.size(), 16u) << "robust stops before sweeping a 17th leg";
 }
 
 TEST(Checks, NoTunnelFailsWhenTheLectureKernelLeavesThroughAWallEnd) {

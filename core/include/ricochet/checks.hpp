@@ -31,7 +31,8 @@
 //                  about every wall of non-zero length keeps to the bound with m = 1. A non-finite velocity
 //                  (or v′) is outside every bound.
 //   deterministic  A second World stepped in lockstep prints the same events, bit for bit, and so the same
-//                  running hash.
+//                  running hash; and that hash is XXH64 (seed 0) over the 56-byte records of the spec's table
+//                  (docs/scene-log.md, hash.hpp), encoded by the check itself, independently of hash.cpp.
 //   oracle         Every decision equals the exact one. At frame 0, circles_overlap and rects_overlap of
 //                  every ordered pair of static shapes. At each printed state p: classify(p, w) for every
 //                  wall, and the overlap events the frame printed for the ball are exactly the circles and
@@ -67,14 +68,17 @@
 //                  line, the side it last met that wall from), none of its printed points lies strictly on the
 //                  wall's side −s until its next hit, that hit's point included (BallMemory, kernel.hpp).
 //   accuracy       kernel.hpp's "t_i and B_i within a few ulps of the exact crossing for well-conditioned
-//                  hits", made precise for what a log shows, B_i: for each leg a → b of the frame's legs
-//                  that took a hit, with e = P1 − P0 of its wall and d = b − a, if |e × d| ≥ |e|∞·|d|∞ / 4
-//                  and |e|∞, |d|∞ ≥ 2^−400 (exactly), the printed hit point is within
-//                  k_hit_accuracy_ulps·ε·M (256 · 2^−53 · M, M the largest magnitude of the coordinates of
-//                  a, b, P0, P1) of the exact crossing a + s·d, s = BC(a) / (BC(a) − BC(b)), in each
-//                  coordinate. The same bound for every kernel: robust keeps it (its derivation is in
-//                  promise_test.cpp), lecture-float does not (2^−24 rounding). The exact kernel's legs are
-//                  rational, so it has none to check (its B_i is its exact crossing, rounded once).
+//                  hits", made precise: for each leg a → b of the frame's legs that took a hit, with
+//                  e = P1 − P0 of its wall and d = b − a, if |e × d| ≥ |e|∞·|d|∞ / 4 and |e|∞, |d|∞ ≥ 2^−400
+//                  (exactly), then with s = BC(a) / (BC(a) − BC(b)) the exact crossing's leg fraction and
+//                  the bound k_hit_accuracy_ulps·ε·M (256 · 2^−53 · M, M the largest magnitude of the
+//                  coordinates of a, b, P0, P1): the kernel's t_i for the leg (the trace's; logs do not print
+//                  it) has |t_i − s|·|d|∞ within the bound, and the printed hit point is within the bound of
+//                  a + s·d in each coordinate, unless a + s·d does not lie strictly on the side the ball keeps
+//                  of the wall it last bounced off (bounce-side puts it out of reach; t_i is still checked).
+//                  The same bound for every kernel: robust keeps it (its derivation is in promise_test.cpp),
+//                  lecture-float does not (2^−24 rounding). The exact kernel's legs are rational, so it has
+//                  none to check (its B_i is its exact crossing, rounded once).
 //
 // speed, oracle and accuracy read the frame's StepTrace: each ball is stepped again from its state and memory before
 // the frame with a trace (the same wall index); that step must end in the run's state bit for bit, else

@@ -34,6 +34,8 @@ struct TracedLeg {
     /// The walls the kernel skipped without a decision because of its own rule (lecture: the wall just
     /// bounced off), or none.
     std::optional<std::uint32_t> skipped;
+    /// The kernel's t_i of the hit it took: the fraction of this leg at which it put the crossing (0 without one).
+    double hit_t = 0.0;
 };
 
 /// One ball's frame as its kernel stepped it.
@@ -46,12 +48,16 @@ struct StepTrace {
     /// False for a kernel whose legs are not doubles (exact: rational legs, rounded once at the end);
     /// then legs and decisions stay empty and only reflections is filled.
     bool legs_traced = true;
+    /// The frame stopped at the bounce limit (FrameStatus::bounce_limit). Set by whoever stepped the ball
+    /// with this trace (run_checked), from what step_ball returned.
+    bool stopped_at_limit = false;
     /// Empties the trace for the next frame.
     void clear() {
         legs.clear();
         decisions.clear();
         reflections = 0;
         legs_traced = true;
+        stopped_at_limit = false;
     }
 };
 

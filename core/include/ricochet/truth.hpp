@@ -72,6 +72,10 @@ struct HitAccuracy {
 /// side kept_from may be out of the ball's reach, and the hit is not conditioned.
 HitAccuracy hit_accuracy(Vec2 a, Vec2 b, const Wall& w, Vec2 p, double ulps, const Wall* kept = nullptr,
                          int kept_from = 0);
+/// The hit time t (the leg fraction a kernel put the crossing at) of the leg a → b on w: conditioned as
+/// above, and within when |t − s|·|d|∞ ≤ ulps·ε·M (the error of t_i measured as the distance it moves the
+/// point along the leg). No bounce-side exemption: t_i is the crossing's, whatever point is printed.
+HitAccuracy hit_time_accuracy(Vec2 a, Vec2 b, const Wall& w, double t, double ulps);
 
 /// kernel.hpp's no-tunnelling definition, followed independently of ricochet::TunnelChecker: a piece
 /// from one open side to the other through the closed segment, or arriving on the closed segment from

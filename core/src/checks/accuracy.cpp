@@ -1,4 +1,4 @@
-// accuracy: every well-conditioned hit point B_i lies within k_hit_accuracy_ulps·ε·M of the exact
+// accuracy: every well-conditioned hit's t_i and B_i lie within k_hit_accuracy_ulps·ε·M of the exact
 // crossing of the leg the kernel swept (checks.hpp).
 #include <fmt/format.h>
 
@@ -59,6 +59,15 @@ private:
             if (!std::isfinite(leg.from.x) || !std::isfinite(leg.from.y) || !std::isfinite(leg.to.x) ||
                 !std::isfinite(leg.to.y))
                 break;
+            // t_i: the fraction of the leg the kernel put the crossing at (the trace's, since a log does not
+            // print it), against the exact s.
+            const truth::HitAccuracy rt =
+                truth::hit_time_accuracy(leg.from, leg.to, scene_.walls[hit.index], leg.hit_t, k_hit_accuracy_ulps);
+            if (rt.conditioned && !rt.within)
+                return failure(Check::accuracy, f.index, i,
+                               fmt::format("leg {} ({} -> {}) hits wall {} at t_i = {}, {:.4g} eps*M along the leg "
+                                           "from the exact crossing (bound {})",
+                                           l, leg.from, leg.to, hit.index, leg.hit_t, rt.error, k_hit_accuracy_ulps));
             const truth::HitAccuracy r = truth::hit_accuracy(leg.from, leg.to, scene_.walls[hit.index], hit.pos,
                                                              k_hit_accuracy_ulps, keep_now, keep_now_from);
             if (r.conditioned && !r.within)

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "frame_check.hpp"
+#include "ricochet/bits.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/truth.hpp"
 
@@ -97,6 +98,7 @@ private:
             if (e.kind == Event::Kind::hit && e.ball == i) printed.push_back(e.index);
         if (!trace.legs_traced) return std::nullopt;
         std::vector<std::uint32_t> traced;
+        std::size_t blocked = 0;  // legs that ended reflecting off a contact wall
         std::vector<bool> decided(scene_.walls.size());
         for (std::size_t l = 0; l < trace.legs.size(); ++l) {
             const TracedLeg& leg = trace.legs[l];
@@ -107,6 +109,7 @@ private:
                 !std::isfinite(leg.to.y))
                 return fail(fmt::format("{}: the kernel swept a leg whose end is not finite", where));
             if (leg.blocked) {
+                ++blocked;
                 // The leg ends on the far side of the contact wall it was stopped by.
                 if (truth::side(leg.to, scene_.walls[leg.blocked_wall]) != -leg.blocked_side)
                     return fail(fmt::format("{} is taken as leaving contact wall {} to its far side, but it does not "
@@ -138,10 +141,31 @@ private:
             if (leg.hit) traced.push_back(*leg.hit);
         }
         // A hit found at the bounce limit is not taken: the ball stays at its last safe point.
-        if (traced.size() == printed.size() + 1 && printed.size() == static_cast<std::size_t>(k_max_bounces))
-            traced.pop_back();
+        if (trace.stopped_at_limit && traced.size() == printed.size() + 1) traced.pop_back();
         if (traced != printed)
             return fail(fmt::format("the frame printed {} hit(s), the legs swept give {}", printed.size(), traced.size()));
+        // The bounce limit, as the spec states it ("at most 16 bounces a frame"; the number is spelled here, not
+        // read from limits.hpp, so that a wrong k_max_bounces shows): a bounce is a hit taken or a reflection
+        // off a contact wall; a frame stops at the limit only after 16, and then the ball stays at the last
+        // point of its path.
+        constexpr std::size_t k_spec_bounce_limit = 16;
+        const std::size_t bounces = printed.size() + blocked;
+        if (bounces > k_spec_bounce_limit || (trace.stopped_at_limit && bounces != k_spec_bounce_limit))
+            return fail(fmt::format("the frame made {} bounce(s) ({} hit(s), {} off contact walls) and {} at the limit; "
+                                    "the limit is {} bounces",
+                                    bounces, printed.size(), blocked, trace.stopped_at_limit ? "stopped" : "did not stop",
+                                    k_spec_bounce_limit));
+        if (trace.stopped_at_limit) {
+            const Event* state = nullptr;
+            const Event* last_hit = nullptr;
+            for (const Event& e : f.events)
+                if (e.ball == i && e.kind == Event::Kind::state) state = &e;
+                else if (e.ball == i && e.kind == Event::Kind::hit) last_hit = &e;
+            const Vec2 last = last_hit != nullptr ? last_hit->pos : f.before[i].pos;
+            if (state != nullptr && !same_bits(state->pos, last))
+                return fail(fmt::format("stopped at the bounce limit at {}, but the last point of its path is {}",
+                                        state->pos, last));
+        }
         // The frame's first hit against the exact kernel's frame from the same state and memory.
         if (kernel_ != KernelId::exact) {
             Ball ball = f.before[i];

@@ -108,7 +108,8 @@ private:
             traces_[i].clear();
             hits_.clear();
             scratch_.trace = &traces_[i];
-            (void)step_ball(kernel_, ball, memory, scene_.walls, hits_, scratch_, world.wall_index());
+            traces_[i].stopped_at_limit = step_ball(kernel_, ball, memory, scene_.walls, hits_, scratch_,
+                                                    world.wall_index()) == FrameStatus::bounce_limit;
             scratch_.trace = nullptr;
             const Ball now = world.balls()[i];
             if (!same_bits(ball, now))

@@ -105,40 +105,69 @@ bool speed_within(Vec2 v, Vec2 w, int m, double b, double a) {
     return sgn(lower) <= 0 || ww >= lower * lower;
 }
 
-HitAccuracy hit_accuracy(Vec2 a, Vec2 b, const Wall& w, Vec2 p, double ulps, const Wall* kept, int kept_from) {
-    HitAccuracy r;
+namespace {
+
+/// A leg a → b and wall w, exactly: whether the crossing is well-conditioned, and then its leg fraction s,
+/// |d|∞ and ε·M.
+struct ExactCrossing {
+    bool conditioned = false;
+    mpq_class s, dx, dy, d_inf, unit;
+};
+
+ExactCrossing exact_crossing(Vec2 a, Vec2 b, const Wall& w) {
+    ExactCrossing c;
     const mpq_class ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
-    const mpq_class dx = Q(b.x) - Q(a.x), dy = Q(b.y) - Q(a.y);
+    c.dx = Q(b.x) - Q(a.x);
+    c.dy = Q(b.y) - Q(a.y);
     const auto qabs = [](const mpq_class& q) { return mpq_class(abs(q)); };
-    const mpq_class e_inf = std::max(qabs(ex), qabs(ey)), d_inf = std::max(qabs(dx), qabs(dy));
+    const mpq_class e_inf = std::max(qabs(ex), qabs(ey));
+    c.d_inf = std::max(qabs(c.dx), qabs(c.dy));
     const mpq_class tiny = mpq_class(1) / (mpq_class(1) << 400);
     // e × d; the crossing is well-conditioned when its sine (in ∞-norms) is at least 1/4.
-    const mpq_class cross = ex * dy - ey * dx;
-    r.conditioned = e_inf >= tiny && d_inf >= tiny && 4 * qabs(cross) >= e_inf * d_inf;
-    if (!r.conditioned) return r;
+    const mpq_class cross = ex * c.dy - ey * c.dx;
+    c.conditioned = e_inf >= tiny && c.d_inf >= tiny && 4 * qabs(cross) >= e_inf * c.d_inf;
+    if (!c.conditioned) return c;
     // BC(x) = n·(x − P0) with the outward normal n = (e_y, −e_x); s = BC(a) / (BC(a) − BC(b)).
     const auto bc = [&](Vec2 x) -> mpq_class { return ey * (Q(x.x) - Q(w.p0.x)) - ex * (Q(x.y) - Q(w.p0.y)); };
     const mpq_class bc_a = bc(a), bc_b = bc(b);
-    const mpq_class s = bc_a / (bc_a - bc_b);  // bc_a − bc_b = e × d ≠ 0 here
+    c.s = bc_a / (bc_a - bc_b);  // bc_a − bc_b = e × d ≠ 0 here
+    const double m = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y), std::fabs(w.p0.x),
+                               std::fabs(w.p0.y), std::fabs(w.p1.x), std::fabs(w.p1.y)});
+    // ε·M exactly (a power of two times a double).
+    c.unit = Q(m) / (mpq_class(1) << 53);
+    return c;
+}
+
+/// err ≤ ulps·unit, and err in units of unit (for messages).
+HitAccuracy judge(const mpq_class& err, const mpq_class& unit, double ulps) {
+    HitAccuracy r;
+    r.conditioned = true;
+    r.within = err <= Q(ulps) * unit;
+    r.error = sgn(unit) == 0 ? 0.0 : mpq_class(err / unit).get_d();
+    return r;
+}
+
+}  // namespace
+
+HitAccuracy hit_accuracy(Vec2 a, Vec2 b, const Wall& w, Vec2 p, double ulps, const Wall* kept, int kept_from) {
+    const ExactCrossing c = exact_crossing(a, b, w);
+    if (!c.conditioned) return {};
     // B_i exactly: X = a + s·d.
-    const mpq_class xx = Q(a.x) + s * dx, xy = Q(a.y) + s * dy;
+    const mpq_class xx = Q(a.x) + c.s * c.dx, xy = Q(a.y) + c.s * c.dy;
     if (kept != nullptr && kept_from != 0) {
         // side(X) of the kept wall's line, exactly: sign of n·(X − P0) with n = (e_y, −e_x).
         const mpq_class kx = Q(kept->p1.x) - Q(kept->p0.x), ky = Q(kept->p1.y) - Q(kept->p0.y);
         const int side = sgn(mpq_class(ky * (xx - Q(kept->p0.x)) - kx * (xy - Q(kept->p0.y))));
-        if (side != kept_from) {
-            r.conditioned = false;
-            return r;
-        }
+        if (side != kept_from) return {};
     }
-    const double m = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y), std::fabs(w.p0.x),
-                               std::fabs(w.p0.y), std::fabs(w.p1.x), std::fabs(w.p1.y)});
-    // ε·M exactly (a power of two times a double).
-    const mpq_class unit = Q(m) / (mpq_class(1) << 53);
-    const mpq_class err = std::max(qabs(Q(p.x) - xx), qabs(Q(p.y) - xy));
-    r.within = err <= Q(ulps) * unit;
-    r.error = sgn(unit) == 0 ? 0.0 : mpq_class(err / unit).get_d();
-    return r;
+    return judge(std::max(mpq_class(abs(Q(p.x) - xx)), mpq_class(abs(Q(p.y) - xy))), c.unit, ulps);
+}
+
+HitAccuracy hit_time_accuracy(Vec2 a, Vec2 b, const Wall& w, double t, double ulps) {
+    const ExactCrossing c = exact_crossing(a, b, w);
+    if (!c.conditioned) return {};
+    // |t_i − s|·|d|∞: how far along the leg the error in t_i moves the point.
+    return judge(mpq_class(abs(Q(t) - c.s) * c.d_inf), c.unit, ulps);
 }
 
 bool sum_exact(double a, double b) { return Q(a + b) == Q(a) + Q(b); }
