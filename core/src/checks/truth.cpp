@@ -143,6 +143,7 @@ HitAccuracy judge(const mpq_class& err, const mpq_class& unit, double ulps) {
     HitAccuracy r;
     r.conditioned = true;
     r.within = err <= Q(ulps) * unit;
+    // unit = 0 cannot happen here: a conditioned crossing has a coordinate of magnitude ≥ 2^-401 (kept as a guard).
     r.error = sgn(unit) == 0 ? 0.0 : mpq_class(err / unit).get_d();
     return r;
 }
@@ -263,6 +264,7 @@ long PathFollower::advance(std::size_t i, Vec2 next) {
         } else if (sq != 0) {
             st = {sq, on_closed_segment(next, w)};
         } else if (sr != 0) {
+            // st.last != 0 always holds when touched: touched is set only together with last = sq ≠ 0 (a guard).
             tunnel = st.touched && st.last != 0 && sr != st.last;
             st = {sr, false};
         } else {

@@ -1,0 +1,110 @@
+// The checks' exact oracle (truth.hpp) where its floating-point filters give up: products that overflow
+// or underflow, speeds decided without and with an absolute part, hits that are not conditioned, and
+// dot_sign, which no check calls. Every expectation is worked by hand in the comment beside it.
+#include <gtest/gtest.h>
+
+#include <cfloat>
+
+#include "ricochet/truth.hpp"
+
+namespace ricochet {
+namespace {
+
+TEST(TruthOrient, AnOverflowingProductIsDecidedExactly) {
+    // (a − c) × (b − c) with c = 0: l = a.x·b.y = 1e400 overflows to +inf, r = a.y·b.x = 0, so det is
+    // not finite. Exactly, (b − a) × (c − a) = (−1e200)(0) − (1e200)(−1e200) = 1e400 > 0.
+    const Vec2 a{1e200, 0}, b{0, 1e200}, c{0, 0};
+    EXPECT_EQ(truth::orient(a, b, c), 1);
+    EXPECT_EQ(truth::orient(b, a, c), -1);
+}
+
+TEST(TruthOrient, ASumOfProductsThatOverflowsWithAFiniteDifferenceIsDecidedExactly) {
+    // c = 0, a = (X, X), b = (X, X + u) with X = 1.5·2^511 and u its ulp: l = X·(X + u) and r = X·X are
+    // both finite (about 1.125·2^1023) and so is l − r, but |l| + |r| overflows. Exactly
+    // l − r = X·u > 0.
+    const double x = 0x1.8p511;
+    const Vec2 a{x, x}, b{x, std::nextafter(x, INFINITY)}, c{0, 0};
+    EXPECT_EQ(truth::orient(a, b, c), 1);
+    EXPECT_EQ(truth::orient(b, a, c), -1);
+    EXPECT_EQ(truth::cross_sign(a, b), 1);  // the same determinant with c = 0
+}
+
+TEST(TruthSpeed, WithoutAnAbsolutePartBothBoundsAreExact) {
+    // a = 0: | |w| − |v| | ≤ ((1 + b)^m − 1)·|v|, |v| = 5.
+    const Vec2 v{3, 4};
+    // b = 2^-48, m = 1: |w| = 10 is 5 over the bound 5·2^-48.
+    EXPECT_FALSE(truth::speed_within(v, {6, 8}, 1, 0x1p-48, 0.0));
+    // b = 1, m = 1: C = 1, so the lower bound (1 − C)|v| = 0 holds for any w, and |w| ≤ 2|v| = 10.
+    EXPECT_TRUE(truth::speed_within(v, {0, 0}, 1, 1.0, 0.0));
+    EXPECT_TRUE(truth::speed_within(v, {6, 8}, 1, 1.0, 0.0));  // |w| = 10 exactly on the bound
+    EXPECT_FALSE(truth::speed_within(v, {6, std::nextafter(8.0, 9.0)}, 1, 1.0, 0.0));
+}
+
+TEST(TruthSpeed, WithAnAbsolutePartASpeedFarAboveOrBelowIsOutside) {
+    // b = 2^-48, a = 1, m = 1: |w| must lie within 5·2^-48 + 1 of |v|.
+    EXPECT_FALSE(truth::speed_within({3, 4}, {30, 40}, 1, 0x1p-48, 1.0));  // |w| = 50, 45 above
+    EXPECT_FALSE(truth::speed_within({30, 40}, {3, 4}, 1, 0x1p-48, 1.0));  // |w| = 5, 45 below |v| = 50
+    EXPECT_TRUE(truth::speed_within({30, 40}, {30, 40.5}, 1, 0x1p-48, 1.0));  // |w| ≈ 50.4, within 1
+}
+
+TEST(TruthHitAccuracy, AWallShorterThanTwoToTheMinus400IsNotConditioned) {
+    // The leg y = 2^-501 from x = −1 to 1 crosses the wall x = 0 of length 2^-500 at its middle, at a right
+    // angle, but |e|∞ = 2^-500 < 2^-400: not conditioned (truth.hpp).
+    const Wall tiny{{0, 0}, {0, 0x1p-500}};
+    EXPECT_FALSE(truth::hit_accuracy({-1, 0x1p-501}, {1, 0x1p-501}, tiny, {0, 0x1p-501}, 256).conditioned);
+    EXPECT_FALSE(truth::hit_time_accuracy({-1, 0x1p-501}, {1, 0x1p-501}, tiny, 0.5, 256).conditioned);
+    // So is a leg shorter than 2^-400 across a unit wall, and a grazing one: e = (0, 2), d = (0.1, 2) has
+    // 4·|e × d| = 0.8 < |e|∞·|d|∞ = 4.
+    const Wall unit{{0, -1}, {0, 1}};
+    EXPECT_FALSE(truth::hit_accuracy({-0x1p-500, 0}, {0x1p-500, 0}, unit, {0, 0}, 256).conditioned);
+    EXPECT_FALSE(truth::hit_accuracy({-0.05, -1}, {0.05, 1}, unit, {0, 0}, 256).conditioned);
+    // At exactly 2^-400 it is: the crossing (0, 2^-401) is at s = 1/2, error 0.
+    const Wall small{{0, 0}, {0, 0x1p-400}};
+    const truth::HitAccuracy at = truth::hit_accuracy({-1, 0x1p-401}, {1, 0x1p-401}, small, {0, 0x1p-401}, 256);
+    EXPECT_TRUE(at.conditioned);
+    EXPECT_TRUE(at.within);
+    EXPECT_EQ(at.error, 0.0);
+}
+
+TEST(TruthHitAccuracy, TheKeptWallExemptsACrossingOnlyOffItsKeptSide) {
+    // The leg (−1, 0) → (1, 0) crosses x = 0 at X = (0, 0); p = (2^-52, 0) is 2^-52 off, i.e. 2 units of
+    // ε·M with M = 1.
+    const Wall w{{0, -1}, {0, 1}};
+    const Vec2 a{-1, 0}, b{1, 0}, p{0x1p-52, 0};
+    const truth::HitAccuracy plain = truth::hit_accuracy(a, b, w, p, 256);
+    ASSERT_TRUE(plain.conditioned);
+    EXPECT_TRUE(plain.within);
+    EXPECT_EQ(plain.error, 2.0);
+    EXPECT_FALSE(truth::hit_accuracy(a, b, w, p, 1).within);  // 2 units > 1
+    // Kept wall y = 0.5 from (−1, 0.5) to (1, 0.5): n = (0, −2), BC(X) = −2·(0 − 0.5) = 1, side +1.
+    const Wall kept{{-1, 0.5}, {1, 0.5}};
+    const truth::HitAccuracy same_side = truth::hit_accuracy(a, b, w, p, 256, &kept, 1);
+    EXPECT_TRUE(same_side.conditioned);
+    EXPECT_EQ(same_side.error, 2.0);
+    // Kept from −1: X lies on the far side, out of the ball's reach: not conditioned.
+    EXPECT_FALSE(truth::hit_accuracy(a, b, w, p, 256, &kept, -1).conditioned);
+    // Kept wall through X (its line y = x): side 0 is not strictly the kept side either.
+    const Wall through{{-1, -1}, {1, 1}};
+    EXPECT_FALSE(truth::hit_accuracy(a, b, w, p, 256, &through, 1).conditioned);
+    // kept_from = 0 (no bounce yet): the kept wall is ignored.
+    EXPECT_TRUE(truth::hit_accuracy(a, b, w, p, 256, &kept, 0).conditioned);
+}
+
+TEST(TruthDotSign, FilterAndExactFallbackAgree) {
+    EXPECT_EQ(truth::dot_sign({1, 2}, {3, 4}), 1);    // 11
+    EXPECT_EQ(truth::dot_sign({1, 0}, {-1, 0}), -1);  // −1
+    EXPECT_EQ(truth::dot_sign({1, 1}, {1, -1}), 0);   // 1 − 1 = 0: the filter cannot say, GMP says 0
+    // 2^-52 against a bound 3ε·2: too close for the filter, exactly positive.
+    EXPECT_EQ(truth::dot_sign({1 + 0x1p-52, 1}, {1, -1}), 1);
+    // Products that underflow to 0 (2^-1200): the sum is below 2^-900, GMP says +.
+    EXPECT_EQ(truth::dot_sign({0x1p-600, 0}, {0x1p-600, 0}), 1);
+    EXPECT_EQ(truth::dot_sign({0x1p-600, 0}, {-0x1p-600, 0}), -1);
+    // A product that overflows: s = +inf, exactly 1e400 + 1 > 0.
+    EXPECT_EQ(truth::dot_sign({1e200, 1}, {1e200, 1}), 1);
+    // Finite products whose |l| + |r| overflows: s = DBL_MAX − DBL_MAX = 0, exactly 0.
+    EXPECT_EQ(truth::dot_sign({DBL_MAX, DBL_MAX}, {1, -1}), 0);
+    EXPECT_EQ(truth::dot_sign({DBL_MAX, DBL_MAX}, {1, -std::nextafter(1.0, 0.0)}), 1);
+}
+
+}  // namespace
+}  // namespace ricochet
