@@ -116,7 +116,8 @@ int compare(const Crossing& a, const Crossing& b) { return sgn(a.nt * b.nd - b.n
 
 /// v' = v − 2(v·n)/(n·n)·n for v = V/dv: V' = V·(n·n) − 2(V·n)·n over dv·(n·n).
 ZFrac reflect(const ZFrac& v, const ZWall& w) {
-    // Degenerate: a zero-length wall has no normal; v is unchanged.
+    // Degenerate: a zero-length wall has no normal; v is unchanged. Not reached by step_ball: such a wall is
+    // never hit, never joins the contacts (arrive) and blocks no leg (contact sides are ±1); kept as a guard.
     if (sgn(w.nn) == 0) return v;
     return {v.p * w.nn - (Z(2) * dot(v.p, w.n)) * w.n, v.d * w.nn};
 }
@@ -355,6 +356,7 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
             arrived.push_back({i, first_leg ? printed::side(ball.pos, walls[i]) : bc_sign(q.p, q.d, zw(i))});
         last_from = arrived.front().side;
         // Contacts the ball slid along to get here are kept, with the side it first came from.
+        // (none_of always holds: q lies on a contact's line, so a contact is never among the walls hit.)
         for (const ZContact& c : contacts)
             if (on_segment(x, zw(c.wall)) &&
                 std::none_of(arrived.begin(), arrived.end(), [&](const ZContact& r) { return r.wall == c.wall; }))
@@ -401,6 +403,9 @@ FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> wall
     // v' points strictly back to the side the last bounce came from; rounding a grazing v' can lose that,
     // so the rounded velocity is moved by ulps towards that side until it holds again.
     Vec2 vel = round_vec(v.p, v.d, k);
+    // last_from ≠ 0 whenever path is non-empty (a wall hit is met from q's side ±1); the test is a guard.
+    // The loop's 64 is a guard too: each pass moves n·vel by an ulp per component, at least their rounding
+    // error, so one or two passes hold it.
     if (!path.empty() && last_from != 0) {
         const Wall& w = walls[path.back().wall];
         const Vec2 n = normal(w);

@@ -90,7 +90,8 @@ inline Vec2 make_safe(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const 
         return piece_allowed(q, c, memory, walls);
     };
     if (ok(r)) return r;
-    // A rounding error of a few ulps is undone by the first steps; f = 0 is q.
+    // A rounding error of a few ulps is undone by the first steps; f = 0 is q, which passed ok when it was
+    // printed (with the memory the kernel left), so the loop always returns and the last line is a guard.
     const Vec2 d = r - q;
     for (double f : {1 - 0x1p-50, 1 - 0x1p-46, 1 - 0x1p-40, 1 - 0x1p-30, 1 - 0x1p-20, 1 - 0x1p-10, 0.5, 0.0}) {
         const Vec2 c = f == 0.0 ? q : q + f * d;
