@@ -76,7 +76,8 @@ bool write_file_atomically(const std::filesystem::path& path, std::string_view t
         errno = saved;
         return set("cannot rename the temporary file into place");
     }
-    // Make the rename itself durable (best effort: the folder just renamed into is there to open).
+    // Make the rename itself durable (best effort: the folder just renamed into is there to open; it fails
+    // only without read permission on it, which mkstemp and rename do not need: not forced in tests, as root).
     const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
     if (dfd >= 0) {
         ::fsync(dfd);

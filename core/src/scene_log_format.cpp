@@ -38,6 +38,7 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 std::optional<double> to_double(std::string_view s, std::string& why) {
     bool negative = false;
     std::string_view body = s;
+    // (s is a token, never empty: the empty() test is a guard.)
     if (!body.empty() && body.front() == '-') {
         negative = true;
         body.remove_prefix(1);

@@ -181,5 +181,27 @@ TEST_F(SceneLogFiles, SavingOnceCreatesTheFolderAndAFailedSaveLeavesItEmpty) {
     EXPECT_EQ(slurp(saved->path), write_scene_log(s));
 }
 
+TEST_F(SceneLogFiles, AFolderNamedLikeALogIsNoSavedCase) {
+    // Looking for a saved case, save_scene_log_once reads the regular *.scene files only: a folder
+    // "x.scene" is passed over and the case is new.
+    fs::create_directories(dir_ / "x.scene");
+    Scene s;
+    s.frames = 1;
+    std::string error;
+    const auto saved = save_scene_log_once(dir_, "case", s, &error);
+    ASSERT_TRUE(saved) << error;
+    EXPECT_TRUE(saved->is_new);
+    EXPECT_EQ(saved->path, dir_ / ("case-" + scene_content_id(s) + ".scene"));
+    EXPECT_EQ(entries(), 2u);
+}
+
+TEST_F(SceneLogFiles, SavingTextThatIsNoLogWithoutAnErrorStringOnlyReturnsNothing) {
+    EXPECT_FALSE(save_scene_log_once(dir_, "p", std::string_view("not a log\n"), nullptr));
+    std::string error;
+    EXPECT_FALSE(save_scene_log_once(dir_, "p", std::string_view("not a log\n"), &error));
+    EXPECT_EQ(error, "not a scene log: p-*.scene:1:1: error: expected the header 'ricochet 1' before 'not'");
+    EXPECT_EQ(entries(), 0u);
+}
+
 }  // namespace
 }  // namespace ricochet
