@@ -23,6 +23,7 @@ std::string FailureLog::text() const {
     if (!scene.found || note.empty()) return out;
     const std::string line = fmt::format("found {} {} {}\n", scene.found->check, scene.found->frame, scene.found->ball);
     const std::size_t at = out.find(line);
+    // A guard: write_scene_log writes a found as this very line, so it is always there.
     if (at == std::string::npos) return out;
     // One comment line: a newline in the message would end the comment and start a directive.
     std::string comment = "# ";

@@ -102,6 +102,7 @@ struct fmt::formatter<ricochet::Event> : ricochet::detail::PlainFormatter {
     template <class Context>
     auto format(const ricochet::Event& e, Context& ctx) const {
         using Kind = ricochet::Event::Kind;
+        // Every Kind has a case: the switch falls out without one only for a value outside the enum.
         switch (e.kind) {
             case Kind::state:
                 return fmt::format_to(ctx.out(), "state {} {} {} {} {} {}", e.frame, e.ball, e.pos.x, e.pos.y, e.vel.x,
