@@ -103,6 +103,19 @@ TEST(WallGridLayout, ANonPositiveOrNonFiniteCellSizeIsChosenInstead) {
     }
 }
 
+TEST(WallGridLayout, ASubnormalCellSizeIsFirstGrownToHaveAFiniteInverse) {
+    // 1/2^-1070 overflows; doubling from 2^-1070 the first size with a finite inverse is 2^-1023 (1/2^-1024
+    // = 2^1024 still overflows). From there both grids grow alike to fit the cell cap: the same layout.
+    const WallGrid sub(k_two, {.cell_size = 0x1p-1070, .max_cells = 1024});
+    const WallGrid smallest(k_two, {.cell_size = 0x1p-1023, .max_cells = 1024});
+    EXPECT_TRUE(std::isfinite(1.0 / sub.cell_size()));
+    EXPECT_EQ(sub.cell_size(), smallest.cell_size());
+    EXPECT_EQ(sub.columns(), smallest.columns());
+    EXPECT_EQ(sub.rows(), smallest.rows());
+    EXPECT_LE(std::size_t{sub.columns()} * sub.rows(), 1024u);
+    EXPECT_EQ(sorted(query(sub, {0.5, -0.3}, {0.5, 0.3})), Ids{0});
+}
+
 // Two clusters of four walls through (5, 5) and (1005, 5), each in the box [0, 10]² shifted by 0 or
 // 1000 in x: the root splits them along x into two leaves of four.
 std::vector<Wall> clusters() {
