@@ -79,4 +79,13 @@ inline Scene scene(std::vector<Wall> walls, std::vector<Ball> balls, std::vector
     return s;
 }
 
+// The parameters of a step_ball, for the wrapping lambdas of the tests, and robust's step on them.
+#define STEP_PARAMS                                                                                          \
+    Ball &b, BallMemory &mem, std::span<const Wall> walls, std::vector<HitEvent> &hits, StepScratch &scratch, \
+        const WallIndex *index
+#define STEP_ROBUST ::ricochet::mutant::robust().step_ball(b, mem, walls, hits, scratch, index)
+
+inline const Wall k_wall{{5, -1}, {5, 1}};   ///< the segment x = 5, −1 ≤ y ≤ 1
+inline const Ball k_hitter{{1, 0}, {8, 0}};  ///< (1, 0) → (9, 0) hits k_wall at t = 0.5, (5, 0)
+
 }  // namespace ricochet::mutant
