@@ -17,7 +17,7 @@
 
 namespace ricochet::mutant {
 
-/// The registered kernel "mutant": the functions of Mutant::ops.
+/// The registered kernel "mutant": the functions of Mutant::ops (its speed bound is robust's).
 struct Mutant {
     static inline KernelOps ops = kernel_ops(KernelId::robust);
     static Side classify(Vec2 p, const Wall& w) { return ops.classify(p, w); }
