@@ -24,6 +24,7 @@ public:
             // Two implementations of one definition (kernel.hpp), kept apart: either finding counts.
             std::optional<std::uint32_t> w = tunnel_.advance(e.ball, e.pos);
             const long other = path_.advance(e.ball, e.pos);
+            // Taken only if the two disagree, a bug in one of them: no test has found such a path.
             if (!w && other >= 0) w = static_cast<std::uint32_t>(other);
             if (w && !found)
                 found = failure(Check::no_tunnel, f.index, e.ball,

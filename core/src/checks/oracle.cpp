@@ -162,11 +162,13 @@ private:
                 if (e.ball == i && e.kind == Event::Kind::state) state = &e;
                 else if (e.ball == i && e.kind == Event::Kind::hit) last_hit = &e;
             const Vec2 last = last_hit != nullptr ? last_hit->pos : f.before[i].pos;
+            // state is never null: every ball prints a state every frame (world.hpp).
             if (state != nullptr && !same_bits(state->pos, last))
                 return fail(fmt::format("stopped at the bounce limit at {}, but the last point of its path is {}",
                                         state->pos, last));
         }
-        // The frame's first hit against the exact kernel's frame from the same state and memory.
+        // The frame's first hit against the exact kernel's frame from the same state and memory. Never false:
+        // the exact kernel's trace has no legs, so its frames returned above.
         if (kernel_ != KernelId::exact) {
             Ball ball = f.before[i];
             BallMemory memory = f.memory_before[i];

@@ -36,6 +36,7 @@ Scene mirror_x(const Scene& scene) {
 namespace checks {
 
 std::unique_ptr<FrameCheck> make_check(Check c, const Scene& scene, KernelId kernel, const WorldOptions& world) {
+    // Unreachable default: every Check has a case; only a value outside the enumeration falls through.
     switch (c) {
         case Check::no_tunnel: return make_no_tunnel(scene, kernel, world);
         case Check::symmetry: return make_symmetry(scene, kernel, world);
