@@ -84,6 +84,10 @@
 //                  The same bound for every kernel: robust keeps it (its derivation is in promise_test.cpp),
 //                  lecture-float does not (2^−24 rounding). The exact kernel's legs are rational, so it has
 //                  none to check (its B_i is its exact crossing, rounded once).
+//   event-order    Every frame's events come in the order docs/scene-log.md gives: per ball in index order its
+//                  hits (none at frame 0), then its state, then every overlap, ball-major, circles before
+//                  rects, each by index and once; each event carries its frame's number and names a ball,
+//                  wall, circle or rect of the scene (a state index 0 and no shape, a hit no shape).
 //
 // speed, oracle and accuracy read the frame's StepTrace: each ball is stepped again from its state and memory before
 // the frame with a trace (the same wall index); that step must end in the run's state bit for bit, else
