@@ -53,29 +53,45 @@ bool any_fuzz_target_built() {
     return false;
 }
 
-/// Seconds of fuzzing at the end of `check`: RICOCHET_CHECK_FUZZ_SECONDS if set to a number, else 20.
-int default_fuzz_seconds() {
+/// RICOCHET_CHECK_FUZZ_SECONDS, if set to a number of seconds (0 to 86400): a campaign by time instead of
+/// the default fixed count of inputs. −1 if unset; an unusable value is an error at the start of `check`.
+int env_fuzz_seconds() {
     const char* env = std::getenv("RICOCHET_CHECK_FUZZ_SECONDS");
-    if (!env || !*env) return 20;
+    if (!env || !*env) return -1;
     char* end = nullptr;
     const long v = std::strtol(env, &end, 10);
-    return (*end == '\0' && v >= 0 && v <= 86400) ? static_cast<int>(v) : 20;
+    if (*end != '\0' || v < 0 || v > 86400) {
+        fmt::print(stderr, "ricochet check: error: RICOCHET_CHECK_FUZZ_SECONDS='{}' is not a number of seconds (0 to 86400)\n",
+                   env);
+        throw Exit{2};
+    }
+    return static_cast<int>(v);
 }
 
 }  // namespace
 
 void register_check(CLI::App& app) {
     struct Options {
-        // RICOCHET_CHECK_FUZZ_SECONDS sets the default (README); --fuzz-time overrides it.
-        int fuzz_time = default_fuzz_seconds();
+        // The campaign runs a fixed count of inputs per target from a fixed seed, so its verdict does not
+        // depend on the machine's speed or load; --fuzz-time (or RICOCHET_CHECK_FUZZ_SECONDS) asks for a
+        // campaign by time instead.
+        int fuzz_time = -1;
+        long fuzz_runs = 10000;
+        long fuzz_seed = 1;
         bool no_properties = false;
     };
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand(
         "check", "replay the corpus, the lecture's pinball example, the property suite and a short fuzz campaign");
-    sub->add_option("--fuzz-time", opt->fuzz_time, "seconds of fuzzing at the end (0: none)")->check(CLI::NonNegativeNumber);
+    sub->add_option("--fuzz-runs", opt->fuzz_runs, "inputs per fuzz target at the end (0: no fuzzing; default 10000)")
+        ->check(CLI::NonNegativeNumber);
+    sub->add_option("--fuzz-seed", opt->fuzz_seed, "libFuzzer seed of the campaign (default 1)")->check(CLI::PositiveNumber);
+    sub->add_option("--fuzz-time", opt->fuzz_time, "fuzz for this many seconds instead of a count of inputs (0: none)")
+        ->check(CLI::Range(0, 86400));
     sub->add_flag("--no-properties", opt->no_properties, "skip the property suite");
     sub->callback([opt] {
+        if (opt->fuzz_time < 0) opt->fuzz_time = env_fuzz_seconds();
+        const bool by_time = opt->fuzz_time >= 0;
         std::vector<std::string> summary;
         bool failed = false;
         const auto timed = [](auto&& f) {
@@ -132,14 +148,21 @@ void register_check(CLI::App& app) {
         }
 
         // 4. A short fuzz campaign through `ricochet fuzz`, if the targets are built.
-        if (opt->fuzz_time == 0) {
-            summary.push_back("fuzz        skipped (--fuzz-time 0)");
+        if (by_time ? opt->fuzz_time == 0 : opt->fuzz_runs == 0) {
+            summary.push_back(by_time ? "fuzz        skipped (--fuzz-time 0)" : "fuzz        skipped (--fuzz-runs 0)");
         } else if (!any_fuzz_target_built()) {
             summary.push_back("fuzz        not built (configure with clang-14 and RICOCHET_FUZZ=ON)");
         } else {
-            fmt::print("== fuzz for {} s\n", opt->fuzz_time);
+            std::vector<std::string> argv = {self_exe(), "fuzz"};
+            if (by_time) {
+                fmt::print("== fuzz for {} s\n", opt->fuzz_time);
+                argv.insert(argv.end(), {"--time", std::to_string(opt->fuzz_time)});
+            } else {
+                fmt::print("== fuzz: {} inputs per target, seed {}\n", opt->fuzz_runs, opt->fuzz_seed);
+                argv.insert(argv.end(), {"--runs", std::to_string(opt->fuzz_runs), "--seed", std::to_string(opt->fuzz_seed)});
+            }
             int rc = 0;
-            const double t = timed([&] { rc = run_program({self_exe(), "fuzz", "--time", std::to_string(opt->fuzz_time)}); });
+            const double t = timed([&] { rc = run_program(argv); });
             failed = failed || rc != 0;
             summary.push_back(fmt::format("fuzz        {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
         }

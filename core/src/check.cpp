@@ -21,6 +21,7 @@ std::string_view check_name(Check c) {
         case Check::no_escape: return "no-escape";
         case Check::bounce_side: return "bounce-side";
         case Check::accuracy: return "accuracy";
+        case Check::event_order: return "event-order";
     }
     return "?";
 }

@@ -89,6 +89,7 @@ struct LectureKernel {
                                                                  ? std::nullopt
                                                                  : std::optional<std::uint32_t>(last);
                 traced = &t->legs.emplace_back(TracedLeg{a, b, false, 0, 0, std::nullopt, first, 0, skipped});
+                traced->vel = vec_cast<double>(vel);
             }
             for (std::uint32_t i : detail::candidates(walls, index, a, b, scratch.candidates, scratch.all_walls)) {
                 if (i == last) continue;

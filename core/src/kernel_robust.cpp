@@ -87,6 +87,7 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
         if (blocked != nullptr) {
             if (StepTrace* t = scratch.trace) {
                 t->legs.push_back({q, b, true, blocked->wall, blocked->side, std::nullopt, 0, 0, std::nullopt});
+                t->legs.back().vel = v;
                 ++t->reflections;
             }
             v = reflect(v, walls[blocked->wall]);
@@ -96,6 +97,7 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
         if (StepTrace* t = scratch.trace) {
             const auto first = static_cast<std::uint32_t>(t->decisions.size());
             traced = &t->legs.emplace_back(TracedLeg{q, b, false, 0, 0, std::nullopt, first, 0, std::nullopt});
+            traced->vel = v;
         }
         // The earliest hit: exact ordering of crossings, the lowest index on a tie.
         bool found = false;

@@ -65,6 +65,42 @@ TEST(Checks, AccuracyFailsForFloatsRoundingAndHoldsForRobust) {
     EXPECT_FALSE(first_failure(graze, KernelId::lecture_float, Check::accuracy));
 }
 
+/// robust, except that a frame with a hit ends going straight back (v' = −v): the bug of mutant 28.
+FrameStatus straight_back(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
+                          StepScratch& scratch, const WallIndex* index) {
+    const Vec2 v = ball.vel;
+    const std::size_t before = hits.size();
+    const FrameStatus status = kernel_ops(KernelId::robust).step_ball(ball, memory, walls, hits, scratch, index);
+    if (hits.size() > before) ball.vel = -v;
+    return status;
+}
+
+TEST(Checks, AccuracyHoldsTheBounceToTheExactReflection) {
+    // The ball ends its first frame exactly on the wall y = 0 (t_i = 1), so the frame's end state carries v'.
+    Scene s;
+    s.frames = 2;
+    s.walls = {{{10, 0}, {-10, 0}}};
+    s.balls = {{{0.5, 1}, {0.5, -1}}};
+    EXPECT_FALSE(first_failure(s, KernelId::robust, Check::accuracy));
+    EXPECT_FALSE(first_failure(s, KernelId::lecture_double, Check::accuracy));
+    KernelOps ops = kernel_ops(KernelId::robust);
+    ops.name = "straight-back-test";
+    ops.step_ball = &straight_back;
+    const std::optional<KernelId> bad = register_kernel(ops);
+    ASSERT_TRUE(bad);
+    // Same speed, same side: speed and bounce-side hold; only the bounce's direction is wrong.
+    EXPECT_FALSE(first_failure(s, *bad, Check::speed));
+    EXPECT_FALSE(first_failure(s, *bad, Check::bounce_side));
+    const auto f = first_failure(s, *bad, Check::accuracy);
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->frame, 1);
+    EXPECT_NE(f->message.find("from the exact reflection"), std::string::npos) << f->message;
+    // A bounce off a corner (the point on a second wall) is the corner rule's, not held to one reflection.
+    Scene corner = s;
+    corner.walls.push_back({{1, 0}, {1, 5}});
+    EXPECT_FALSE(first_failure(corner, *bad, Check::accuracy));
+}
+
 TEST(Checks, OracleHoldsAtTheBounceLimitAndTheTraceSaysItStopped) {
     // A corridor 2^-40 wide crossed at speed 1: every frame needs thousands of bounces and stops at 16.
     // oracle counts the bounces against the spec's 16 and finds the ball at the last point of its path.

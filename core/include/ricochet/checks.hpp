@@ -76,9 +76,18 @@
 //                  it) has |t_i − s|·|d|∞ within the bound, and the printed hit point is within the bound of
 //                  a + s·d in each coordinate, unless a + s·d does not lie strictly on the side the ball keeps
 //                  of the wall it last bounced off (bounce-side puts it out of reach; t_i is still checked).
+//                  And the bounce: for each such hit whose printed point lies on no other wall's closed
+//                  segment (no corner rule applies) and whose velocity v meets the wall at |v·n| ≥
+//                  |v|∞·|n|∞ / 4 (n = (e_y, −e_x), exactly), the velocity it leaves with (the next leg's, else
+//                  the frame's end state's) is within 2·(b·|v| + a) of v − 2(v·n)n/(n·n) in each component,
+//                  b and a the kernel's speed_bound, decided exactly.
 //                  The same bound for every kernel: robust keeps it (its derivation is in promise_test.cpp),
 //                  lecture-float does not (2^−24 rounding). The exact kernel's legs are rational, so it has
 //                  none to check (its B_i is its exact crossing, rounded once).
+//   event-order    Every frame's events come in the order docs/scene-log.md gives: per ball in index order its
+//                  hits (none at frame 0), then its state, then every overlap, ball-major, circles before
+//                  rects, each by index and once; each event carries its frame's number and names a ball,
+//                  wall, circle or rect of the scene (a state index 0 and no shape, a hit no shape).
 //
 // speed, oracle and accuracy read the frame's StepTrace: each ball is stepped again from its state and memory before
 // the frame with a trace (the same wall index); that step must end in the run's state bit for bit, else

@@ -36,6 +36,9 @@ struct TracedLeg {
     std::optional<std::uint32_t> skipped;
     /// The kernel's t_i of the hit it took: the fraction of this leg at which it put the crossing (0 without one).
     double hit_t = 0.0;
+    /// The velocity the ball moved with on this leg (the leg is the rest of the frame at this velocity); the
+    /// next leg's, or the frame's end state's, is the one it left a hit with.
+    Vec2 vel;
 };
 
 /// One ball's frame as its kernel stepped it.

@@ -76,6 +76,12 @@ HitAccuracy hit_accuracy(Vec2 a, Vec2 b, const Wall& w, Vec2 p, double ulps, con
 /// above, and within when |t − s|·|d|∞ ≤ ulps·ε·M (the error of t_i measured as the distance it moves the
 /// point along the leg). No bounce-side exemption: t_i is the crossing's, whatever point is printed.
 HitAccuracy hit_time_accuracy(Vec2 a, Vec2 b, const Wall& w, double t, double ulps);
+/// The bounce off w of a ball moving v that leaves with v_out, against the exact reflection
+/// R = v − 2(v·n)n/(n·n), n = (e_y, −e_x): conditioned when |v·n| ≥ |v|∞·|n|∞ / 4 (not grazing, so the
+/// reflection points back clearly) and w has a length; within when every component of v_out − R is at most
+/// 2·(rel·|v| + abs) (the speed bound of one reflection, per component as the kernel's error terms carry
+/// over), decided exactly. error: max |v_out − R| per component over |v|, for messages.
+HitAccuracy bounce_accuracy(Vec2 v, const Wall& w, Vec2 v_out, double rel, double abs);
 
 /// kernel.hpp's no-tunnelling definition, followed independently of ricochet::TunnelChecker: a piece
 /// from one open side to the other through the closed segment, or arriving on the closed segment from

@@ -1,5 +1,6 @@
 // accuracy: every well-conditioned hit's t_i and B_i lie within k_hit_accuracy_ulps·ε·M of the exact
-// crossing of the leg the kernel swept (checks.hpp).
+// crossing of the leg the kernel swept, and a well-conditioned bounce off a lone wall leaves within the speed
+// bound of the exact reflection (checks.hpp).
 #include <fmt/format.h>
 
 #include <cmath>
@@ -16,7 +17,7 @@ class Accuracy final : public FrameCheck {
 public:
     bool needs_traces() const override { return true; }
 
-    explicit Accuracy(const Scene& scene) : scene_(scene) {}
+    Accuracy(const Scene& scene, KernelId kernel) : scene_(scene), bound_(speed_bound(kernel)) {}
 
     std::optional<CheckFailure> frame(const Frame& f) override {
         if (f.index == 0) return std::nullopt;
@@ -75,17 +76,43 @@ private:
                                fmt::format("leg {} ({} -> {}) hits wall {} at {}, {:.4g} eps*M from the exact "
                                            "crossing (bound {})",
                                            l, leg.from, leg.to, hit.index, hit.pos, r.error, k_hit_accuracy_ulps));
+            // v′: the velocity the ball left the hit with (the next leg's, else the frame's end state's), for a
+            // bounce off this wall alone (the hit point on no other wall, so no corner rule applies).
+            const Vec2 v_out = l + 1 < trace.legs.size() ? trace.legs[l + 1].vel : end_velocity(f, i);
+            if (!lone_wall(hit.pos, hit.index)) continue;
+            const truth::HitAccuracy rb =
+                truth::bounce_accuracy(leg.vel, scene_.walls[hit.index], v_out, bound_.rel, bound_.abs);
+            if (rb.conditioned && !rb.within)
+                return failure(Check::accuracy, f.index, i,
+                               fmt::format("leg {} hits wall {} moving {} and leaves moving {}, {:.4g}·|v| from the "
+                                           "exact reflection v - 2(v·n)n/(n·n) (bound 2·{:.4g}·|v| + 2·{:.4g})",
+                                           l, hit.index, leg.vel, v_out, rb.error, bound_.rel, bound_.abs));
         }
         return std::nullopt;
     }
 
+    /// The ball's velocity at the end of the frame, as its state event printed it.
+    static Vec2 end_velocity(const Frame& f, std::uint32_t i) {
+        for (const Event& e : f.events)
+            if (e.kind == Event::Kind::state && e.ball == i) return e.vel;
+        return {};
+    }
+
+    /// p lies on no wall's closed segment but wall w's (exactly).
+    bool lone_wall(Vec2 p, std::uint32_t w) const {
+        for (std::uint32_t j = 0; j < scene_.walls.size(); ++j)
+            if (j != w && truth::on_closed_segment(p, scene_.walls[j])) return false;
+        return true;
+    }
+
     const Scene& scene_;
+    SpeedBound bound_;
 };
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_accuracy(const Scene& scene, KernelId, const WorldOptions&) {
-    return std::make_unique<Accuracy>(scene);
+std::unique_ptr<FrameCheck> make_accuracy(const Scene& scene, KernelId kernel, const WorldOptions&) {
+    return std::make_unique<Accuracy>(scene, kernel);
 }
 
 }  // namespace ricochet::checks

@@ -51,6 +51,7 @@ std::unique_ptr<FrameCheck> make_check(Check c, const Scene& scene, KernelId ker
         case Check::no_escape: return make_no_escape(scene, kernel, world);
         case Check::bounce_side: return make_bounce_side(scene, kernel, world);
         case Check::accuracy: return make_accuracy(scene, kernel, world);
+        case Check::event_order: return make_event_order(scene, kernel, world);
     }
     return nullptr;
 }

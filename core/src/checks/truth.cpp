@@ -171,6 +171,28 @@ HitAccuracy hit_time_accuracy(Vec2 a, Vec2 b, const Wall& w, double t, double ul
     return judge(mpq_class(abs(Q(t) - c.s) * c.d_inf), c.unit, ulps);
 }
 
+HitAccuracy bounce_accuracy(Vec2 v, const Wall& w, Vec2 v_out, double rel, double abs_bound) {
+    HitAccuracy r;
+    const mpq_class ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
+    // n = (e_y, −e_x), the outward normal, and v·n.
+    const mpq_class nx = ey, ny = -ex;
+    const mpq_class vn = Q(v.x) * nx + Q(v.y) * ny, nn = nx * nx + ny * ny;
+    const auto qabs = [](const mpq_class& q) { return mpq_class(abs(q)); };
+    const mpq_class n_inf = std::max(qabs(nx), qabs(ny)), v_inf = std::max(qabs(Q(v.x)), qabs(Q(v.y)));
+    r.conditioned = sgn(nn) != 0 && 4 * qabs(vn) >= v_inf * n_inf;
+    if (!r.conditioned) return r;
+    // R = v − 2(v·n)/(n·n)·n, exactly.
+    const mpq_class k = 2 * vn / nn;
+    const mpq_class rx = Q(v.x) - k * nx, ry = Q(v.y) - k * ny;
+    const mpq_class err = std::max(qabs(Q(v_out.x) - rx), qabs(Q(v_out.y) - ry));
+    // err ≤ 2·rel·|v| + 2·abs  ⇔  err − 2·abs ≤ 0, or (err − 2·abs)² ≤ 4·rel²·(v·v): no square root needed.
+    const mpq_class over = err - 2 * Q(abs_bound);
+    const mpq_class vv = Q(v.x) * Q(v.x) + Q(v.y) * Q(v.y);
+    r.within = sgn(over) <= 0 || over * over <= 4 * Q(rel) * Q(rel) * vv;
+    r.error = sgn(vv) == 0 ? 0.0 : err.get_d() / std::sqrt(vv.get_d());
+    return r;
+}
+
 bool sum_exact(double a, double b) { return Q(a + b) == Q(a) + Q(b); }
 
 int direction_side(Vec2 d, const Wall& w) {

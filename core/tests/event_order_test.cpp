@@ -1,0 +1,71 @@
+// event-order (checks.hpp) on frames written by hand: the order the World prints holds, and each way a
+// frame can break the spec's order is named. The World itself cannot be made to misorder its events, so
+// the check is fed frames directly (frame_check.hpp, internal).
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "checks/frame_check.hpp"
+
+namespace ricochet::checks {
+namespace {
+
+Event state(std::int64_t f, std::uint32_t ball) { return {Event::Kind::state, f, ball, Event::Shape::none, 0, {}, {}}; }
+Event hit(std::int64_t f, std::uint32_t ball, std::uint32_t wall) {
+    return {Event::Kind::hit, f, ball, Event::Shape::none, wall, {}, {}};
+}
+Event overlap(std::int64_t f, std::uint32_t ball, Event::Shape shape, std::uint32_t k) {
+    return {Event::Kind::overlap, f, ball, shape, k, {}, {}};
+}
+
+Scene two_balls() {
+    Scene s;
+    s.walls = {{{0, 0}, {1, 0}}, {{1, 0}, {1, 1}}};
+    s.balls = {{{0.5, 0.5}, {1, 0}}, {{0.25, 0.5}, {0, 1}}};
+    s.circles = {{{0, 0}, 1}, {{0, 0}, 2}};
+    s.rects = {{0, 0, 1, 1}};
+    return s;
+}
+
+/// The message of event-order's failure on events at frame f, or "" if it holds.
+std::string verdict(const Scene& s, std::int64_t f, std::vector<Event> events) {
+    auto check = make_event_order(s, KernelId::robust, {});
+    const auto r = check->frame(Frame{f, events, {}, {}, {}});
+    return r ? r->message : "";
+}
+
+using K = Event::Shape;
+
+TEST(EventOrder, TheSpecsOrderHolds) {
+    const Scene s = two_balls();
+    EXPECT_EQ(verdict(s, 0, {state(0, 0), state(0, 1), overlap(0, 0, K::circle, 0), overlap(0, 0, K::rect, 0),
+                             overlap(0, 1, K::circle, 1)}),
+              "");
+    EXPECT_EQ(verdict(s, 3, {hit(3, 0, 1), hit(3, 0, 0), state(3, 0), state(3, 1), overlap(3, 1, K::rect, 0)}), "");
+}
+
+TEST(EventOrder, EachBreakIsNamed) {
+    const Scene s = two_balls();
+    const auto has = [](const std::string& m, const char* what) { return m.find(what) != std::string::npos; };
+    EXPECT_TRUE(has(verdict(s, 0, {hit(0, 0, 0), state(0, 0), state(0, 1)}), "frame 0 has no hits"));
+    // A state before its ball's hits (mutant 26), and a hit of the wrong ball.
+    EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), hit(1, 0, 0), state(1, 1)}), "ball 1's events come next"));
+    EXPECT_TRUE(has(verdict(s, 1, {hit(1, 1, 0), state(1, 0), state(1, 1)}), "ball 0's events come next"));
+    EXPECT_TRUE(has(verdict(s, 1, {hit(1, 0, 2), state(1, 0), state(1, 1)}), "names a wall of the scene"));
+    EXPECT_TRUE(has(verdict(s, 1, {hit(1, 0, 0), state(2, 0), state(1, 1)}), "ball 0's state at this frame"));
+    EXPECT_TRUE(has(verdict(s, 1, {hit(2, 0, 0), state(1, 0), state(1, 1)}), "not this frame's number"));
+    EXPECT_TRUE(has(verdict(s, 1, {state(1, 1), state(1, 0)}), "ball 0's state at this frame"));
+    EXPECT_TRUE(has(verdict(s, 1, {state(1, 0)}), "the frame ends before ball 1's state"));
+    EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), state(1, 1), state(1, 1)}), "after the states come only overlaps"));
+    // Overlaps: rect before circle, a repeat, a shape the scene lacks, a ball that does not exist.
+    EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), state(1, 1), overlap(1, 0, K::rect, 0), overlap(1, 0, K::circle, 1)}),
+                    "circles before rects"));
+    EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), state(1, 1), overlap(1, 1, K::circle, 0), overlap(1, 1, K::circle, 0)}),
+                    "circles before rects"));
+    EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), state(1, 1), overlap(1, 0, K::rect, 1)}), "a circle or rect of the scene"));
+    EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), state(1, 1), overlap(1, 2, K::circle, 0)}), "a circle or rect of the scene"));
+    EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), state(1, 1), overlap(1, 0, K::none, 0)}), "a circle or rect of the scene"));
+}
+
+}  // namespace
+}  // namespace ricochet::checks
