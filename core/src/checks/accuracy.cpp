@@ -46,6 +46,11 @@ private:
             const TracedLeg& leg = trace.legs[l];
             if (leg.blocked || !leg.hit) continue;
             const Event& hit = *hits[k++];
+            // A leg with a non-finite end is oracle's failure; there is no exact crossing to compare with (nor
+            // an exact side of its start to keep).
+            if (!std::isfinite(leg.from.x) || !std::isfinite(leg.from.y) || !std::isfinite(leg.to.x) ||
+                !std::isfinite(leg.to.y))
+                break;
             const Wall* keep_now = kept;
             const int keep_now_from = kept_from;
             if (hit.index < scene_.walls.size()) {
@@ -56,10 +61,6 @@ private:
                 }
             }
             if (hit.index != *leg.hit) break;
-            // A leg with a non-finite end is oracle's failure; there is no exact crossing to compare with.
-            if (!std::isfinite(leg.from.x) || !std::isfinite(leg.from.y) || !std::isfinite(leg.to.x) ||
-                !std::isfinite(leg.to.y))
-                break;
             // t_i: the fraction of the leg the kernel put the crossing at (the trace's, since a log does not
             // print it), against the exact s.
             const truth::HitAccuracy rt =
