@@ -3,15 +3,18 @@
 # of the tree and attacked by the property suite, then (if it survives) by a fuzz campaign. A mutant is
 # caught only if the harness leaves a saved scene log that fails `ricochet replay` on the mutant and passes
 # on the unmutated build: the contract is that a failure the harness reports is one replay reproduces.
+# The parser target saves no scene log (its input is the reproducer): a parser finding counts when its
+# minimized input makes the parser target (gcc, standalone driver) fail on the mutant and pass unmutated.
 #
 #   properties/mutants/run.sh [--only NN[,NN...]] [--out DIR] [--fuzz-runs N] [--no-fuzz] [--no-unit]
 #
 # DIR (default build-mutants/ in the checkout, ignored by git) keeps everything between runs, so a run can
 # be restarted with --only: tree/ (the scratch copy; the checkout is never modified), gcc/ (RelWithDebInfo:
-# ricochet, ricochet_properties), clang/ (clang-14 + libFuzzer: ricochet, fuzz_*; built only when a mutant
-# survives the properties), ref/ricochet (the unmutated CLI), NN/ (each mutant's logs and outputs) and
-# results.tsv (one line per mutant; the table is printed from it). Unless --no-unit, each mutant also runs
-# core/tests/promise_test (reported in its own column, not scored: a unit test is not the harness).
+# ricochet, ricochet_properties, fuzz_parser), clang/ (clang-14 + libFuzzer: ricochet, fuzz_*; built only
+# when a mutant survives the properties), ref/ (the unmutated ricochet and fuzz_parser), NN/ (each
+# mutant's logs and outputs) and results.tsv (one line per mutant; the table is printed from it). Unless
+# --no-unit, each mutant also runs core/tests/promise_test (reported in its own column, not scored: a unit
+# test is not the harness).
 #
 # Settings, fixed so that a run measures the same thing each time:
 #   RICOCHET_KERNEL=robust, RC_PARAMS="seed=$MUT_SEED max_success=$MUT_CASES" (defaults 1 and 150: about
@@ -40,7 +43,7 @@ while [ $# -gt 0 ]; do
     --fuzz-runs) fuzz_runs=$2; shift 2 ;;
     --no-fuzz) do_fuzz=0; shift ;;
     --no-unit) do_unit=0; shift ;;
-    -h|--help) sed -n '2,23p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,26p' "$0"; exit 0 ;;
     *) echo "run.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
@@ -71,7 +74,7 @@ build_gcc() {
     cmake -S "$tree" -B "$out/gcc" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRICOCHET_FUZZ=OFF \
       -DRICOCHET_BENCH=OFF > "$out/gcc-configure.log" 2>&1 || return 1
   fi
-  ninja -C "$out/gcc" -j"$jobs" ricochet ricochet_properties > "$1" 2>&1
+  ninja -C "$out/gcc" -j"$jobs" ricochet ricochet_properties fuzz_parser > "$1" 2>&1
 }
 
 build_clang() {
@@ -101,6 +104,31 @@ reproduced_log() {
   done < <(find "$dir" -name '*.scene' | sort)
 }
 
+# The first parser finding under $1 (a campaign cache: parser/*/artifacts/) whose input (the minimized one
+# where there is one) makes fuzz_parser fail on the mutant (a failure report, non-zero exit) and pass on
+# the unmutated build; prints "INPUT" or nothing. Every input's verdicts go to $2.
+reproduced_parser_input() {
+  local cache=$1 verdicts=$2 raw input
+  : > "$verdicts"
+  [ -d "$cache/parser" ] || return 0
+  while IFS= read -r raw; do
+    input=$(dirname "$raw")/minimized-$(basename "$raw")
+    [ -s "$input" ] || input=$raw
+    "$out/gcc/fuzz/fuzz_parser" "$input" > "$input.mutant.txt" 2>&1
+    local m=$?
+    "$out/ref/fuzz_parser" "$input" > "$input.ref.txt" 2>&1
+    local r=$?
+    local tag=0
+    grep -q '^==ricochet-fuzz== FAILURE' "$input.mutant.txt" && tag=1
+    echo "$(basename "$input") mutant=$m ref=$r report=$tag" >> "$verdicts"
+    if [ "$m" != 0 ] && [ "$tag" = 1 ] && [ "$r" = 0 ]; then
+      echo "$input"
+      return 0
+    fi
+  done < <(find "$cache/parser" -path '*/artifacts/*' -type f ! -name 'minimized-*' ! -name 'slow-unit-*' \
+             ! -name '*.txt' | sort)
+}
+
 # --- the unmutated build -----------------------------------------------------------------------------
 echo "== reference: syncing $tree and building (gcc RelWithDebInfo) =="
 t0=$(now)
@@ -108,8 +136,11 @@ sync_tree
 build_gcc "$out/gcc-ref-build.log" || die "the unmutated gcc build fails ($out/gcc-ref-build.log)"
 mkdir -p "$out/ref"
 cp "$out/gcc/cli/ricochet" "$out/ref/ricochet"
+cp "$out/gcc/fuzz/fuzz_parser" "$out/ref/fuzz_parser"
 "$out/ref/ricochet" replay "$tree/replays" > "$out/ref-corpus.txt" 2>&1 ||
   die "the unmutated build fails its own corpus ($out/ref-corpus.txt)"
+"$out/ref/fuzz_parser" "$tree/fuzz/corpus/parser" "$tree/replays" > "$out/ref-parser.txt" 2>&1 ||
+  die "the unmutated parser target fails its own inputs ($out/ref-parser.txt)"
 echo "   built and corpus clean in $(( $(now) - t0 )) s"
 if [ "$do_unit" = 1 ]; then
   ninja -C "$out/gcc" -j"$jobs" promise_test > "$out/unit-ref-build.log" 2>&1 || die "promise_test does not build"
@@ -188,6 +219,12 @@ for p in "${patches[@]}"; do
     if [ -n "$hit" ]; then
       caught="fuzz:$(basename "$hit" | sed 's/^fuzz-//; s/-[0-9a-f]*\.scene$//')"
       log=${hit#"$out/"}
+    else
+      hit=$(reproduced_parser_input "$work/fuzz-cache" "$work/parser-verdicts.txt")
+      if [ -n "$hit" ]; then
+        caught="fuzz:parser"
+        log=${hit#"$out/"}
+      fi
     fi
   fi
   # Reported but not caught: a harness failure whose saved log does not reproduce it.

@@ -2,12 +2,17 @@
 # One malformed-log kind per call: writes the log, runs `ricochet run` and `ricochet record` on it and
 # checks the exact diagnostic on stderr, exit status 2, and that record left the file unchanged.
 #   malformed.sh RICOCHET KIND
+#   malformed.sh --write KIND FILE   writes the kind's log to FILE and prints its diagnostic (LINE:COL: …)
+#   malformed.sh --kinds             prints every kind (the case labels below)
 set -u
-ricochet=$1
-kind=$2
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-f=$dir/bad.scene
+case "$1" in
+  --kinds) sed -n 's/^  \([a-z][a-z-]*\)) .*/\1/p' "$0"; exit 0 ;;
+  --write) ricochet=""; kind=$2; f=$3 ;;
+  *) ricochet=$1; kind=$2
+     dir=$(mktemp -d)
+     trap 'rm -rf "$dir"' EXIT
+     f=$dir/bad.scene ;;
+esac
 h='ricochet 1'
 case "$kind" in
   unknown-directive) printf '%s\nwal 0 0 1 1\n' "$h" >"$f"; want='2:1: error: unknown directive '\''wal'\''' ;;
@@ -38,6 +43,7 @@ case "$kind" in
   duplicate-check)   printf '%s\ncheck speed\ncheck speed\n' "$h" >"$f"; want='3:7: error: duplicate check '\''speed'\''' ;;
   *) echo "unknown kind $kind" >&2; exit 1 ;;
 esac
+if [ -z "$ricochet" ]; then printf '%s\n' "$want"; exit 0; fi
 before=$(cksum <"$f")
 for cmd in run record; do
   err=$("$ricochet" "$cmd" "$f" 2>&1 >/dev/null)
