@@ -225,9 +225,12 @@ private:
             expected_ = "a check name";
             const Token& t = arg(1, "check name");
             const auto c = parse_check(t.text);
-            if (!c)
-                fail(t, fmt::format("unknown check '{}' (no-tunnel, symmetry, boundary, speed, deterministic, oracle)",
-                                    t.text));
+            if (!c) {
+                // Every name a log may use, from the one list of checks.
+                std::string names;
+                for (Check k : k_all_checks) names += fmt::format("{}{}", names.empty() ? "" : ", ", check_name(k));
+                fail(t, fmt::format("unknown check '{}' ({})", t.text, names));
+            }
             for (Check have : scene_.checks)
                 if (have == *c) fail(t, fmt::format("duplicate check '{}'", t.text));
             no_more(2);

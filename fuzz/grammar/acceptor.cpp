@@ -19,9 +19,9 @@ constexpr std::size_t k_from_limit = 64;
 constexpr std::int64_t k_frame_limit = 10'000'000;
 
 constexpr std::array<std::string_view, 4> k_kernels = {"lecture-float", "lecture-double", "robust", "exact"};
-constexpr std::array<std::string_view, 13> k_checks = {
-    "no-tunnel", "symmetry",    "boundary",   "speed",     "deterministic", "oracle",  "swap",
-    "translation", "broad-phase", "round-trip", "no-escape", "bounce-side",   "accuracy"};
+constexpr std::array<std::string_view, 14> k_checks = {
+    "no-tunnel",   "symmetry",    "boundary",   "speed",     "deterministic", "oracle",   "swap",
+    "translation", "broad-phase", "round-trip", "no-escape", "bounce-side",   "accuracy", "event-order"};
 
 template <std::size_t N>
 bool one_of(const std::array<std::string_view, N>& names, std::string_view s) {

@@ -97,7 +97,7 @@ TEST(GrammarAcceptor, KernelNames) {
 TEST(GrammarAcceptor, CheckNames) {
     std::string all = h;
     for (const char* c : {"no-tunnel", "symmetry", "boundary", "speed", "deterministic", "oracle", "swap", "translation",
-                          "broad-phase", "round-trip", "no-escape", "bounce-side", "accuracy"})
+                          "broad-phase", "round-trip", "no-escape", "bounce-side", "accuracy", "event-order"})
         all += std::string("check ") + c + "\n";
     accepted(all);
     rejected_at(h + "check speedy\n", 2);
