@@ -57,6 +57,16 @@ TEST(EventOrder, EachBreakIsNamed) {
     EXPECT_TRUE(has(verdict(s, 1, {state(1, 1), state(1, 0)}), "ball 0's state at this frame"));
     EXPECT_TRUE(has(verdict(s, 1, {state(1, 0)}), "the frame ends before ball 1's state"));
     EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), state(1, 1), state(1, 1)}), "after the states come only overlaps"));
+    EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), overlap(1, 0, K::circle, 0)}), "ball 1's state comes next"));
+    Event shaped = hit(1, 0, 0);
+    shaped.shape = K::circle;
+    EXPECT_TRUE(has(verdict(s, 1, {shaped, state(1, 0), state(1, 1)}), "names a wall of the scene and no shape"));
+    Event indexed = state(1, 0), with_shape = state(1, 0);
+    indexed.index = 1;
+    with_shape.shape = K::rect;
+    EXPECT_TRUE(has(verdict(s, 1, {indexed, state(1, 1)}), "ball 0's state at this frame"));
+    EXPECT_TRUE(has(verdict(s, 1, {with_shape, state(1, 1)}), "ball 0's state at this frame"));
+    EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), state(1, 1), overlap(2, 0, K::circle, 0)}), "at this frame"));
     // Overlaps: rect before circle, a repeat, a shape the scene lacks, a ball that does not exist.
     EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), state(1, 1), overlap(1, 0, K::rect, 0), overlap(1, 0, K::circle, 1)}),
                     "circles before rects"));

@@ -106,5 +106,19 @@ TEST(TruthDotSign, FilterAndExactFallbackAgree) {
     EXPECT_EQ(truth::dot_sign({DBL_MAX, DBL_MAX}, {1, -std::nextafter(1.0, 0.0)}), 1);
 }
 
+
+TEST(TruthBounce, AZeroLengthWallOrABallAtRestIsJudgedWithoutDividing) {
+    // A wall of no length has no normal: no bounce to judge. A ball at rest meets any wall at |v·n| = 0 ≥ 0,
+    // and its reflection is 0 exactly: within, with error 0 (no division by |v| = 0).
+    EXPECT_FALSE(truth::bounce_accuracy({1, -1}, Wall{{2, 2}, {2, 2}}, {1, 1}, 0x1p-48, 0).conditioned);
+    const truth::HitAccuracy r = truth::bounce_accuracy({0, 0}, Wall{{0, 0}, {1, 0}}, {0, 0}, 0x1p-48, 0);
+    EXPECT_TRUE(r.conditioned);
+    EXPECT_TRUE(r.within);
+    EXPECT_EQ(r.error, 0.0);
+    // v = (1, −1) off the floor y = 0 reflects to (1, 1) exactly; (1, 1 + 2^-40) is far outside 2·2^-48·√2.
+    EXPECT_TRUE(truth::bounce_accuracy({1, -1}, Wall{{0, 0}, {1, 0}}, {1, 1}, 0x1p-48, 0).within);
+    EXPECT_FALSE(truth::bounce_accuracy({1, -1}, Wall{{0, 0}, {1, 0}}, {1, 1 + 0x1p-40}, 0x1p-48, 0).within);
+}
+
 }  // namespace
 }  // namespace ricochet
