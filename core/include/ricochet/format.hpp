@@ -102,14 +102,10 @@ struct fmt::formatter<ricochet::Event> : ricochet::detail::PlainFormatter {
     template <class Context>
     auto format(const ricochet::Event& e, Context& ctx) const {
         using Kind = ricochet::Event::Kind;
-        // Every Kind has a case: the switch falls out without one only for a value outside the enum.
-        switch (e.kind) {
-            case Kind::state:
-                return fmt::format_to(ctx.out(), "state {} {} {} {} {} {}", e.frame, e.ball, e.pos.x, e.pos.y, e.vel.x,
-                                      e.vel.y);
-            case Kind::hit: return fmt::format_to(ctx.out(), "hit {} {} {} {} {}", e.frame, e.ball, e.index, e.pos.x, e.pos.y);
-            case Kind::overlap: break;
-        }
+        if (e.kind == Kind::state)
+            return fmt::format_to(ctx.out(), "state {} {} {} {} {} {}", e.frame, e.ball, e.pos.x, e.pos.y, e.vel.x, e.vel.y);
+        if (e.kind == Kind::hit)
+            return fmt::format_to(ctx.out(), "hit {} {} {} {} {}", e.frame, e.ball, e.index, e.pos.x, e.pos.y);
         return fmt::format_to(ctx.out(), "overlap {} {} {} {}", e.frame, e.ball,
                               e.shape == ricochet::Event::Shape::circle ? "circle" : "rect", e.index);
     }

@@ -143,8 +143,8 @@ HitAccuracy judge(const mpq_class& err, const mpq_class& unit, double ulps) {
     HitAccuracy r;
     r.conditioned = true;
     r.within = err <= Q(ulps) * unit;
-    // unit = 0 cannot happen here: a conditioned crossing has a coordinate of magnitude ≥ 2^-401 (kept as a guard).
-    r.error = sgn(unit) == 0 ? 0.0 : mpq_class(err / unit).get_d();
+    // unit > 0: judge is called only for a conditioned crossing, whose wall has |e|∞ ≥ 2^-400, so M ≥ 2^-401.
+    r.error = mpq_class(err / unit).get_d();
     return r;
 }
 
