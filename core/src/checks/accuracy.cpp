@@ -96,7 +96,7 @@ private:
     static Vec2 end_velocity(const Frame& f, std::uint32_t i) {
         for (const Event& e : f.events)
             if (e.kind == Event::Kind::state && e.ball == i) return e.vel;
-        return {};
+        return {};  // not reached: every ball prints a state every frame (world.hpp)
     }
 
     /// p lies on no wall's closed segment but wall w's (exactly).
