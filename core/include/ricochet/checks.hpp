@@ -43,6 +43,9 @@
 //                  (the earliest exact crossing, the lowest index on a tie; a wall the kernel's own rule
 //                  skips, lecture's wall just bounced off, left out); a leg it ended at a contact wall ends
 //                  exactly on that wall's far side; the hits it took, in order, are the frame's hit events.
+//                  The bounce limit as the spec states it: a frame makes at most 16 bounces (hits taken and
+//                  reflections off contact walls); one that stops at the limit made exactly 16 and prints the
+//                  ball at the last point of its path.
 //                  And the frame's first hit equals the exact kernel's from the same state and memory (unless
 //                  the exact kernel's frame leaves the accepted range). The exact kernel's legs are rational,
 //                  so it has only the static parts.
