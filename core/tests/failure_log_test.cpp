@@ -15,40 +15,14 @@
 #include "ricochet/format.hpp"
 #include "ricochet/replay.hpp"
 #include "ricochet/scene_log.hpp"
+#include "scene_text.hpp"
 
 namespace ricochet {
 namespace {
 
-Scene parse_ok(std::string_view text) {
-    auto r = parse_scene_log(text, "t.scene");
-    if (auto* d = std::get_if<Diagnostic>(&r)) ADD_FAILURE() << d->str();
-    return std::holds_alternative<Scene>(r) ? std::get<Scene>(r) : Scene{};
-}
-
-std::string diag(std::string_view text) {
-    auto r = parse_scene_log(text, "t.scene");
-    if (auto* d = std::get_if<Diagnostic>(&r)) return d->str();
-    return "parsed";
-}
-
-// Four balls aimed at the corners of a closed box, under lecture-double: a ball resting in a corner
-// re-hits a wall it is leaving at frame 3, which the exact kernel does not (replays/lecture/). (boundary,
-// left out, breaks first: at frame 2 the corner is on a wall's line yet the sweep from it hits that wall.)
-constexpr std::string_view k_corners = R"(ricochet 1
-kernel lecture-double
-frames 6
-wall 0 10 0 0
-wall 0 0 10 0
-wall 10 0 10 10
-wall 10 10 0 10
-ball 5 5 2.5 2.5
-ball 5 5 -2.5 2.5
-ball 5 5 -2.5 -2.5
-ball 5 5 2.5 -2.5
-check no-tunnel
-check speed
-check oracle
-)";
+using test::parse_ok;
+using test::diag;
+using test::k_corners;
 
 CheckFailure first_failure(const Scene& s) {
     const CheckedRun run = run_checked(s, s.kernel, s.frames, s.checks);

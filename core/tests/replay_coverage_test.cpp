@@ -10,15 +10,13 @@
 #include "ricochet/failure_log.hpp"
 #include "ricochet/replay.hpp"
 #include "ricochet/scene_log.hpp"
+#include "scene_text.hpp"
 
 namespace ricochet {
 namespace {
 
-Scene parse_ok(std::string_view text) {
-    auto r = parse_scene_log(text, "t.scene");
-    if (auto* d = std::get_if<Diagnostic>(&r)) ADD_FAILURE() << d->str();
-    return std::holds_alternative<Scene>(r) ? std::get<Scene>(r) : Scene{};
-}
+using test::parse_ok;
+using test::k_corners;
 
 bool has(const std::string& message, std::string_view part) { return message.find(part) != std::string::npos; }
 
@@ -49,23 +47,6 @@ TEST(ReplayMessages, AWrongHashWithoutExpectStatesSaysNoStateCanNameTheFrame) {
     EXPECT_TRUE(has(r.message, "hash expected 0000000000000001, got ")) << r.message;
     EXPECT_TRUE(has(r.message, " (no expect state to name the frame)")) << r.message;
 }
-
-// failure_log_test's corners under lecture-double: oracle breaks first, at frame 3.
-constexpr std::string_view k_corners = R"(ricochet 1
-kernel lecture-double
-frames 6
-wall 0 10 0 0
-wall 0 0 10 0
-wall 10 0 10 10
-wall 10 10 0 10
-ball 5 5 2.5 2.5
-ball 5 5 -2.5 2.5
-ball 5 5 -2.5 -2.5
-ball 5 5 2.5 -2.5
-check no-tunnel
-check speed
-check oracle
-)";
 
 TEST(ReplayMessages, AnExpectedFailureOfAnotherCheckAtTheSameFrameFails) {
     Scene s = parse_ok(k_corners);

@@ -9,21 +9,13 @@
 #include <variant>
 
 #include "ricochet/scene_log.hpp"
+#include "scene_text.hpp"
 
 namespace ricochet {
 namespace {
 
-Scene parse_ok(std::string_view text) {
-    auto r = parse_scene_log(text, "t.scene");
-    if (auto* d = std::get_if<Diagnostic>(&r)) ADD_FAILURE() << d->str();
-    return std::holds_alternative<Scene>(r) ? std::get<Scene>(r) : Scene{};
-}
-
-std::string diag(std::string_view text) {
-    auto r = parse_scene_log(text, "t.scene");
-    if (auto* d = std::get_if<Diagnostic>(&r)) return d->str();
-    return "parsed";
-}
+using test::parse_ok;
+using test::diag;
 
 Scene awkward_scene() {
     Scene s;
