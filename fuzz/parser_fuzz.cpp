@@ -1,9 +1,8 @@
 // Fuzz target `parser`: arbitrary bytes into the scene-log reader.
 // Oracles (besides ASan/UBSan/leaks/timeouts):
 // - grammar: the reader accepts the text iff the independent acceptor of docs/scene-log.md
-//   (grammar/acceptor.hpp) does, and when both reject they name the same line (grammar/agreement.hpp;
-//   the reader's known leniencies are told apart, and fail too with $RICOCHET_GRAMMAR_STRICT); the same
-//   for the writer's text of an accepted log;
+//   (grammar/acceptor.hpp) does, and when both reject they name the same line (grammar/agreement.hpp);
+//   the same for the writer's text of an accepted log;
 // - a rejected log names a place (line and column ≥ 1) and a reason;
 // - an accepted log round-trips: write(read(text)) reads back to the same scene bit for bit (same_bits,
 //   so −0 and +0 differ), and writing that again gives the same text.

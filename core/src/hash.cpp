@@ -70,7 +70,6 @@ std::optional<std::uint64_t> parse_hash(std::string_view text) {
         int d = 0;
         if (c >= '0' && c <= '9') d = c - '0';
         else if (c >= 'a' && c <= 'f') d = c - 'a' + 10;
-        else if (c >= 'A' && c <= 'F') d = c - 'A' + 10;
         else return std::nullopt;
         v = (v << 4) | static_cast<std::uint64_t>(d);
     }

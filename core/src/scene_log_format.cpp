@@ -239,11 +239,11 @@ private:
             expected_ = "hash H, state F I X Y VX VY or failure CHECK F";
             const Token& what = arg(1, "what to expect");
             if (what.text == "hash") {
-                expected_ = "16 hex digits";
+                expected_ = "16 lowercase hex digits";
                 if (scene_.expect_hash) fail(what, "duplicate 'expect hash'");
                 const Token& t = arg(2, "hash");
                 const auto h = parse_hash(t.text);
-                if (!h) fail(t, fmt::format("bad hash '{}': expected exactly 16 hex digits", t.text));
+                if (!h) fail(t, fmt::format("bad hash '{}': expected exactly 16 lowercase hex digits", t.text));
                 no_more(3);
                 scene_.expect_hash = *h;
             } else if (what.text == "state") {

@@ -62,7 +62,7 @@ TEST(SceneLog, ReadsTheSpecExampleWithCommentsTabsAndHex) {
     const Scene s = parse_ok(
         "# leading comment\n\nricochet 1\r\nfrom property NoTunnelClosedBox seed 1234\nkernel robust\nframes 3\n"
         "wall 0 0 0 10\nwall\t0 10   10 10 # trailing\nball 5 5 7.5 0x1.8p-3\ncircle -0x1p+3 5 0x1p+0 \ncheck no-tunnel\n"
-        "expect hash 3F29C1A07B5E6D84   # illustrative value\n");
+        "expect hash 3f29c1a07b5e6d84   # illustrative value\n");
     EXPECT_EQ(s.kernel, KernelId::robust);
     EXPECT_EQ(s.frames, 3);
     ASSERT_EQ(s.walls.size(), 2u);
@@ -128,8 +128,10 @@ TEST(SceneLog, EveryMalformedKindNamesItsPlace) {
         {"huge file", "ricochet 1\n" + std::string(k_max_file_size, '\n'),
          "1:1: error: the file is 16777227 bytes, over the limit of 16777216 bytes"},
         {"bad hash", "ricochet 1\nexpect hash 12345g7890abcdef\n",
-         "2:13: error: bad hash '12345g7890abcdef': expected exactly 16 hex digits"},
-        {"short hash", "ricochet 1\nexpect hash abc\n", "2:13: error: bad hash 'abc': expected exactly 16 hex digits"},
+         "2:13: error: bad hash '12345g7890abcdef': expected exactly 16 lowercase hex digits"},
+        {"short hash", "ricochet 1\nexpect hash abc\n", "2:13: error: bad hash 'abc': expected exactly 16 lowercase hex digits"},
+        {"uppercase hash", "ricochet 1\nexpect hash 3F29C1A07B5E6D84\n",
+         "2:13: error: bad hash '3F29C1A07B5E6D84': expected exactly 16 lowercase hex digits"},
         {"duplicate hash", "ricochet 1\nexpect hash 0000000000000000\nexpect hash 0000000000000000\n",
          "3:8: error: duplicate 'expect hash'"},
         {"unknown expectation", "ricochet 1\nexpect speed 1\n",

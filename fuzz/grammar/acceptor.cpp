@@ -44,8 +44,6 @@ struct Reference {
 
 class Acceptor {
 public:
-    explicit Acceptor(const Leniency& leniency) : leniency_(leniency) {}
-
     void run(std::string_view text) {
         if (text.size() > k_file_limit) throw Rejection{1, "file over the limit of 16 MiB"};
         std::size_t pos = 0;
@@ -98,10 +96,7 @@ private:
         return b;
     }
     void hash(std::string_view h) const {
-        const auto digit = [this](char c) {
-            return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') ||
-                   (leniency_.uppercase_hash && c >= 'A' && c <= 'F');
-        };
+        const auto digit = [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); };
         if (h.size() != 16 || !std::all_of(h.begin(), h.end(), digit)) reject("hash is not 16 lowercase hex digits");
     }
 
@@ -205,7 +200,6 @@ private:
         }
     }
 
-    Leniency leniency_;
     int line_ = 0;
     bool header_ = false, kernel_ = false, frames_seen_ = false, hash_seen_ = false, failure_seen_ = false,
          found_seen_ = false;
@@ -218,9 +212,9 @@ private:
 
 }  // namespace
 
-Verdict accept_scene_log(std::string_view text, const Leniency& leniency) {
+Verdict accept_scene_log(std::string_view text) {
     try {
-        Acceptor(leniency).run(text);
+        Acceptor().run(text);
         return {true, 0, {}};
     } catch (const Rejection& r) {
         return {false, r.line, r.reason};

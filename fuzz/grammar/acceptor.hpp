@@ -17,15 +17,8 @@ struct Verdict {
     std::string reason;
 };
 
-/// Known departures of the reader from the spec, each off by default (the spec as written). The fuzz
-/// target turns one on only to tell a known disagreement from a new one; see fuzz/README.md.
-struct Leniency {
-    /// Accept A–F in `expect hash` (the spec says lowercase; the reader accepts both cases).
-    bool uppercase_hash = false;
-};
-
 /// Decides text by docs/scene-log.md: lexical rules, directives and their arguments, numbers, limits,
 /// order and repetition, and the checks that need the whole log.
-Verdict accept_scene_log(std::string_view text, const Leniency& leniency = {});
+Verdict accept_scene_log(std::string_view text);
 
 }  // namespace ricochet_grammar

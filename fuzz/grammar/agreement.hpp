@@ -3,7 +3,6 @@
 // name the same line. Header-only, so each binary compiles it with its own flags.
 #pragma once
 
-#include <cstdlib>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -14,9 +13,6 @@
 #include "ricochet/scene_log.hpp"
 
 namespace ricochet_grammar {
-
-/// Environment variable: when set (to anything but "0"), a known disagreement (Leniency) fails as well.
-inline constexpr const char* k_strict_env = "RICOCHET_GRAMMAR_STRICT";
 
 /// The reader's verdict in the acceptor's terms.
 inline Verdict reader_verdict(const ricochet::SceneOrDiagnostic& parsed) {
@@ -39,33 +35,22 @@ struct Comparison {
     Verdict reader;
     Verdict acceptor;     ///< the spec as written
     bool agree = false;   ///< same_verdict(reader, acceptor)
-    bool known = false;   ///< they disagree, but agree once the acceptor has the reader's known leniencies
 };
 
 /// Compares the reader's verdict on text (parsed = parse_scene_log(text, …)) with the acceptor's.
 inline Comparison compare(std::string_view text, const ricochet::SceneOrDiagnostic& parsed) {
     Comparison c{reader_verdict(parsed), accept_scene_log(text)};
     c.agree = same_verdict(c.reader, c.acceptor);
-    if (!c.agree) {
-        // The reader's departures from the spec found so far (fuzz/README.md, "The grammar oracle").
-        const Leniency known{.uppercase_hash = true};
-        c.known = same_verdict(c.reader, accept_scene_log(text, known));
-    }
     return c;
 }
 
-/// True if the comparison fails the oracle: a disagreement, unless it is a known one and
-/// $RICOCHET_GRAMMAR_STRICT is unset.
-inline bool fails(const Comparison& c) {
-    if (c.agree) return false;
-    const char* strict = std::getenv(k_strict_env);
-    return !c.known || (strict != nullptr && std::string_view(strict) != "0");
-}
+/// True if the comparison fails the oracle: any disagreement.
+inline bool fails(const Comparison& c) { return !c.agree; }
 
 /// Both verdicts, for a failure report.
 inline std::string report(const Comparison& c) {
-    return fmt::format("the reader and the grammar acceptor disagree{}\n  reader:   {}\n  acceptor: {}",
-                       c.known ? " (a known leniency of the reader)" : "", describe(c.reader), describe(c.acceptor));
+    return fmt::format("the reader and the grammar acceptor disagree\n  reader:   {}\n  acceptor: {}",
+                       describe(c.reader), describe(c.acceptor));
 }
 
 }  // namespace ricochet_grammar

@@ -38,7 +38,7 @@ case "$kind" in
   huge-line)         { echo "$h"; printf '# %05000d\n' 0; } >"$f"; want='2:4097: error: line is 5002 bytes long, over the limit of 4096' ;;
   huge-file)         { echo "$h"; i=0; while [ $i -lt 5000 ]; do printf '# %03990d\n' 0; i=$((i+1)); done; } >"$f"
                      want='1:1: error: the file is over the limit of 16777216 bytes' ;;
-  bad-hash)          printf '%s\nexpect hash 12345g7890abcdef\n' "$h" >"$f"; want='2:13: error: bad hash '\''12345g7890abcdef'\'': expected exactly 16 hex digits' ;;
+  bad-hash)          printf '%s\nexpect hash 12345g7890abcdef\n' "$h" >"$f"; want='2:13: error: bad hash '\''12345g7890abcdef'\'': expected exactly 16 lowercase hex digits' ;;
   expect-bad-ball)   printf '%s\nframes 1\nball 0 0 1 1\nexpect state 1 3 0 0 1 1\n' "$h" >"$f"; want='4:16: error: expect state for ball 3 but the log has 1 balls' ;;
   duplicate-check)   printf '%s\ncheck speed\ncheck speed\n' "$h" >"$f"; want='3:7: error: duplicate check '\''speed'\''' ;;
   *) echo "unknown kind $kind" >&2; exit 1 ;;

@@ -59,7 +59,7 @@ private:
 std::uint64_t hash_events(std::span<const Event> events);
 /// 16 lowercase hex digits, zero-padded.
 std::string format_hash(std::uint64_t hash);
-/// Reads exactly 16 hex digits (either case), or nothing.
+/// Reads exactly 16 lowercase hex digits (what format_hash writes; docs/scene-log.md), or nothing.
 std::optional<std::uint64_t> parse_hash(std::string_view text);
 
 }  // namespace ricochet
