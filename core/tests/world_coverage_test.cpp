@@ -216,11 +216,13 @@ TEST(Record, ARunThatLeavesTheRangeRecordsNothing) {
 TEST(NamesAndHashes, OutOfEnumChecksAndHashDigitsOutsideTheAlphabet) {
     EXPECT_EQ(check_name(static_cast<Check>(99)), "?");
     EXPECT_EQ(parse_check("?"), std::nullopt);
-    // ' ' sorts below '0', ':' between '9' and 'A', '`' between 'F' and 'a'.
+    // ' ' sorts below '0', ':' just above '9', '`' just below 'a', 'g' just above 'f'; uppercase is not taken.
     EXPECT_FALSE(parse_hash("000000000000000 "));
     EXPECT_FALSE(parse_hash("000000000000000:"));
     EXPECT_FALSE(parse_hash("000000000000000`"));
-    EXPECT_EQ(parse_hash("00000000000000aF"), 0xafULL);
+    EXPECT_FALSE(parse_hash("000000000000000g"));
+    EXPECT_FALSE(parse_hash("00000000000000aF"));
+    EXPECT_EQ(parse_hash("00000000000000af"), 0xafULL);
 }
 
 TEST(FormatSpecs, CoreValuesAcceptAnEmptySpecAndRefuseAnyOther) {

@@ -139,7 +139,8 @@ TEST(Hash, IsXxh64SeedZeroAndStable) {
 
 TEST(Hash, FormatsAndParses) {
     EXPECT_EQ(format_hash(0x1a), "000000000000001a");
-    EXPECT_EQ(parse_hash("000000000000001A"), 0x1aULL);
+    EXPECT_EQ(parse_hash("000000000000001a"), 0x1aULL);
+    EXPECT_FALSE(parse_hash("000000000000001A"));  // docs/scene-log.md: lowercase only
     EXPECT_EQ(parse_hash(format_hash(0xfedcba9876543210ULL)), 0xfedcba9876543210ULL);
     EXPECT_FALSE(parse_hash("00000000000001a"));
     EXPECT_FALSE(parse_hash("00000000000000001a"));
