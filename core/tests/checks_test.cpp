@@ -58,11 +58,67 @@ TEST(Checks, AccuracyFailsForFloatsRoundingAndHoldsForRobust) {
     // Its t_i (the trace's leg fraction) is off first; the printed point's own bound is what it is off by next.
     EXPECT_NE(f->message.find("at t_i = "), std::string::npos) << f->message;
     EXPECT_NE(f->message.find("eps*M along the leg from the exact crossing"), std::string::npos) << f->message;
-    // The same leg grazing the wall (|e × d| < |e|∞·|d|∞ / 4) is not held to the bound.
+    // The same leg grazing the wall (|e × d| < |e|∞·|d|∞ / 4) is not held to the bound: what fails is that
+    // its leg runs between floats, not from Bs (0.1 is not a float).
     Scene graze = s;
     graze.walls = {{{-1, 0.2}, {3, 0.2 + 0.5 / 1024}}};
     graze.balls = {{{0.1, 0.1}, {2, 0.2}}};
-    EXPECT_FALSE(first_failure(graze, KernelId::lecture_float, Check::accuracy));
+    const auto g = first_failure(graze, KernelId::lecture_float, Check::accuracy);
+    ASSERT_TRUE(g);
+    EXPECT_NE(g->message.find("leg 0 starts at"), std::string::npos) << g->message;
+    EXPECT_EQ(g->message.find("exact crossing"), std::string::npos) << g->message;
+}
+
+/// robust's sweep and reflection against wall 0 alone, except that after a bounce the ball moves a whole
+/// frame's v′ instead of the rest, (1 − t_i)·v′. Traced as a kernel traces its legs.
+FrameStatus whole_frame_after_bounce(Ball& ball, BallMemory&, std::span<const Wall> walls, std::vector<HitEvent>& hits,
+                                     StepScratch& scratch, const WallIndex*) {
+    const KernelOps& robust = kernel_ops(KernelId::robust);
+    const auto leg = [&](Vec2 from, Vec2 to, Vec2 vel) -> TracedLeg* {
+        if (scratch.trace == nullptr) return nullptr;
+        TracedLeg& l = scratch.trace->legs.emplace_back();
+        l.from = from;
+        l.to = to;
+        l.vel = vel;
+        return &l;
+    };
+    const Sweep s = robust.sweep(ball.pos, ball.vel, walls[0]);
+    TracedLeg* first = leg(ball.pos, ball.pos + ball.vel, ball.vel);
+    if (s.miss != Miss::none) {
+        ball.pos = ball.pos + ball.vel;
+        return FrameStatus::ok;
+    }
+    if (first != nullptr) {
+        first->hit = 0;
+        first->hit_t = s.t;
+        ++scratch.trace->reflections;
+    }
+    hits.push_back({0, s.t, s.point});
+    const Vec2 v = robust.reflect(ball.vel, walls[0]);
+    leg(s.point, s.point + v, v);
+    ball = {s.point + v, v};
+    return FrameStatus::ok;
+}
+
+TEST(Checks, AccuracyHoldsEachLegToTheRestOfTheFrame) {
+    // Hit at t_i = 1/2 at (0.75, 0); the rest of the frame ends at (0.75, 0) + (1/2)·(0.5, 2) = (1, 1).
+    Scene s;
+    s.frames = 1;
+    s.walls = {{{10, 0}, {-10, 0}}};
+    s.balls = {{{0.5, 1}, {0.5, -2}}};
+    EXPECT_FALSE(first_failure(s, KernelId::robust, Check::accuracy));
+    EXPECT_FALSE(first_failure(s, KernelId::lecture_double, Check::accuracy));
+    KernelOps ops = kernel_ops(KernelId::robust);
+    ops.name = "whole-frame-after-bounce-test";
+    ops.step_ball = &whole_frame_after_bounce;
+    const std::optional<KernelId> bad = register_kernel(ops);
+    ASSERT_TRUE(bad);
+    // Its t_i, B_i and v′ are robust's: only the second leg's length is wrong.
+    const auto f = first_failure(s, *bad, Check::accuracy);
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->frame, 1);
+    EXPECT_NE(f->message.find("leg 1 ((0.75, 0) -> (1.25, 2))"), std::string::npos) << f->message;
+    EXPECT_NE(f->message.find("is not the rest of the frame"), std::string::npos) << f->message;
 }
 
 /// robust, except that a frame with a hit ends going straight back (v' = −v): the bug of mutant 28.

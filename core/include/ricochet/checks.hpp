@@ -84,6 +84,11 @@
 //                  |v|∞·|n|∞ / 4 (n = (e_y, −e_x), exactly), the velocity it leaves with (the next leg's, else
 //                  the frame's end state's) is within 2·(b·|v| + a) of v − 2(v·n)n/(n·n) in each component,
 //                  b and a the kernel's speed_bound, decided exactly.
+//                  And the rest of the frame: the frame's first leg starts at the ball's state before it, a
+//                  leg after a hit at that hit's printed point, a leg after a reflection off a contact wall
+//                  where that one started; each leg a → b moving v after hits at t_1 … t_k earlier in the
+//                  frame ends within (2k + 3)·ε·M + 2^−1072 of a + R·v, R = Π(1 − t_j), in each coordinate
+//                  (M the largest magnitude of a, b and R·v; truth::leg_end_accuracy), exactly.
 //                  The same bound for every kernel: robust keeps it (its derivation is in promise_test.cpp),
 //                  lecture-float does not (2^−24 rounding). The exact kernel's legs are rational, so it has
 //                  none to check (its B_i is its exact crossing, rounded once).

@@ -82,6 +82,13 @@ HitAccuracy hit_time_accuracy(Vec2 a, Vec2 b, const Wall& w, double t, double ul
 /// 2·(rel·|v| + abs) (the speed bound of one reflection, per component as the kernel's error terms carry
 /// over), decided exactly. error: max |v_out − R| per component over |v|, for messages.
 HitAccuracy bounce_accuracy(Vec2 v, const Wall& w, Vec2 v_out, double rel, double abs);
+/// The end `to` of a leg that starts at `from` and spends the rest of the frame moving v, after hits at the
+/// leg fractions ts (kernel.hpp: after a bounce at B_i the rest of the frame is the leg from B_i to
+/// B_i + (1 − t_i)·v′), against from + R·v with R = Π(1 − t_k), exactly. Always conditioned; within when
+/// every component of to − (from + R·v) is at most (2k + 3)·ε·M + 2^−1072, k = ts.size(), ε = 2^−53 and
+/// M = max(|from|∞, |to|∞, |R·v|∞): R rounded twice per hit (1 − t, then the product), R·v and the sum once
+/// each, and the underflow of those roundings. error: max |to − (from + R·v)| per component in units of ε·M.
+HitAccuracy leg_end_accuracy(Vec2 from, Vec2 v, std::span<const double> ts, Vec2 to);
 
 /// kernel.hpp's no-tunnelling definition, followed independently of ricochet::TunnelChecker: a piece
 /// from one open side to the other through the closed segment, or arriving on the closed segment from

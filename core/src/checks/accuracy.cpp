@@ -1,6 +1,7 @@
 // accuracy: every well-conditioned hit's t_i and B_i lie within k_hit_accuracy_ulps·ε·M of the exact
-// crossing of the leg the kernel swept, and a well-conditioned bounce off a lone wall leaves within the speed
-// bound of the exact reflection (checks.hpp).
+// crossing of the leg the kernel swept, a well-conditioned bounce off a lone wall leaves within the speed
+// bound of the exact reflection, and each leg is the rest of the frame from where the last one ended
+// (checks.hpp).
 #include <fmt/format.h>
 
 #include <cmath>
@@ -88,6 +89,39 @@ private:
                                fmt::format("leg {} hits wall {} moving {} and leaves moving {}, {:.4g}·|v| from the "
                                            "exact reflection v - 2(v·n)n/(n·n) (bound 2·{:.4g}·|v| + 2·{:.4g})",
                                            l, hit.index, leg.vel, v_out, rb.error, bound_.rel, bound_.abs));
+        }
+        return rest_of_frame(f, i, hits);
+    }
+
+    /// kernel.hpp's legs: the first runs from Bs to Bs + v; after a hit at B_i the next runs from the printed
+    /// B_i for the rest of the frame, (1 − t_i)·v′ (R = Π(1 − t_k) after several); a reflection off a contact
+    /// wall starts the next leg where this one started, with the same R.
+    std::optional<CheckFailure> rest_of_frame(const Frame& f, std::uint32_t i, const std::vector<const Event*>& hits) const {
+        const StepTrace& trace = f.traces[i];
+        std::vector<double> ts;
+        Vec2 start = f.before[i].pos;
+        std::size_t k = 0;
+        for (std::size_t l = 0; l < trace.legs.size(); ++l) {
+            const TracedLeg& leg = trace.legs[l];
+            const bool finite = std::isfinite(leg.from.x) && std::isfinite(leg.from.y) && std::isfinite(leg.to.x) &&
+                                std::isfinite(leg.to.y) && std::isfinite(leg.vel.x) && std::isfinite(leg.vel.y);
+            if (!finite) break;  // oracle's failure: not a segment
+            if (!(leg.from == start))
+                return failure(Check::accuracy, f.index, i,
+                               fmt::format("leg {} starts at {}, not at {} where the {} ended", l, leg.from, start,
+                                           l == 0 ? "previous frame" : "previous leg"));
+            const truth::HitAccuracy r = truth::leg_end_accuracy(leg.from, leg.vel, ts, leg.to);
+            if (!r.within)
+                return failure(Check::accuracy, f.index, i,
+                               fmt::format("leg {} ({} -> {}) moving {} after {} hits is not the rest of the frame: "
+                                           "{:.4g} eps*M from {} + R*v, R = prod(1 - t_i) (bound {})",
+                                           l, leg.from, leg.to, leg.vel, ts.size(), r.error, leg.from,
+                                           2 * ts.size() + 3));
+            if (leg.blocked) continue;
+            // A hit taken (it printed the k-th hit): the next leg starts at its printed B_i.
+            if (!leg.hit || k >= hits.size() || hits[k]->index != *leg.hit) break;
+            start = hits[k++]->pos;
+            ts.push_back(leg.hit_t);
         }
         return std::nullopt;
     }

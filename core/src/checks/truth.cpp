@@ -193,6 +193,27 @@ HitAccuracy bounce_accuracy(Vec2 v, const Wall& w, Vec2 v_out, double rel, doubl
     return r;
 }
 
+HitAccuracy leg_end_accuracy(Vec2 from, Vec2 v, std::span<const double> ts, Vec2 to) {
+    const auto qabs = [](const mpq_class& q) { return mpq_class(abs(q)); };
+    // R = Π(1 − t_k): the fraction of the frame left after the hits.
+    mpq_class rest = 1;
+    for (double t : ts) rest *= 1 - Q(t);
+    // The exact end from + R·v, and its distance to the printed one.
+    const mpq_class px = rest * Q(v.x), py = rest * Q(v.y);
+    const mpq_class err = std::max(qabs(Q(to.x) - (Q(from.x) + px)), qabs(Q(to.y) - (Q(from.y) + py)));
+    const mpq_class m = std::max({qabs(Q(from.x)), qabs(Q(from.y)), qabs(Q(to.x)), qabs(Q(to.y)), qabs(px), qabs(py)});
+    // Each rounding of a product or a sum errs by at most ε relative to its result, or 2^−1075 when it
+    // underflows: 2k roundings for R (relative, so ≤ (2k)ε·|R·v| + …), one for R·v, one for the sum (≤ ε·|to|).
+    // (2k + 2)ε·M with the second-order terms, which stay below ε·M while k < 2^50, makes (2k + 3)ε·M.
+    const mpq_class unit = m / (mpq_class(1) << 53);
+    const auto k = static_cast<long>(ts.size());
+    HitAccuracy r;
+    r.conditioned = true;
+    r.within = err <= (2 * k + 3) * unit + mpq_class(1) / (mpq_class(1) << 1072);
+    r.error = sgn(unit) == 0 ? 0.0 : mpq_class(err / unit).get_d();
+    return r;
+}
+
 bool sum_exact(double a, double b) { return Q(a + b) == Q(a) + Q(b); }
 
 int direction_side(Vec2 d, const Wall& w) {
