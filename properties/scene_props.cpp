@@ -62,6 +62,14 @@ TEST_P(Scenes, NoEntryClosedBox) {
                  GetParam());
 }
 
+/// In closed polygons, with balls aimed at their vertices: every hit's t_i and B_i, the bounce off a lone
+/// wall, the corner rule at a vertex and the rest of each frame keep to accuracy's bounds.
+TEST_P(Scenes, CornerAccuracy) {
+    run_property({"CornerAccuracy", Check::accuracy, gen::polygon_scene(true, 24), checked({Check::accuracy}, classify_legs),
+                  600},
+                 GetParam());
+}
+
 /// After a bounce the ball stays on the side it came from.
 TEST_P(Scenes, BounceSide) {
     run_property({"BounceSide", Check::bounce_side, gen::wall_scene(1, 8), checked({Check::bounce_side}, classify_legs),

@@ -157,6 +157,47 @@ TEST(Checks, AccuracyHoldsTheBounceToTheExactReflection) {
     EXPECT_FALSE(first_failure(corner, *bad, Check::accuracy));
 }
 
+/// robust, except that a frame with a hit ends reflected about the wall hit alone (no corner rule).
+FrameStatus hit_wall_only(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
+                          StepScratch& scratch, const WallIndex* index) {
+    const Vec2 v = ball.vel;
+    const std::size_t before = hits.size();
+    const KernelOps& robust = kernel_ops(KernelId::robust);
+    const FrameStatus status = robust.step_ball(ball, memory, walls, hits, scratch, index);
+    if (hits.size() > before) ball.vel = robust.reflect(v, walls[hits[before].wall]);
+    return status;
+}
+
+TEST(Checks, AccuracyHoldsACornerToTheCornerRule) {
+    // The frame ends exactly at (1, 0), the corner of the floor y = 0 (wall 0, hit) and the wall x = 1 met
+    // from its left. v = (0.5, −1) reflects about the floor to (0.5, 1), which still crosses x = 1, so about
+    // that too: (−0.5, 1).
+    Scene s;
+    s.frames = 1;
+    s.walls = {{{10, 0}, {-10, 0}}, {{1, 0}, {1, 5}}};
+    s.balls = {{{0.5, 1}, {0.5, -1}}};
+    EXPECT_FALSE(first_failure(s, KernelId::robust, Check::accuracy));
+    // The lecture has no corner rule: its kernels reflect about the wall they report (kernel.hpp).
+    const auto lecture = first_failure(s, KernelId::lecture_double, Check::accuracy);
+    ASSERT_TRUE(lecture);
+    EXPECT_NE(lecture->message.find("from the corner rule's v'"), std::string::npos) << lecture->message;
+    KernelOps ops = kernel_ops(KernelId::robust);
+    ops.name = "hit-wall-only-test";
+    ops.step_ball = &hit_wall_only;
+    const std::optional<KernelId> bad = register_kernel(ops);
+    ASSERT_TRUE(bad);
+    const auto f = first_failure(s, *bad, Check::accuracy);
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->frame, 1);
+    EXPECT_NE(f->message.find("at the corner (1, 0) (1 other walls there) moving (0.5, -1) and leaves moving (0.5, 1)"),
+              std::string::npos)
+        << f->message;
+    // Away from the corner the same kernel is robust: one reflection is the whole rule.
+    Scene lone = s;
+    lone.walls[1] = {{2, 0}, {2, 5}};
+    EXPECT_FALSE(first_failure(lone, *bad, Check::accuracy));
+}
+
 TEST(Checks, OracleHoldsAtTheBounceLimitAndTheTraceSaysItStopped) {
     // A corridor 2^-40 wide crossed at speed 1: every frame needs thousands of bounces and stops at 16.
     // oracle counts the bounces against the spec's 16 and finds the ball at the last point of its path.

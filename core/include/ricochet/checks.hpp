@@ -84,6 +84,12 @@
 //                  |v|∞·|n|∞ / 4 (n = (e_y, −e_x), exactly), the velocity it leaves with (the next leg's, else
 //                  the frame's end state's) is within 2·(b·|v| + a) of v − 2(v·n)n/(n·n) in each component,
 //                  b and a the kernel's speed_bound, decided exactly.
+//                  At a corner (the printed point on other walls' closed segments too, each met from a side):
+//                  the velocity it leaves with follows kernel.hpp's corner rule, computed exactly (reflect
+//                  about the wall hit, then about each other wall there, in index order, whose outside the
+//                  new velocity would cross into; straight back if one is still crossed): −v exactly where
+//                  the rule goes straight back, else within 3m·(2b·|v| + a) per component after m
+//                  reflections, when each of the rule's decisions is clear (|w·n| ≥ |w|∞·|n|∞ / 4).
 //                  And the rest of the frame: the frame's first leg starts at the ball's state before it, a
 //                  leg after a hit at that hit's printed point, a leg after a reflection off a contact wall
 //                  where that one started; each leg a → b moving v after hits at t_1 … t_k earlier in the

@@ -24,7 +24,8 @@
 // - A ball lying on a wall's line and moving off it does not hit that wall ("leaving").
 // - Corners: when several walls are met at the same point, the lowest-indexed one is reported as the
 //   hit; v is reflected about it and then about each other wall met there whose outside the new
-//   velocity would still cross into; if some wall is still crossed, v' = −v (straight back).
+//   velocity would still cross into; if some wall is still crossed, v' = −v (straight back). The lecture
+//   kernels have no such rule (the lecture has none): they reflect about the reported wall only.
 // - At most k_max_bounces bounces a frame; past that the ball stays where it is, a safe point.
 //
 // No tunnelling (robust and exact guarantee it; tunnel.hpp checks it exactly). A ball's path is the

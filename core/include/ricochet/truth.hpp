@@ -82,6 +82,18 @@ HitAccuracy hit_time_accuracy(Vec2 a, Vec2 b, const Wall& w, double t, double ul
 /// 2·(rel·|v| + abs) (the speed bound of one reflection, per component as the kernel's error terms carry
 /// over), decided exactly. error: max |v_out − R| per component over |v|, for messages.
 HitAccuracy bounce_accuracy(Vec2 v, const Wall& w, Vec2 v_out, double rel, double abs);
+/// The corner rule (kernel.hpp) for a ball moving v that hits wall `hit`, met from side hit_from, at a point
+/// on the closed segments of the walls `others` too (index order), each met from the non-zero side in
+/// others_from: R is the exact reflection of v about `hit`, then about each other wall whose outside R would
+/// still cross into (n_c·R of sign −from_c), in order; if some wall (`hit` included) is still crossed, or R
+/// does not point strictly back to hit_from's side, the rule goes straight back, −v. conditioned when every
+/// wall has a length and each of those decisions is clear: |R·n_c| ≥ |R|∞·|n_c|∞ / 4 for every wall c at
+/// every step, and |v·n| ≥ |v|∞·|n|∞ / 4 for the hit; within when v_out = −v exactly where the rule goes
+/// straight back, else every component of v_out − R is at most 3m·(2·rel·|v| + abs), m the reflections
+/// (each rounded reflection errs by at most 2·(rel·|w| + abs) per component, √2 more in length, carried
+/// unchanged by the next reflection, an isometry; |w| ≤ 2|v| along the way). error: max |v_out − R| / |v|.
+HitAccuracy corner_accuracy(Vec2 v, const Wall& hit, int hit_from, std::span<const Wall> others,
+                            std::span<const int> others_from, Vec2 v_out, double rel, double abs);
 /// The end `to` of a leg that starts at `from` and spends the rest of the frame moving v, after hits at the
 /// leg fractions ts (kernel.hpp: after a bounce at B_i the rest of the frame is the leg from B_i to
 /// B_i + (1 − t_i)·v′), against from + R·v with R = Π(1 − t_k), exactly. Always conditioned; within when

@@ -78,10 +78,12 @@ private:
                                fmt::format("leg {} ({} -> {}) hits wall {} at {}, {:.4g} eps*M from the exact "
                                            "crossing (bound {})",
                                            l, leg.from, leg.to, hit.index, hit.pos, r.error, k_hit_accuracy_ulps));
-            // v′: the velocity the ball left the hit with (the next leg's, else the frame's end state's), for a
-            // bounce off this wall alone (the hit point on no other wall, so no corner rule applies).
+            // v′: the velocity the ball left the hit with (the next leg's, else the frame's end state's).
             const Vec2 v_out = l + 1 < trace.legs.size() ? trace.legs[l + 1].vel : end_velocity(f, i);
-            if (!lone_wall(hit.pos, hit.index)) continue;
+            if (!lone_wall(hit.pos, hit.index)) {
+                if (auto bad = corner(f, i, l, leg, hit, v_out)) return bad;
+                continue;
+            }
             const truth::HitAccuracy rb =
                 truth::bounce_accuracy(leg.vel, scene_.walls[hit.index], v_out, bound_.rel, bound_.abs);
             if (rb.conditioned && !rb.within)
@@ -123,6 +125,34 @@ private:
             start = hits[k++]->pos;
             ts.push_back(leg.hit_t);
         }
+        return std::nullopt;
+    }
+
+    /// A hit at a point on other walls too: the corner rule (kernel.hpp), where every wall there is met from a
+    /// side (a ball that slid along one's line has a memory the rule reads, and is not checked).
+    std::optional<CheckFailure> corner(const Frame& f, std::uint32_t i, std::size_t l, const TracedLeg& leg,
+                                       const Event& hit, Vec2 v_out) const {
+        const Wall& w = scene_.walls[hit.index];
+        const int hit_from = truth::side(leg.from, w);
+        std::vector<Wall> others;
+        std::vector<int> from;
+        for (std::uint32_t j = 0; j < scene_.walls.size(); ++j) {
+            const Wall& c = scene_.walls[j];
+            if (j == hit.index || c.p0 == c.p1 || !truth::on_closed_segment(hit.pos, c)) continue;
+            others.push_back(c);
+            from.push_back(truth::side(leg.from, c));
+            if (from.back() == 0) return std::nullopt;
+        }
+        if (hit_from == 0) return std::nullopt;
+        const truth::HitAccuracy r =
+            truth::corner_accuracy(leg.vel, w, hit_from, others, from, v_out, bound_.rel, bound_.abs);
+        if (r.conditioned && !r.within)
+            return failure(Check::accuracy, f.index, i,
+                           fmt::format("leg {} hits wall {} at the corner {} ({} other walls there) moving {} and "
+                                       "leaves moving {}, {:.4g}·|v| from the corner rule's v' (bound 3m·(2·{:.4g}·|v| "
+                                       "+ {:.4g}), m reflections; straight back is exact)",
+                                       l, hit.index, hit.pos, others.size(), leg.vel, v_out, r.error, bound_.rel,
+                                       bound_.abs));
         return std::nullopt;
     }
 

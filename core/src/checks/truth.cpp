@@ -193,6 +193,70 @@ HitAccuracy bounce_accuracy(Vec2 v, const Wall& w, Vec2 v_out, double rel, doubl
     return r;
 }
 
+HitAccuracy corner_accuracy(Vec2 v, const Wall& hit, int hit_from, std::span<const Wall> others,
+                            std::span<const int> others_from, Vec2 v_out, double rel, double abs_bound) {
+    const auto qabs = [](const mpq_class& q) { return mpq_class(abs(q)); };
+    struct Normal {
+        mpq_class x, y, nn, inf;  // n = (e_y, −e_x), n·n, |n|∞
+    };
+    const auto normal = [&](const Wall& w) {
+        const mpq_class ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
+        return Normal{ey, -ex, ey * ey + ex * ex, std::max(qabs(ey), qabs(ex))};
+    };
+    HitAccuracy r;
+    mpq_class wx = Q(v.x), wy = Q(v.y);
+    // n·w, and whether its sign is clear: |n·w| ≥ |w|∞·|n|∞ / 4.
+    const auto side_of = [&](const Normal& n, int& s) {
+        const mpq_class d = n.x * wx + n.y * wy;
+        s = sgn(d);
+        return 4 * qabs(d) >= std::max(qabs(wx), qabs(wy)) * n.inf;
+    };
+    // w − 2(w·n)/(n·n)·n, exactly.
+    const auto reflect_about = [&](const Normal& n) {
+        const mpq_class k = 2 * (n.x * wx + n.y * wy) / n.nn;
+        wx -= k * n.x;
+        wy -= k * n.y;
+    };
+    const Normal nh = normal(hit);
+    int s = 0;
+    if (sgn(nh.nn) == 0 || !side_of(nh, s)) return r;
+    std::vector<Normal> ns;
+    for (const Wall& c : others) {
+        ns.push_back(normal(c));
+        if (sgn(ns.back().nn) == 0) return r;
+    }
+    reflect_about(nh);
+    int m = 1;
+    for (std::size_t j = 0; j < ns.size(); ++j) {
+        if (!side_of(ns[j], s)) return r;
+        if (s == -others_from[j]) {
+            reflect_about(ns[j]);
+            ++m;
+        }
+    }
+    // Still crossing a wall met here, or not strictly back from the wall hit: straight back.
+    bool back = false;
+    for (std::size_t j = 0; j < ns.size(); ++j) {
+        if (!side_of(ns[j], s)) return r;
+        back = back || s == -others_from[j];
+    }
+    if (!side_of(nh, s)) return r;
+    back = back || s != hit_from;
+    r.conditioned = true;
+    const mpq_class vv = Q(v.x) * Q(v.x) + Q(v.y) * Q(v.y);
+    if (back) {
+        r.within = v_out == -v;
+        r.error = r.within ? 0.0 : 2.0;
+        return r;
+    }
+    const mpq_class err = std::max(qabs(Q(v_out.x) - wx), qabs(Q(v_out.y) - wy));
+    // err ≤ 3m·(2·rel·|v| + abs)  ⇔  over = err − 3m·abs ≤ 0, or over² ≤ 36m²·rel²·(v·v).
+    const mpq_class over = err - 3 * m * Q(abs_bound);
+    r.within = sgn(over) <= 0 || over * over <= 36 * m * m * Q(rel) * Q(rel) * vv;
+    r.error = sgn(vv) == 0 ? 0.0 : err.get_d() / std::sqrt(vv.get_d());
+    return r;
+}
+
 HitAccuracy leg_end_accuracy(Vec2 from, Vec2 v, std::span<const double> ts, Vec2 to) {
     const auto qabs = [](const mpq_class& q) { return mpq_class(abs(q)); };
     // R = Π(1 − t_k): the fraction of the frame left after the hits.
