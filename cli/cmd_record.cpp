@@ -62,11 +62,11 @@ void register_record(CLI::App& app) {
             fmt::print(stderr, "ricochet: error: {}\n", error);
             throw Exit{1};
         }
-        fmt::print("recorded {}: hash {}, {} expect state line(s){}\n", *log, format_hash(run.hash),
-                   scene.expect_states.size(),
-                   run.failure ? fmt::format(", expect failure {} {} ({})", run.failure->check,
-                                             run.failure->frame, run.failure->message)
-                               : std::string());
+        write_stdout(fmt::format("recorded {}: hash {}, {} expect state line(s){}\n", *log, format_hash(run.hash),
+                                 scene.expect_states.size(),
+                                 run.failure ? fmt::format(", expect failure {} {} ({})", run.failure->check,
+                                                           run.failure->frame, run.failure->message)
+                                             : std::string()));
     });
 }
 

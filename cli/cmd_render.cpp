@@ -47,7 +47,7 @@ void register_render(CLI::App& app) {
             fmt::print(stderr, "ricochet: error: {}\n", error);
             throw Exit{1};
         }
-        fmt::print("wrote {}{}\n", opt->out, run.failure ? fmt::format(" (marked: {})", run.failure->str()) : "");
+        write_stdout(fmt::format("wrote {}{}\n", opt->out, run.failure ? fmt::format(" (marked: {})", run.failure->str()) : ""));
     });
 }
 

@@ -28,11 +28,12 @@ void register_run(CLI::App& app) {
         World world(scene, k);
         std::vector<Event> events;
         std::string out;
-        // Print in chunks: a long run streams rather than piling up in memory.
+        // Print in chunks: a long run streams rather than piling up in memory, and a failed write
+        // (write_stdout throws) stops it at once.
         const auto flush = [&] {
             for (const Event& e : events) append_event_line(out, e);
             events.clear();
-            std::fwrite(out.data(), 1, out.size(), stdout);
+            write_stdout(out);
             out.clear();
         };
         world.start(events);

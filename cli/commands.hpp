@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "output.hpp"
 #include "ricochet/scene.hpp"
 
 namespace ricochet::cli {

@@ -61,7 +61,7 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
         auto parsed = read_scene_log(log);
         if (auto* d = std::get_if<Diagnostic>(&parsed)) {
             fmt::print(stderr, "{}\n", d->str());
-            if (!hashes_only) fmt::print("FAIL {}: unreadable log\n", log.string());
+            if (!hashes_only) write_stdout(fmt::format("FAIL {}: unreadable log\n", log.string()));
             s.bad_input = true;
             ++s.failed;
             continue;
@@ -69,13 +69,17 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
         const Scene& scene = std::get<Scene>(parsed);
         const ReplayResult r = replay_scene(scene);
         if (hashes_only)
-            fmt::print("{} {}\n", format_hash(r.run.hash), log.string());
+            write_stdout(fmt::format("{} {}\n", format_hash(r.run.hash), log.string()));
         else
-            fmt::print("{} {}: {}\n", r.passed ? "ok  " : "FAIL", log.string(), r.message);
+            write_stdout(fmt::format("{} {}: {}\n", r.passed ? "ok  " : "FAIL", log.string(), r.message));
         (r.passed ? s.passed : s.failed) += 1;
+        // Line by line, so a reader (and a failed write) sees each verdict as it comes.
+        std::fflush(stdout);
+        check_stdout();
     }
-    if (!hashes_only) fmt::print("{} passed, {} failed\n", s.passed, s.failed);
+    if (!hashes_only) write_stdout(fmt::format("{} passed, {} failed\n", s.passed, s.failed));
     std::fflush(stdout);
+    check_stdout();
     return s;
 }
 

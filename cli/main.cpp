@@ -1,5 +1,9 @@
 // ricochet: run, record, replay, render and check scene logs; fuzz and bench where built.
+//
+// Exit status: 0 success; 1 a check or expectation failed, a run stopped, or output could not be
+// written; 2 bad usage or input.
 #include <cstdio>
+#include <system_error>
 
 #include <fmt/format.h>
 
@@ -23,20 +27,23 @@ int main(int argc, char** argv) {
     ricochet::cli::register_bench_not_built(app);
 #endif
     ricochet::fuzz::register_fuzz(app);
+    int code = 0;
     try {
         app.parse(argc, argv);
     } catch (const CLI::RuntimeError& e) {
         // bench/ and fuzz/ end their commands with CLI11's own exit-status exception.
-        std::fflush(stdout);
-        return e.get_exit_code();
+        code = e.get_exit_code();
     } catch (const CLI::ParseError& e) {
         // --help and --version are not errors; every other usage error is bad input: exit 2.
-        const int code = app.exit(e);
-        return code == 0 ? 0 : 2;
+        code = app.exit(e) == 0 ? 0 : 2;
     } catch (const ricochet::cli::Exit& e) {
-        std::fflush(stdout);
-        return e.code;
+        code = e.code;
+    } catch (const ricochet::cli::OutputError& e) {
+        return ricochet::cli::report_output_error(e.error);
+    } catch (const std::system_error& e) {
+        // fmt::print throws this when its write fails.
+        if (!std::ferror(stdout)) throw;
+        return ricochet::cli::report_output_error(e.code().value());
     }
-    std::fflush(stdout);
-    return 0;
+    return ricochet::cli::finish_stdout(code);
 }
