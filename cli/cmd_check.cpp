@@ -7,11 +7,13 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <variant>
 
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "number_option.hpp"
 #include "ricochet/checks.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/scene_log.hpp"
@@ -84,10 +86,11 @@ void register_check(CLI::App& app) {
     CLI::App* sub = app.add_subcommand(
         "check", "replay the corpus, the lecture's pinball example, the property suite and a short fuzz campaign");
     sub->add_option("--fuzz-runs", opt->fuzz_runs, "inputs per fuzz target at the end (0: no fuzzing; default 10000)")
-        ->check(CLI::NonNegativeNumber);
-    sub->add_option("--fuzz-seed", opt->fuzz_seed, "libFuzzer seed of the campaign (default 1)")->check(CLI::PositiveNumber);
+        ->check(number_in<long>(0, std::numeric_limits<long>::max(), "a count of inputs"));
+    sub->add_option("--fuzz-seed", opt->fuzz_seed, "libFuzzer seed of the campaign (default 1)")
+        ->check(number_in<long>(1, std::numeric_limits<unsigned>::max(), "a seed"));
     sub->add_option("--fuzz-time", opt->fuzz_time, "fuzz for this many seconds instead of a count of inputs (0: none)")
-        ->check(CLI::Range(0, 86400));
+        ->check(number_in(0, 86400, "a number of seconds"));
     sub->add_flag("--no-properties", opt->no_properties, "skip the property suite");
     sub->callback([opt] {
         if (opt->fuzz_time < 0) opt->fuzz_time = env_fuzz_seconds();

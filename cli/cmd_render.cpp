@@ -35,7 +35,7 @@ void register_render(CLI::App& app) {
                             std::from_chars(s.data() + colon + 1, s.data() + s.size(), b).ptr == s.data() + s.size() &&
                             0 <= a && a <= b;
             if (!ok) {
-                fmt::print(stderr, "ricochet: error: --frames wants A:B with 0 <= A <= B, got '{}'\n", s);
+                fmt::print(stderr, "ricochet: error: --frames: '{}' is not a frame range (expected A:B, integers with 0 <= A <= B)\n", s);
                 throw Exit{2};
             }
             r.first_frame = a;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "number_option.hpp"
 #include "ricochet/event.hpp"
 #include "ricochet/world.hpp"
 
@@ -20,7 +21,8 @@ void register_run(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("run", "print a log's run: state/hit/overlap lines, frame 0 = initial state");
     sub->add_option("LOG", opt->log, "scene log")->required();
     sub->add_option("--kernel", opt->kernel, "override the log's kernel");
-    sub->add_option("--frames", opt->frames, "override the log's frame count")->check(CLI::Range(std::int64_t{0}, k_max_frames));
+    sub->add_option("--frames", opt->frames, "override the log's frame count")
+        ->check(number_in(std::int64_t{0}, k_max_frames, "a frame count"));
     sub->callback([opt] {
         Scene scene = load_scene_or_exit(opt->log);
         const KernelId k = opt->kernel.empty() ? scene.kernel : kernel_or_exit(opt->kernel);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "output.hpp"
 #include "ricochet/scene.hpp"
@@ -28,8 +29,17 @@ void register_replay(CLI::App& app);
 void register_render(CLI::App& app);
 /// `ricochet check`.
 void register_check(CLI::App& app);
+/// `ricochet help [COMMAND]`: the program's help, or a command's, on stdout.
+void register_help(CLI::App& app);
 /// `ricochet bench` in a build without bench/ (RICOCHET_BENCH=OFF): says how to get it, exits 1.
 void register_bench_not_built(CLI::App& app);
+
+/// The program's help (its usage and the list of commands).
+std::string program_help(const CLI::App& app);
+/// True if word names one of app's commands.
+bool is_command(const CLI::App& app, const std::string& word);
+/// "ricochet: error: unknown command 'WORD'; did you mean 'NAME'?" (or the list of commands) on stderr.
+void print_unknown_command(const CLI::App& app, const std::string& word);
 
 /// Reads a log, or prints its diagnostic on stderr and throws Exit{2}.
 Scene load_scene_or_exit(const std::filesystem::path& path);
