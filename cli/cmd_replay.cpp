@@ -1,5 +1,5 @@
 // `ricochet replay [PATH...] [--hashes]`: every log's checks and expect lines; exit 0 all passed, 1 some
-// failed, 2 some log could not be read.
+// failed, 2 some path or log could not be read (a missing path, a folder without logs, a malformed log).
 #include <filesystem>
 
 #include "commands.hpp"
@@ -13,7 +13,7 @@ void register_replay(CLI::App& app) {
     };
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand("replay", "replay logs (default replays/; folders: every *.scene under them)");
-    sub->add_option("PATH", opt->paths, "logs or folders");
+    sub->add_option("PATH", opt->paths, "logs or folders (a missing path or a folder without *.scene is an error, exit 2)");
     sub->add_flag("--hashes", opt->hashes, "print 'HASH PATH' per log (for comparing builds) instead");
     sub->callback([opt] {
         std::vector<std::string> paths = opt->paths;

@@ -54,7 +54,8 @@ struct ReplaySummary {
     bool bad_input = false;
 };
 /// Replays every log under paths (folders recursively, *.scene), one line per log on stdout, then
-/// "N passed, N failed". With hashes_only, prints "HASH PATH" per log instead (and no summary).
+/// "N passed, N failed". With hashes_only, prints "HASH PATH" per log instead (and no summary). A path
+/// that does not exist and a folder without logs are bad input.
 ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only);
 
 }  // namespace ricochet::cli

@@ -46,6 +46,10 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             if (ec) {
                 fmt::print(stderr, "{}:1:1: error: cannot list the folder: {}\n", p, ec.message());
                 s.bad_input = true;
+            } else if (found.empty()) {
+                // An empty or mistyped folder checks nothing: a false green in CI if it passed.
+                fmt::print(stderr, "ricochet: error: no scene logs (*.scene) under {}\n", p);
+                s.bad_input = true;
             }
             std::sort(found.begin(), found.end());
             logs.insert(logs.end(), found.begin(), found.end());
