@@ -11,6 +11,7 @@
 
 #include "output.hpp"
 #include "ricochet/scene.hpp"
+#include "work_budget.hpp"
 
 namespace ricochet::cli {
 
@@ -47,7 +48,7 @@ Scene load_scene_or_exit(const std::filesystem::path& path);
 KernelId kernel_or_exit(const std::string& name);
 /// The folder of the source tree's corpus (replays/ under the source dir baked in at configure time).
 std::filesystem::path source_replays_dir();
-/// Outcome of replaying some logs (counts, and whether a log could not be read).
+/// Outcome of replaying some logs (counts, and whether a path or log could not be read or run).
 struct ReplaySummary {
     int passed = 0;
     int failed = 0;
@@ -55,7 +56,7 @@ struct ReplaySummary {
 };
 /// Replays every log under paths (folders recursively, *.scene), one line per log on stdout, then
 /// "N passed, N failed". With hashes_only, prints "HASH PATH" per log instead (and no summary). A path
-/// that does not exist and a folder without logs are bad input.
-ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only);
+/// that does not exist, a folder without logs and a log over max_work (work_budget.hpp) are bad input.
+ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work);
 
 }  // namespace ricochet::cli

@@ -33,7 +33,7 @@ KernelId kernel_or_exit(const std::string& name) {
 
 std::filesystem::path source_replays_dir() { return std::filesystem::path(RICOCHET_SOURCE_DIR) / "replays"; }
 
-ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only) {
+ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work) {
     ReplaySummary s;
     std::vector<std::filesystem::path> logs;
     for (const std::string& p : paths) {
@@ -71,6 +71,13 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             continue;
         }
         const Scene& scene = std::get<Scene>(parsed);
+        if (const std::string error = work_over_budget(log.string(), scene, scene.frames, max_work); !error.empty()) {
+            fmt::print(stderr, "ricochet: error: {}\n", error);
+            if (!hashes_only) write_stdout(fmt::format("FAIL {}: not run (over --max-work)\n", log.string()));
+            s.bad_input = true;
+            ++s.failed;
+            continue;
+        }
         const ReplayResult r = replay_scene(scene);
         if (hashes_only)
             write_stdout(fmt::format("{} {}\n", format_hash(r.run.hash), log.string()));

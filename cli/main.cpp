@@ -1,7 +1,8 @@
 // ricochet: run, record, replay, render and check scene logs; fuzz and bench where built.
 //
 // Exit status: 0 success; 1 a check or expectation failed, a run stopped, or output could not be
-// written; 2 bad usage or input (an unknown command or option, a bad value, a malformed or missing log).
+// written; 2 bad usage or input (an unknown command or option, a bad value, a malformed or missing log,
+// a log over the work bound).
 #include <cstdio>
 #include <string>
 #include <system_error>
