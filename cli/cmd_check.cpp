@@ -7,11 +7,13 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <variant>
 
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "number_option.hpp"
 #include "ricochet/checks.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/scene_log.hpp"
@@ -79,15 +81,18 @@ void register_check(CLI::App& app) {
         long fuzz_runs = 10000;
         long fuzz_seed = 1;
         bool no_properties = false;
+        std::uint64_t max_work = k_default_max_work;
     };
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand(
         "check", "replay the corpus, the lecture's pinball example, the property suite and a short fuzz campaign");
     sub->add_option("--fuzz-runs", opt->fuzz_runs, "inputs per fuzz target at the end (0: no fuzzing; default 10000)")
-        ->check(CLI::NonNegativeNumber);
-    sub->add_option("--fuzz-seed", opt->fuzz_seed, "libFuzzer seed of the campaign (default 1)")->check(CLI::PositiveNumber);
+        ->check(number_in<long>(0, std::numeric_limits<long>::max(), "a count of inputs"));
+    sub->add_option("--fuzz-seed", opt->fuzz_seed, "libFuzzer seed of the campaign (default 1)")
+        ->check(number_in<long>(1, std::numeric_limits<unsigned>::max(), "a seed"));
     sub->add_option("--fuzz-time", opt->fuzz_time, "fuzz for this many seconds instead of a count of inputs (0: none)")
-        ->check(CLI::Range(0, 86400));
+        ->check(number_in(0, 86400, "a number of seconds"));
+    add_max_work_option(*sub, opt->max_work);
     sub->add_flag("--no-properties", opt->no_properties, "skip the property suite");
     sub->callback([opt] {
         if (opt->fuzz_time < 0) opt->fuzz_time = env_fuzz_seconds();
@@ -103,7 +108,7 @@ void register_check(CLI::App& app) {
         // 1. The corpus.
         fmt::print("== replay {}\n", source_replays_dir().string());
         ReplaySummary r;
-        const double t_replay = timed([&] { r = replay_paths({source_replays_dir().string()}, false); });
+        const double t_replay = timed([&] { r = replay_paths({source_replays_dir().string()}, false, opt->max_work); });
         failed = failed || r.failed > 0 || r.bad_input;
         summary.push_back(fmt::format("replay      {} passed, {} failed ({:.2f} s)", r.passed, r.failed, t_replay));
 
@@ -115,6 +120,13 @@ void register_check(CLI::App& app) {
             fmt::print(stderr, "{}\n", d->str());
             failed = true;
             summary.push_back("pinball     unreadable");
+        } else if (const std::string over = work_over_budget(pinball.string(), std::get<Scene>(parsed),
+                                                              std::get<Scene>(parsed).frames, opt->max_work);
+                   !over.empty()) {
+            // The corpus's own log: over the bound only if --max-work was set below it.
+            fmt::print(stderr, "ricochet: error: {}\n", over);
+            failed = true;
+            summary.push_back("pinball     not run (over --max-work)");
         } else {
             const Scene& scene = std::get<Scene>(parsed);
             std::string line = "pinball    ";

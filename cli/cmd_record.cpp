@@ -1,4 +1,4 @@
-// `ricochet record LOG`: runs a log and writes its expect lines back, atomically. The log's other
+// `ricochet record LOG [--max-work N]`: runs a log and writes its expect lines back, atomically. The log's other
 // lines (comments included) are kept as they are; old expect lines are replaced.
 #include <fstream>
 #include <sstream>
@@ -35,17 +35,23 @@ std::string without_expect_lines(const std::string& text) {
 }  // namespace
 
 void register_record(CLI::App& app) {
-    auto log = std::make_shared<std::string>();
+    struct Options {
+        std::string log;
+        std::uint64_t max_work = k_default_max_work;
+    };
+    auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand("record", "run a log and write its expect lines back (atomically)");
-    sub->add_option("LOG", *log, "scene log")->required();
-    sub->callback([log] {
-        Scene scene = load_scene_or_exit(*log);
+    sub->add_option("LOG", opt->log, "scene log")->required();
+    add_max_work_option(*sub, opt->max_work);
+    sub->callback([opt] {
+        Scene scene = load_scene_or_exit(opt->log);
+        check_work_or_exit(opt->log, scene, scene.frames, opt->max_work);
         const CheckedRun run = record_expectations(scene);
         if (run.error) {
-            fmt::print(stderr, "{}: error: {}; the log is unchanged\n", *log, run.error->message());
+            fmt::print(stderr, "{}: error: {}; the log is unchanged\n", opt->log, run.error->message());
             throw Exit{1};
         }
-        std::ifstream in(*log, std::ios::binary);
+        std::ifstream in(opt->log, std::ios::binary);
         std::stringstream buffer;
         buffer << in.rdbuf();
         std::string text = without_expect_lines(buffer.str());
@@ -58,15 +64,15 @@ void register_record(CLI::App& app) {
         const auto first_expect = canonical.find("expect ");
         if (first_expect != std::string::npos) text += canonical.substr(first_expect);
         std::string error;
-        if (!write_file_atomically(*log, text, &error)) {
+        if (!write_file_atomically(opt->log, text, &error)) {
             fmt::print(stderr, "ricochet: error: {}\n", error);
             throw Exit{1};
         }
-        fmt::print("recorded {}: hash {}, {} expect state line(s){}\n", *log, format_hash(run.hash),
-                   scene.expect_states.size(),
-                   run.failure ? fmt::format(", expect failure {} {} ({})", run.failure->check,
-                                             run.failure->frame, run.failure->message)
-                               : std::string());
+        write_stdout(fmt::format("recorded {}: hash {}, {} expect state line(s){}\n", opt->log, format_hash(run.hash),
+                                 scene.expect_states.size(),
+                                 run.failure ? fmt::format(", expect failure {} {} ({})", run.failure->check,
+                                                           run.failure->frame, run.failure->message)
+                                             : std::string()));
     });
 }
 

@@ -1,4 +1,4 @@
-// `ricochet render LOG -o FILE.svg [--frames A:B] [--kernel K]`: a picture of the scene and its run.
+// `ricochet render LOG -o FILE.svg [--frames A:B] [--kernel K] [--max-work N]`: a picture of the scene and its run.
 #include <charconv>
 
 #include <fmt/format.h>
@@ -15,6 +15,7 @@ void register_render(CLI::App& app) {
         std::string out;
         std::string frames;
         std::string kernel;
+        std::uint64_t max_work = k_default_max_work;
     };
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand("render", "draw a log's scene and run as SVG");
@@ -22,6 +23,7 @@ void register_render(CLI::App& app) {
     sub->add_option("-o,--output", opt->out, "the SVG file to write")->required();
     sub->add_option("--frames", opt->frames, "A:B, the frames whose paths are drawn");
     sub->add_option("--kernel", opt->kernel, "override the log's kernel");
+    add_max_work_option(*sub, opt->max_work);
     sub->callback([opt] {
         Scene scene = load_scene_or_exit(opt->log);
         if (!opt->kernel.empty()) scene.kernel = kernel_or_exit(opt->kernel);
@@ -35,19 +37,20 @@ void register_render(CLI::App& app) {
                             std::from_chars(s.data() + colon + 1, s.data() + s.size(), b).ptr == s.data() + s.size() &&
                             0 <= a && a <= b;
             if (!ok) {
-                fmt::print(stderr, "ricochet: error: --frames wants A:B with 0 <= A <= B, got '{}'\n", s);
+                fmt::print(stderr, "ricochet: error: --frames: '{}' is not a frame range (expected A:B, integers with 0 <= A <= B)\n", s);
                 throw Exit{2};
             }
             r.first_frame = a;
             r.last_frame = b;
         }
+        check_work_or_exit(opt->log, scene, scene.frames, opt->max_work);
         const CheckedRun run = run_checked(scene, scene.kernel, scene.frames, scene.checks);
         std::string error;
         if (!write_file_atomically(opt->out, render_svg(scene, run, r), &error)) {
             fmt::print(stderr, "ricochet: error: {}\n", error);
             throw Exit{1};
         }
-        fmt::print("wrote {}{}\n", opt->out, run.failure ? fmt::format(" (marked: {})", run.failure->str()) : "");
+        write_stdout(fmt::format("wrote {}{}\n", opt->out, run.failure ? fmt::format(" (marked: {})", run.failure->str()) : ""));
     });
 }
 

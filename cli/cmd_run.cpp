@@ -1,10 +1,12 @@
-// `ricochet run LOG [--kernel K] [--frames N]`: the run's events as docs/scene-log.md prints them, stepped
-// with the default WorldOptions (the broad phase on, one thread).
+// `ricochet run LOG [--kernel K] [--frames N] [--max-work N]`: the run's events as docs/scene-log.md prints
+// them, stepped with the default WorldOptions (the broad phase on, one thread).
 #include <cstdio>
 
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "number_option.hpp"
+#include "progress.hpp"
 #include "ricochet/event.hpp"
 #include "ricochet/world.hpp"
 
@@ -15,26 +17,32 @@ void register_run(CLI::App& app) {
         std::string log;
         std::string kernel;
         std::int64_t frames = -1;
+        std::uint64_t max_work = k_default_max_work;
     };
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand("run", "print a log's run: state/hit/overlap lines, frame 0 = initial state");
     sub->add_option("LOG", opt->log, "scene log")->required();
     sub->add_option("--kernel", opt->kernel, "override the log's kernel");
-    sub->add_option("--frames", opt->frames, "override the log's frame count")->check(CLI::Range(std::int64_t{0}, k_max_frames));
+    sub->add_option("--frames", opt->frames, "override the log's frame count")
+        ->check(number_in(std::int64_t{0}, k_max_frames, "a frame count"));
+    add_max_work_option(*sub, opt->max_work);
     sub->callback([opt] {
         Scene scene = load_scene_or_exit(opt->log);
         const KernelId k = opt->kernel.empty() ? scene.kernel : kernel_or_exit(opt->kernel);
         const std::int64_t frames = opt->frames >= 0 ? opt->frames : scene.frames;
+        check_work_or_exit(opt->log, scene, frames, opt->max_work);
         World world(scene, k);
         std::vector<Event> events;
         std::string out;
-        // Print in chunks: a long run streams rather than piling up in memory.
+        // Print in chunks: a long run streams rather than piling up in memory, and a failed write
+        // (write_stdout throws) stops it at once.
         const auto flush = [&] {
             for (const Event& e : events) append_event_line(out, e);
             events.clear();
-            std::fwrite(out.data(), 1, out.size(), stdout);
+            write_stdout(out);
             out.clear();
         };
+        Progress progress(fmt::format("ricochet run {}", opt->log));
         world.start(events);
         for (std::int64_t f = 1; f <= frames; ++f) {
             const auto error = world.step(events);
@@ -45,6 +53,7 @@ void register_run(CLI::App& app) {
                 throw Exit{1};
             }
             if (events.size() > 4096) flush();
+            progress.update(f, frames);
         }
         flush();
     });

@@ -7,8 +7,11 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "output.hpp"
 #include "ricochet/scene.hpp"
+#include "work_budget.hpp"
 
 namespace ricochet::cli {
 
@@ -27,8 +30,17 @@ void register_replay(CLI::App& app);
 void register_render(CLI::App& app);
 /// `ricochet check`.
 void register_check(CLI::App& app);
+/// `ricochet help [COMMAND]`: the program's help, or a command's, on stdout.
+void register_help(CLI::App& app);
 /// `ricochet bench` in a build without bench/ (RICOCHET_BENCH=OFF): says how to get it, exits 1.
 void register_bench_not_built(CLI::App& app);
+
+/// The program's help (its usage and the list of commands).
+std::string program_help(const CLI::App& app);
+/// True if word names one of app's commands.
+bool is_command(const CLI::App& app, const std::string& word);
+/// "ricochet: error: unknown command 'WORD'; did you mean 'NAME'?" (or the list of commands) on stderr.
+void print_unknown_command(const CLI::App& app, const std::string& word);
 
 /// Reads a log, or prints its diagnostic on stderr and throws Exit{2}.
 Scene load_scene_or_exit(const std::filesystem::path& path);
@@ -36,14 +48,15 @@ Scene load_scene_or_exit(const std::filesystem::path& path);
 KernelId kernel_or_exit(const std::string& name);
 /// The folder of the source tree's corpus (replays/ under the source dir baked in at configure time).
 std::filesystem::path source_replays_dir();
-/// Outcome of replaying some logs (counts, and whether a log could not be read).
+/// Outcome of replaying some logs (counts, and whether a path or log could not be read or run).
 struct ReplaySummary {
     int passed = 0;
     int failed = 0;
     bool bad_input = false;
 };
 /// Replays every log under paths (folders recursively, *.scene), one line per log on stdout, then
-/// "N passed, N failed". With hashes_only, prints "HASH PATH" per log instead (and no summary).
-ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only);
+/// "N passed, N failed". With hashes_only, prints "HASH PATH" per log instead (and no summary). A path
+/// that does not exist, a folder without logs and a log over max_work (work_budget.hpp) are bad input.
+ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work);
 
 }  // namespace ricochet::cli

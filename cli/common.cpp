@@ -33,7 +33,7 @@ KernelId kernel_or_exit(const std::string& name) {
 
 std::filesystem::path source_replays_dir() { return std::filesystem::path(RICOCHET_SOURCE_DIR) / "replays"; }
 
-ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only) {
+ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work) {
     ReplaySummary s;
     std::vector<std::filesystem::path> logs;
     for (const std::string& p : paths) {
@@ -45,6 +45,10 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
                 if (it->is_regular_file() && it->path().extension() == ".scene") found.push_back(it->path());
             if (ec) {
                 fmt::print(stderr, "{}:1:1: error: cannot list the folder: {}\n", p, ec.message());
+                s.bad_input = true;
+            } else if (found.empty()) {
+                // An empty or mistyped folder checks nothing: a false green in CI if it passed.
+                fmt::print(stderr, "ricochet: error: no scene logs (*.scene) under {}\n", p);
                 s.bad_input = true;
             }
             std::sort(found.begin(), found.end());
@@ -61,21 +65,32 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
         auto parsed = read_scene_log(log);
         if (auto* d = std::get_if<Diagnostic>(&parsed)) {
             fmt::print(stderr, "{}\n", d->str());
-            if (!hashes_only) fmt::print("FAIL {}: unreadable log\n", log.string());
+            if (!hashes_only) write_stdout(fmt::format("FAIL {}: unreadable log\n", log.string()));
             s.bad_input = true;
             ++s.failed;
             continue;
         }
         const Scene& scene = std::get<Scene>(parsed);
+        if (const std::string error = work_over_budget(log.string(), scene, scene.frames, max_work); !error.empty()) {
+            fmt::print(stderr, "ricochet: error: {}\n", error);
+            if (!hashes_only) write_stdout(fmt::format("FAIL {}: not run (over --max-work)\n", log.string()));
+            s.bad_input = true;
+            ++s.failed;
+            continue;
+        }
         const ReplayResult r = replay_scene(scene);
         if (hashes_only)
-            fmt::print("{} {}\n", format_hash(r.run.hash), log.string());
+            write_stdout(fmt::format("{} {}\n", format_hash(r.run.hash), log.string()));
         else
-            fmt::print("{} {}: {}\n", r.passed ? "ok  " : "FAIL", log.string(), r.message);
+            write_stdout(fmt::format("{} {}: {}\n", r.passed ? "ok  " : "FAIL", log.string(), r.message));
         (r.passed ? s.passed : s.failed) += 1;
+        // Line by line, so a reader (and a failed write) sees each verdict as it comes.
+        std::fflush(stdout);
+        check_stdout();
     }
-    if (!hashes_only) fmt::print("{} passed, {} failed\n", s.passed, s.failed);
+    if (!hashes_only) write_stdout(fmt::format("{} passed, {} failed\n", s.passed, s.failed));
     std::fflush(stdout);
+    check_stdout();
     return s;
 }
 

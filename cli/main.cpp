@@ -1,5 +1,11 @@
 // ricochet: run, record, replay, render and check scene logs; fuzz and bench where built.
+//
+// Exit status: 0 success; 1 a check or expectation failed, a run stopped, or output could not be
+// written; 2 bad usage or input (an unknown command or option, a bad value, a malformed or missing log,
+// a log over the work bound).
 #include <cstdio>
+#include <string>
+#include <system_error>
 
 #include <fmt/format.h>
 
@@ -9,9 +15,21 @@
 #include "ricochet_bench/command.hpp"
 #endif
 
+namespace {
+
+/// CLI11's usage errors as ours: "ricochet: error: WHAT" and where to look.
+std::string usage_error(const CLI::App*, const CLI::Error& e) {
+    return fmt::format("ricochet: error: {}\nRun 'ricochet help' for more information.\n", e.what());
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-    CLI::App app{"ricochet: the 2D collision core's scene logs, replay and checks"};
+    CLI::App app{"ricochet: the 2D collision core's scene logs, replay and checks", "ricochet"};
+    // Before the commands are added: each copies its parent's failure message.
+    app.failure_message(usage_error);
     app.require_subcommand(1);
+    app.set_version_flag("--version", "ricochet " RICOCHET_VERSION, "print the version and exit");
     ricochet::cli::register_run(app);
     ricochet::cli::register_record(app);
     ricochet::cli::register_replay(app);
@@ -23,20 +41,35 @@ int main(int argc, char** argv) {
     ricochet::cli::register_bench_not_built(app);
 #endif
     ricochet::fuzz::register_fuzz(app);
+    ricochet::cli::register_help(app);
+
+    // Degenerate: no arguments at all is a usage error; the help says what to type.
+    if (argc < 2) {
+        fmt::print(stderr, "{}", ricochet::cli::program_help(app));
+        return 2;
+    }
+    // A first word that is not an option must name a command ("did you mean" if it is a typo).
+    if (const std::string first = argv[1]; !first.starts_with('-') && !ricochet::cli::is_command(app, first)) {
+        ricochet::cli::print_unknown_command(app, first);
+        return 2;
+    }
+    int code = 0;
     try {
         app.parse(argc, argv);
     } catch (const CLI::RuntimeError& e) {
         // bench/ and fuzz/ end their commands with CLI11's own exit-status exception.
-        std::fflush(stdout);
-        return e.get_exit_code();
+        code = e.get_exit_code();
     } catch (const CLI::ParseError& e) {
         // --help and --version are not errors; every other usage error is bad input: exit 2.
-        const int code = app.exit(e);
-        return code == 0 ? 0 : 2;
+        code = app.exit(e) == 0 ? 0 : 2;
     } catch (const ricochet::cli::Exit& e) {
-        std::fflush(stdout);
-        return e.code;
+        code = e.code;
+    } catch (const ricochet::cli::OutputError& e) {
+        return ricochet::cli::report_output_error(e.error);
+    } catch (const std::system_error& e) {
+        // fmt::print throws this when its write fails.
+        if (!std::ferror(stdout)) throw;
+        return ricochet::cli::report_output_error(e.code().value());
     }
-    std::fflush(stdout);
-    return 0;
+    return ricochet::cli::finish_stdout(code);
 }

@@ -1,24 +1,54 @@
 // `ricochet fuzz`: the command's options (command.hpp); the campaign itself is campaign.cpp.
 #include "ricochet_fuzz/command.hpp"
 
+#include <charconv>
+#include <limits>
 #include <memory>
+
+#include <fmt/format.h>
 
 #include "ricochet_fuzz/campaign.hpp"
 
 namespace ricochet::fuzz {
+
+namespace {
+
+/// A number of type T from lo to hi, or a message saying what was wrong (CLI11's PositiveNumber would print
+/// "not in range 0.000000 to" DBL_MAX's 309 digits). cli/number_option.hpp is the same for cli/.
+template <class T>
+CLI::Validator number_in(T lo, T hi, std::string what) {
+    return CLI::Validator(
+        [lo, hi, what](std::string& input) -> std::string {
+            T v{};
+            const char* end = input.data() + input.size();
+            const auto [ptr, ec] = std::from_chars(input.data(), end, v);
+            if (input.empty() || ptr != end || (ec != std::errc() && ec != std::errc::result_out_of_range))
+                return fmt::format("'{}' is not {} (expected {} to {})", input, what, lo, hi);
+            if (ec == std::errc::result_out_of_range || !(lo <= v && v <= hi))
+                return fmt::format("'{}' is out of range (expected {} from {} to {})", input, what, lo, hi);
+            return {};
+        },
+        fmt::format("{} to {}", lo, hi));
+}
+
+/// The longest campaign by time: a week. The workers' -max_total_time is an int of seconds.
+constexpr double k_max_time_s = 7 * 24 * 3600;
+
+}  // namespace
 
 void register_fuzz(CLI::App& app) {
     auto opt = std::make_shared<CampaignOptions>();
     CLI::App* sub = app.add_subcommand("fuzz", "run a libFuzzer campaign; failures become scene logs");
     sub->add_option("--target", opt->targets, "target(s): parser, static, sweep, scene (default: all built)");
     sub->add_option("--kernel", opt->kernel, "kernel under test (default robust)");
-    sub->add_option("--time", opt->time, "seconds to fuzz (default 60)")->check(CLI::PositiveNumber);
+    sub->add_option("--time", opt->time, "seconds to fuzz (default 60; 1 to 604800, a week)")
+        ->check(number_in(1.0, k_max_time_s, "a number of seconds"));
     sub->add_option("--runs", opt->runs, "inputs per worker instead of a time limit (with --seed: a reproducible campaign)")
-        ->check(CLI::PositiveNumber);
+        ->check(number_in<std::uint64_t>(1, std::numeric_limits<std::uint64_t>::max(), "a count of inputs"));
     sub->add_option("--seed", opt->seed, "libFuzzer seed of the first worker (the next get seed+1, ...; default random)")
-        ->check(CLI::PositiveNumber);
+        ->check(number_in<unsigned>(1, std::numeric_limits<unsigned>::max(), "a seed"));
     sub->add_option("--jobs", opt->jobs, "worker processes in all, shared out among the targets (default: one per target)")
-        ->check(CLI::PositiveNumber);
+        ->check(number_in(1, 4096, "a number of workers"));
     sub->add_option("--bin-dir", opt->bin_dir, "folder of the fuzz_* binaries (default: this build's fuzz/, or $RICOCHET_FUZZ_BIN_DIR)");
     sub->add_option("--cache-dir", opt->cache_dir,
                     "working corpus and artifacts (default $RICOCHET_FUZZ_CACHE, $XDG_CACHE_HOME/ricochet/fuzz or ~/.cache/ricochet/fuzz)");

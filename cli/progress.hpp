@@ -1,0 +1,35 @@
+// A progress line on stderr for a command that runs longer than a couple of seconds, rewritten in place
+// with \r. Shown only when stderr is a terminal and stdout is not (there the output itself scrolls by);
+// silent otherwise, so logs and CI output never see it.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+
+namespace ricochet::cli {
+
+/// "WHAT: frame DONE of TOTAL (P %)", from k_progress_delay on, at most 4 times a second.
+class Progress {
+public:
+    /// what: the line's prefix ("ricochet run LOG").
+    explicit Progress(std::string what);
+    /// Clears the line if one was shown.
+    ~Progress();
+    Progress(const Progress&) = delete;
+    Progress& operator=(const Progress&) = delete;
+
+    /// Reports done of total frames; cheap enough to call every frame.
+    void update(std::int64_t done, std::int64_t total);
+
+private:
+    using Clock = std::chrono::steady_clock;
+    std::string what_;
+    bool enabled_ = false;
+    bool shown_ = false;
+    std::uint32_t calls_ = 0;
+    Clock::time_point start_;
+    Clock::time_point next_;
+};
+
+}  // namespace ricochet::cli
