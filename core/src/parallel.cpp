@@ -8,11 +8,10 @@ namespace ricochet::detail {
 
 ParallelStepper::ParallelStepper(unsigned threads) : threads_(std::max(1u, threads)), parts_(threads_) {}
 
-void ParallelStepper::run_part(Part& part, KernelId k, std::span<Ball> balls, std::span<BallMemory> memories,
+void ParallelStepper::run_part(unsigned p, KernelId k, std::span<Ball> balls, std::span<BallMemory> memories,
                                std::span<const Wall> walls, const WallIndex* index, const WallGrid* prefetch) {
+    Part& part = parts_[p];
     part.hits.clear();
-    part.offset.clear();
-    part.offset.push_back(0);
     // Fetch the cells of the balls a few steps ahead, in three stages (the cell's entry, its wall list,
     // its walls): each is a cache miss otherwise.
     constexpr std::size_t k_ahead = 8;
@@ -22,15 +21,17 @@ void ParallelStepper::run_part(Part& part, KernelId k, std::span<Ball> balls, st
             if (i + 2 * k_ahead < part.end) prefetch->prefetch(balls[i + 2 * k_ahead].pos, 1, walls);
             if (i + k_ahead < part.end) prefetch->prefetch(balls[i + k_ahead].pos, 2, walls);
         }
+        const auto first = static_cast<std::uint32_t>(part.hits.size());
         status_[i] = step_ball(k, balls[i], memories[i], walls, part.hits, part.scratch, index);
-        part.offset.push_back(static_cast<std::uint32_t>(part.hits.size()));
+        ball_hits_[i] = {p, first, static_cast<std::uint32_t>(part.hits.size())};
     }
 }
 
 void ParallelStepper::step(KernelId k, std::span<Ball> balls, std::span<BallMemory> memories,
                            std::span<const Wall> walls, const WallIndex* index, const WallGrid* prefetch) {
     const std::size_t n = balls.size();
-    status_.resize(n);
+    status_.assign(n, FrameStatus::ok);
+    ball_hits_.assign(n, BallHits{});
     // Static partition: part p steps balls [p·n/T, (p + 1)·n/T).
     for (unsigned p = 0; p < threads_; ++p) {
         parts_[p].begin = n * p / threads_;
@@ -38,25 +39,21 @@ void ParallelStepper::step(KernelId k, std::span<Ball> balls, std::span<BallMemo
     }
     if (threads_ == 1 || n < 2 * threads_) {
         // Too few balls to share: one thread does it all (same results, no thread start-up).
-        for (unsigned p = 0; p < threads_; ++p) run_part(parts_[p], k, balls, memories, walls, index, prefetch);
+        for (unsigned p = 0; p < threads_; ++p) run_part(p, k, balls, memories, walls, index, prefetch);
         return;
     }
     {
         std::vector<std::jthread> workers;
         workers.reserve(threads_ - 1);
         for (unsigned p = 1; p < threads_; ++p)
-            workers.emplace_back([&, p] { run_part(parts_[p], k, balls, memories, walls, index, prefetch); });
-        run_part(parts_[0], k, balls, memories, walls, index, prefetch);
+            workers.emplace_back([&, p] { run_part(p, k, balls, memories, walls, index, prefetch); });
+        run_part(0, k, balls, memories, walls, index, prefetch);
     }  // jthreads join here
 }
 
 std::span<const HitEvent> ParallelStepper::hits(std::size_t i) const {
-    // The part whose range holds i: the last one whose begin ≤ i.
-    const auto it = std::upper_bound(parts_.begin(), parts_.end(), i,
-                                     [](std::size_t v, const Part& p) { return v < p.begin; });
-    const Part& part = *(it - 1);
-    const std::size_t j = i - part.begin;
-    return std::span<const HitEvent>(part.hits).subspan(part.offset[j], part.offset[j + 1] - part.offset[j]);
+    const BallHits& h = ball_hits_[i];
+    return std::span<const HitEvent>(parts_[h.part].hits).subspan(h.first, h.last - h.first);
 }
 
 }  // namespace ricochet::detail

@@ -33,13 +33,20 @@ private:
         std::size_t begin = 0, end = 0;
         StepScratch scratch;
         std::vector<HitEvent> hits;
-        std::vector<std::uint32_t> offset;  // ball begin + j has hits[offset[j] .. offset[j + 1])
     };
-    void run_part(Part& part, KernelId k, std::span<Ball> balls, std::span<BallMemory> memories,
+    /// Where a ball's hits are: parts_[part].hits[first .. last).
+    struct BallHits {
+        std::uint32_t part = 0, first = 0, last = 0;
+    };
+    void run_part(unsigned p, KernelId k, std::span<Ball> balls, std::span<BallMemory> memories,
                   std::span<const Wall> walls, const WallIndex* index, const WallGrid* prefetch);
     unsigned threads_;
     std::vector<Part> parts_;
+    // Per ball, reset every step, so that a ball no part stepped (a wrong partition) reads as a ball that
+    // did not move, with no hits: the broad-phase check sees that, where offsets kept per part would be read
+    // past their end.
     std::vector<FrameStatus> status_;
+    std::vector<BallHits> ball_hits_;
 };
 
 }  // namespace ricochet::detail
