@@ -1,6 +1,7 @@
 // Promises written in kernel.hpp, limits.hpp, hash.hpp and docs/scene-log.md that no other test pins:
 // the accuracy of robust's t_i, B_i and v' against exact for well-conditioned hits, the inclusive range
-// limit, and the run hash as XXH64 over the documented records (checked against an encoding of its own).
+// limit, the run hash as XXH64 over the documented records (checked against an encoding of its own), and
+// the walk-back's rule that a printed piece never passes through a wall, not even exactly through an end.
 #include <gtest/gtest.h>
 
 #include <xxhash.h>
@@ -17,6 +18,7 @@
 #include "ricochet/kernel.hpp"
 #include "ricochet/scene_log_format.hpp"
 #include "ricochet/truth.hpp"
+#include "path.hpp"
 
 namespace ricochet {
 namespace {
@@ -162,6 +164,23 @@ TEST(Promise, RobustBounceMatchesExactForWellConditionedHits) {
             ASSERT_LE(std::fabs(dv.y), tol) << "v'.y, scale " << s << " case " << n;
         }
     EXPECT_GT(checked, 5000);
+}
+
+TEST(Promise, APieceThroughAWallsEndPointIsNotAllowed) {
+    // q → r crosses the line y = 0 from below to above exactly through P0 = (1, 0), the end of the closed
+    // segment: kernel.hpp's no-tunnelling definition counts that, so make_safe may not accept r.
+    const std::vector<Wall> walls = {{{1, 0}, {5, 0}}};
+    StepScratch scratch;
+    const BallMemory none;
+    EXPECT_FALSE(detail::piece_allowed({0, -1}, {2, 1}, none, walls, nullptr, scratch));
+    EXPECT_TRUE(truth::PathFollower(walls, std::vector<Ball>{{{0, -1}, {}}}).advance(0, {2, 1}) == 0);
+    // Just beside the end point it passes beyond the wall: allowed, and no tunnel.
+    EXPECT_TRUE(detail::piece_allowed({0, -1}, {1.5, 1}, none, walls, nullptr, scratch));
+    EXPECT_TRUE(truth::PathFollower(walls, std::vector<Ball>{{{0, -1}, {}}}).advance(0, {1.5, 1}) == -1);
+    // Through the other end, P1 = (5, 0), and with the wall's ends swapped: the same.
+    EXPECT_FALSE(detail::piece_allowed({4, -1}, {6, 1}, none, walls, nullptr, scratch));
+    const std::vector<Wall> swapped = {{{5, 0}, {1, 0}}};
+    EXPECT_FALSE(detail::piece_allowed({0, -1}, {2, 1}, none, swapped, nullptr, scratch));
 }
 
 TEST(Promise, TheAcceptedRangeIncludesItsLimit) {
