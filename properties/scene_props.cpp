@@ -70,6 +70,14 @@ TEST_P(Scenes, CornerAccuracy) {
                  GetParam());
 }
 
+/// In closed polygons, with balls aimed at their vertices (to a few ulps, so that crossings of the two walls
+/// there are too close for a filter to order): every decision, the first hit and the hits' order are exact.
+TEST_P(Scenes, PolygonOracle) {
+    run_property({"PolygonOracle", Check::oracle, gen::polygon_scene(true, 24), checked({Check::oracle}, classify_legs),
+                  400},
+                 GetParam());
+}
+
 /// After a bounce the ball stays on the side it came from.
 TEST_P(Scenes, BounceSide) {
     run_property({"BounceSide", Check::bounce_side, gen::wall_scene(1, 8), checked({Check::bounce_side}, classify_legs),
