@@ -40,6 +40,9 @@ case "$kind" in
                      want='1:1: error: the file is over the limit of 16777216 bytes' ;;
   bad-hash)          printf '%s\nexpect hash 12345g7890abcdef\n' "$h" >"$f"; want='2:13: error: bad hash '\''12345g7890abcdef'\'': expected exactly 16 lowercase hex digits' ;;
   expect-bad-ball)   printf '%s\nframes 1\nball 0 0 1 1\nexpect state 1 3 0 0 1 1\n' "$h" >"$f"; want='4:16: error: expect state for ball 3 but the log has 1 balls' ;;
+  byte-order-mark)   printf '\357\273\277%s\n' "$h" >"$f"; want='1:1: error: a byte order mark (U+FEFF) is not allowed; save the file as UTF-8 without BOM' ;;
+  escape-sequence)   printf '%s\nwal\033]0;pwned\007 0 0 1 1\n' "$h" >"$f"; want='2:1: error: unknown directive '\''wal\x1b]0;pwned\x07'\''' ;;
+  crlf-missing-token) printf '%s\r\nwall 0 0 1\r\n' "$h" >"$f"; want='2:11: error: '\''wall'\'' needs X0 Y0 X1 Y1: missing Y1' ;;
   duplicate-check)   printf '%s\ncheck speed\ncheck speed\n' "$h" >"$f"; want='3:7: error: duplicate check '\''speed'\''' ;;
   *) echo "unknown kind $kind" >&2; exit 1 ;;
 esac

@@ -37,6 +37,9 @@ struct Diagnostic {
 /// A parsed scene, or where and why it could not be parsed.
 using SceneOrDiagnostic = std::variant<Scene, Diagnostic>;
 
+/// The UTF-8 byte order mark, refused at the start of a log (docs/scene-log.md, "Lexical rules").
+inline constexpr std::string_view k_byte_order_mark = "\xEF\xBB\xBF";
+
 /// Reads a log from memory. filename is only used in diagnostics. Never throws on bad input.
 SceneOrDiagnostic parse_scene_log(std::string_view text, std::string_view filename);
 
