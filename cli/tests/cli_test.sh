@@ -87,6 +87,14 @@ case "$case" in
   work-record)       cp "$log" "$dir/r.scene"; run 2 record "$dir/r.scene" --max-work 39
                      cmp -s "$log" "$dir/r.scene" || fail "record changed the log"
                      grep -q "too much work" "$dir/err" || fail "no work error" ;;
+  record-lowered-frames) cp "$log" "$dir/r.scene"; run 0 record "$dir/r.scene"
+                     grep -q '^expect state 10 ' "$dir/r.scene" || fail "no expect state at frame 10"
+                     sed 's/^frames 10$/frames 3/' "$dir/r.scene" >"$dir/low.scene"
+                     run 0 record "$dir/low.scene"
+                     ! grep -q '^expect state \([4-9]\|10\) ' "$dir/low.scene" || fail "stale expect lines kept"
+                     grep -q '^expect state 3 ' "$dir/low.scene" || fail "no expect state at frame 3"
+                     [ "$(grep -c '^expect hash ' "$dir/low.scene")" = 1 ] || fail "not one expect hash"
+                     run 0 replay "$dir/low.scene" ;;
   work-render)       run 2 render "$log" -o "$dir/x.svg" --max-work 39; grep -q "too much work" "$dir/err" || fail "no work error"
                      [ ! -e "$dir/x.svg" ] || fail "render wrote the picture" ;;
   work-default)      run 2 replay "$big"

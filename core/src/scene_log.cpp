@@ -17,7 +17,7 @@
 
 namespace ricochet {
 
-SceneOrDiagnostic read_scene_log(const std::filesystem::path& path) {
+std::variant<std::string, Diagnostic> read_log_text(const std::filesystem::path& path) {
     const std::string name = path.string();
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) return Diagnostic{name, 1, 1, "is a directory, not a scene log"};
@@ -29,7 +29,13 @@ SceneOrDiagnostic read_scene_log(const std::filesystem::path& path) {
     text.resize(static_cast<std::size_t>(in.gcount()));
     if (text.size() > k_max_file_size)
         return Diagnostic{name, 1, 1, fmt::format("the file is over the limit of {} bytes", k_max_file_size)};
-    return parse_scene_log(text, name);
+    return text;
+}
+
+SceneOrDiagnostic read_scene_log(const std::filesystem::path& path, ExpectLines expect_lines) {
+    auto text = read_log_text(path);
+    if (auto* d = std::get_if<Diagnostic>(&text)) return std::move(*d);
+    return parse_scene_log(std::get<std::string>(text), path.string(), expect_lines);
 }
 
 bool write_file_atomically(const std::filesystem::path& path, std::string_view text, std::string* error) {

@@ -71,7 +71,7 @@ std::optional<double> to_double(std::string_view s, std::string& why) {
 
 class Parser {
 public:
-    explicit Parser(std::string_view text) : text_(text) {}
+    Parser(std::string_view text, ExpectLines expect_lines) : text_(text), expect_lines_(expect_lines) {}
 
     Scene parse() {
         if (text_.size() > k_max_file_size)
@@ -92,6 +92,11 @@ public:
         // A log with no directive at all: point at its start.
         if (!seen_header_) throw ParseError{1, 1, "empty log: expected the header 'ricochet 1'"};
         validate();
+        if (expect_lines_ == ExpectLines::replaced) {
+            scene_.expect_hash.reset();
+            scene_.expect_failure.reset();
+            scene_.expect_states.clear();
+        }
         return std::move(scene_);
     }
 
@@ -314,9 +319,16 @@ private:
         }
     }
 
-    /// Checks that need the whole log: expect lines must name balls and frames the scene has, and the
-    /// failure's check must be one the log asks for.
+    /// Checks that need the whole log, in the spec's order: expect lines must name balls and frames the scene
+    /// has, and the failure's check must be one the log asks for; so must `found`. The expect lines' checks
+    /// are left out when they are to be replaced (record writes new ones).
     void validate() {
+        if (expect_lines_ == ExpectLines::checked) validate_expect_states();
+        validate_found();
+        if (expect_lines_ == ExpectLines::checked) validate_expect_failure();
+    }
+
+    void validate_expect_states() {
         for (std::size_t i = 0; i < scene_.expect_states.size(); ++i) {
             const ExpectState& e = scene_.expect_states[i];
             const Place& p = state_places_[i];
@@ -327,6 +339,9 @@ private:
                 throw ParseError{p.line, p.col_b, fmt::format("expect state for ball {} but the log has {} balls",
                                                               e.ball, scene_.balls.size())};
         }
+    }
+
+    void validate_found() {
         if (scene_.found) {
             const Found& f = *scene_.found;
             const Place& p = found_place_;
@@ -341,6 +356,9 @@ private:
                 throw ParseError{p.line, p.col_c, fmt::format("found a failure for ball {} but the log has {} balls",
                                                               f.ball, scene_.balls.size())};
         }
+    }
+
+    void validate_expect_failure() {
         if (scene_.expect_failure) {
             const ExpectFailure& f = *scene_.expect_failure;
             bool listed = false;
@@ -370,6 +388,7 @@ private:
     Place failure_place_;
     Place found_place_;
     std::string_view expected_;
+    ExpectLines expect_lines_;
     int line_ = 0;
     int end_col_ = 1;
     bool seen_header_ = false;
@@ -379,9 +398,9 @@ private:
 
 }  // namespace
 
-SceneOrDiagnostic parse_scene_log(std::string_view text, std::string_view filename) {
+SceneOrDiagnostic parse_scene_log(std::string_view text, std::string_view filename, ExpectLines expect_lines) {
     try {
-        return Parser(text).parse();
+        return Parser(text, expect_lines).parse();
     } catch (const ParseError& e) {
         return Diagnostic{std::string(filename), e.line, e.col, e.message};
     }

@@ -148,6 +148,31 @@ TEST(SceneLog, EveryMalformedKindNamesItsPlace) {
     for (const Bad& b : cases) EXPECT_EQ(diag(b.text), std::string("t.scene:") + b.want) << b.name;
 }
 
+TEST(SceneLog, ExpectLinesToBeReplacedAreNotCheckedAgainstTheLog) {
+    // What `ricochet record` reads: stale expectations (frames lowered, a ball and a check taken out).
+    const std::string stale = "ricochet 1\nframes 1\nball 0 0 1 1\ncheck speed\nexpect state 2 0 0 0 1 1\n"
+                              "expect state 1 3 0 0 1 1\nexpect failure oracle 5\nexpect hash 0123456789abcdef\n";
+    EXPECT_EQ(diag(stale), "t.scene:5:14: error: expect state at frame 2 but the log runs 1 frames");
+    auto r = parse_scene_log(stale, "t.scene", ExpectLines::replaced);
+    ASSERT_TRUE(std::holds_alternative<Scene>(r)) << std::get<Diagnostic>(r).str();
+    const Scene& s = std::get<Scene>(r);
+    EXPECT_EQ(s.balls.size(), 1u);
+    EXPECT_TRUE(s.expect_states.empty());
+    EXPECT_FALSE(s.expect_failure);
+    EXPECT_FALSE(s.expect_hash);
+    // Each line is still read as strictly as ever, and `found` (which record keeps) still checked.
+    const auto replaced = [](std::string_view text) {
+        auto p = parse_scene_log(text, "t.scene", ExpectLines::replaced);
+        return std::holds_alternative<Diagnostic>(p) ? std::get<Diagnostic>(p).str() : std::string("parsed");
+    };
+    EXPECT_EQ(replaced("ricochet 1\nexpect hash 3F29C1A07B5E6D84\n"),
+              "t.scene:2:13: error: bad hash '3F29C1A07B5E6D84': expected exactly 16 lowercase hex digits");
+    EXPECT_EQ(replaced("ricochet 1\nexpect state 0 0 0 0 1\n"),
+              "t.scene:2:23: error: 'expect' needs F I X Y VX VY: missing VY");
+    EXPECT_EQ(replaced("ricochet 1\nframes 1\ncheck speed\nfound speed 2 0\n"),
+              "t.scene:4:13: error: found a failure at frame 2 but the log runs 1 frames");
+}
+
 TEST(SceneLog, DiagnosticFormat) {
     EXPECT_EQ((Diagnostic{"a/b.scene", 3, 7, "what"}).str(), "a/b.scene:3:7: error: what");
 }
