@@ -1,6 +1,6 @@
 // `ricochet record LOG [--max-work N]`: runs a log and writes its expect lines back, atomically. The log's other
 // lines (comments included) are kept as they are; old expect lines are replaced, even ones that no longer fit
-// the log.
+// the log. A symbolic link is written through (write_file_atomically).
 #include <sstream>
 #include <variant>
 

@@ -21,6 +21,10 @@ SceneOrDiagnostic read_scene_log(const std::filesystem::path& path, ExpectLines 
 
 /// Writes text to path atomically: a temporary file in the same folder, fsync, rename over path,
 /// fsync the folder. On failure returns false, sets *error (if given) and leaves path untouched.
+/// A symbolic link is written through: the temporary file goes next to the file it resolves to, which the
+/// rename replaces, and the link stays. The temporary file is named `.NAME.tmp.PID.XXXXXX`; temporaries of
+/// the same NAME that a killed writer left (its PID gone, the file older than this process) are removed.
+/// (atomic_write.cpp)
 bool write_file_atomically(const std::filesystem::path& path, std::string_view text, std::string* error);
 
 /// Where save_scene_log_once left a case.
