@@ -1,7 +1,8 @@
 // `ricochet record LOG [--max-work N]`: runs a log and writes its expect lines back, atomically. The log's other
-// lines (comments included) are kept as they are; old expect lines are replaced.
-#include <fstream>
+// lines (comments included) are kept as they are; old expect lines are replaced, even ones that no longer fit
+// the log. A symbolic link is written through (write_file_atomically).
 #include <sstream>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -23,7 +24,7 @@ std::string without_expect_lines(const std::string& text) {
     while (std::getline(in, line)) {
         const auto start = line.find_first_not_of(" \t");
         if (start != std::string::npos && line.compare(start, 6, "expect") == 0 &&
-            (line.size() == start + 6 || line[start + 6] == ' ' || line[start + 6] == '\t'))
+            (line.size() == start + 6 || line[start + 6] == ' ' || line[start + 6] == '\t' || line[start + 6] == '\r'))
             continue;
         out += line;
         out += '\n';
@@ -44,17 +45,28 @@ void register_record(CLI::App& app) {
     sub->add_option("LOG", opt->log, "scene log")->required();
     add_max_work_option(*sub, opt->max_work);
     sub->callback([opt] {
-        Scene scene = load_scene_or_exit(opt->log);
+        // One read: the text that is parsed is the text that is rewritten.
+        auto read = read_log_text(opt->log);
+        if (auto* d = std::get_if<Diagnostic>(&read)) {
+            fmt::print(stderr, "{}\n", d->str());
+            throw Exit{2};
+        }
+        const std::string& original = std::get<std::string>(read);
+        // The expect lines are what record replaces: stale ones (a frame past a lowered `frames`, a ball or a
+        // check taken out) are no reason to refuse, a malformed one still is.
+        auto parsed = parse_scene_log(original, opt->log, ExpectLines::replaced);
+        if (auto* d = std::get_if<Diagnostic>(&parsed)) {
+            fmt::print(stderr, "{}\n", d->str());
+            throw Exit{2};
+        }
+        Scene scene = std::get<Scene>(std::move(parsed));
         check_work_or_exit(opt->log, scene, scene.frames, opt->max_work);
         const CheckedRun run = record_expectations(scene);
         if (run.error) {
             fmt::print(stderr, "{}: error: {}; the log is unchanged\n", opt->log, run.error->message());
             throw Exit{1};
         }
-        std::ifstream in(opt->log, std::ios::binary);
-        std::stringstream buffer;
-        buffer << in.rdbuf();
-        std::string text = without_expect_lines(buffer.str());
+        std::string text = without_expect_lines(original);
         // The expect lines exactly as the canonical writer prints them.
         Scene expects_only;
         expects_only.expect_hash = scene.expect_hash;

@@ -87,6 +87,29 @@ case "$case" in
   work-record)       cp "$log" "$dir/r.scene"; run 2 record "$dir/r.scene" --max-work 39
                      cmp -s "$log" "$dir/r.scene" || fail "record changed the log"
                      grep -q "too much work" "$dir/err" || fail "no work error" ;;
+  record-lowered-frames) cp "$log" "$dir/r.scene"; run 0 record "$dir/r.scene"
+                     grep -q '^expect state 10 ' "$dir/r.scene" || fail "no expect state at frame 10"
+                     sed 's/^frames 10$/frames 3/' "$dir/r.scene" >"$dir/low.scene"
+                     run 0 record "$dir/low.scene"
+                     ! grep -q '^expect state \([4-9]\|10\) ' "$dir/low.scene" || fail "stale expect lines kept"
+                     grep -q '^expect state 3 ' "$dir/low.scene" || fail "no expect state at frame 3"
+                     [ "$(grep -c '^expect hash ' "$dir/low.scene")" = 1 ] || fail "not one expect hash"
+                     run 0 replay "$dir/low.scene" ;;
+  record-symlink)    mkdir "$dir/real"; cp "$log" "$dir/real/r.scene"; ln -s real/r.scene "$dir/link.scene"
+                     run 0 record "$dir/link.scene"
+                     [ -L "$dir/link.scene" ] || fail "record replaced the link with a file"
+                     grep -q '^expect hash ' "$dir/real/r.scene" || fail "the link's target was not recorded"
+                     [ -z "$(ls -A "$dir/real" | grep -v '^r.scene$')" ] || fail "a temporary file is left next to the target"
+                     [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left next to the link" ;;
+  record-stale-temp) cp "$log" "$dir/r.scene"
+                     # A killed record's temporary (PID 2147483647 is past every pid_max), a live one's ($$),
+                     # another log's.
+                     for t in .r.scene.tmp.2147483647.AbC123 .r.scene.tmp.$$.AbC123 .q.scene.tmp.2147483647.AbC123; do
+                       echo partial >"$dir/$t"; touch -d '2000-01-01' "$dir/$t"; done
+                     run 0 record "$dir/r.scene"
+                     [ ! -e "$dir/.r.scene.tmp.2147483647.AbC123" ] || fail "the stale temporary file is left"
+                     [ -e "$dir/.r.scene.tmp.$$.AbC123" ] || fail "a live writer's temporary file was removed"
+                     [ -e "$dir/.q.scene.tmp.2147483647.AbC123" ] || fail "another log's temporary file was removed" ;;
   work-render)       run 2 render "$log" -o "$dir/x.svg" --max-work 39; grep -q "too much work" "$dir/err" || fail "no work error"
                      [ ! -e "$dir/x.svg" ] || fail "render wrote the picture" ;;
   work-default)      run 2 replay "$big"

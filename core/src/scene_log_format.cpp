@@ -11,12 +11,15 @@
 
 #include "ricochet/format.hpp"
 #include "ricochet/hash.hpp"
+#include "shown_text.hpp"
 
 namespace ricochet {
 
 std::string Diagnostic::str() const { return fmt::format("{}:{}:{}: error: {}", file, line, col, message); }
 
 namespace {
+
+using detail::shown;
 
 /// One token of a line and the 1-based column it starts at.
 struct Token {
@@ -50,17 +53,17 @@ std::optional<double> to_double(std::string_view s, std::string& why) {
     }
     // from_chars takes no sign of its own here: a second '-' (or a '+') is not a number.
     if (body.empty() || body.front() == '-' || body.front() == '+') {
-        why = fmt::format("'{}' is not a number", s);
+        why = fmt::format("'{}' is not a number", shown(s));
         return std::nullopt;
     }
     double v = 0.0;
     const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), v, format);
     if (ec == std::errc::result_out_of_range) {
-        why = fmt::format("'{}' is out of the range of a double", s);
+        why = fmt::format("'{}' is out of the range of a double", shown(s));
         return std::nullopt;
     }
     if (ec != std::errc{} || end != body.data() + body.size()) {
-        why = fmt::format("'{}' is not a number", s);
+        why = fmt::format("'{}' is not a number", shown(s));
         return std::nullopt;
     }
     return negative ? -v : v;
@@ -68,12 +71,15 @@ std::optional<double> to_double(std::string_view s, std::string& why) {
 
 class Parser {
 public:
-    explicit Parser(std::string_view text) : text_(text) {}
+    Parser(std::string_view text, ExpectLines expect_lines) : text_(text), expect_lines_(expect_lines) {}
 
     Scene parse() {
         if (text_.size() > k_max_file_size)
             throw ParseError{1, 1, fmt::format("the file is {} bytes, over the limit of {} bytes", text_.size(),
                                                k_max_file_size)};
+        // A BOM would otherwise be the first bytes of the first token, invisible in its message.
+        if (text_.starts_with(k_byte_order_mark))
+            throw ParseError{1, 1, "a byte order mark (U+FEFF) is not allowed; save the file as UTF-8 without BOM"};
         std::size_t pos = 0;
         int line_no = 0;
         while (pos < text_.size()) {
@@ -86,6 +92,11 @@ public:
         // A log with no directive at all: point at its start.
         if (!seen_header_) throw ParseError{1, 1, "empty log: expected the header 'ricochet 1'"};
         validate();
+        if (expect_lines_ == ExpectLines::replaced) {
+            scene_.expect_hash.reset();
+            scene_.expect_failure.reset();
+            scene_.expect_states.clear();
+        }
         return std::move(scene_);
     }
 
@@ -99,6 +110,7 @@ private:
                              fmt::format("line is {} bytes long, over the limit of {}", line.size(), k_max_line_length)};
         if (const auto nul = line.find('\0'); nul != std::string_view::npos)
             throw ParseError{line_no, static_cast<int>(nul) + 1, "NUL byte in the log"};
+        const std::size_t full_size = line.size();
         // '#' starts a comment to the end of the line.
         if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
         tokens_.clear();
@@ -111,7 +123,9 @@ private:
             tokens_.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
         }
         if (tokens_.empty()) return;
-        end_col_ = static_cast<int>(line.size()) + 1;
+        // Just past the line's last character: the CR of a CRLF line end is no character of the line.
+        const bool crlf_end = !line.empty() && line.back() == '\r' && line.size() == full_size;
+        end_col_ = static_cast<int>(line.size() - (crlf_end ? 1 : 0)) + 1;
         directive();
     }
 
@@ -119,13 +133,13 @@ private:
     const Token& arg(std::size_t n, std::string_view what) {
         if (n >= tokens_.size())
             throw ParseError{line_, end_col_,
-                             fmt::format("'{}' needs {}: missing {}", tokens_[0].text, expected_, what)};
+                             fmt::format("'{}' needs {}: missing {}", shown(tokens_[0].text), expected_, what)};
         return tokens_[n];
     }
     void no_more(std::size_t n) {
         if (tokens_.size() > n)
-            fail(tokens_[n], fmt::format("unexpected '{}' after '{}' ({} expected)", tokens_[n].text,
-                                         tokens_[0].text, expected_));
+            fail(tokens_[n], fmt::format("unexpected '{}' after '{}' ({} expected)", shown(tokens_[n].text),
+                                         shown(tokens_[0].text), expected_));
     }
 
     double number(std::size_t n, std::string_view what) {
@@ -134,7 +148,7 @@ private:
         const auto v = to_double(t.text, why);
         if (!v) fail(t, fmt::format("bad {}: {}", what, why));
         if (!in_range(*v))
-            fail(t, fmt::format("{} {} is outside the accepted range (finite, magnitude at most 2^256)", what, t.text));
+            fail(t, fmt::format("{} {} is outside the accepted range (finite, magnitude at most 2^256)", what, shown(t.text)));
         return *v;
     }
 
@@ -142,9 +156,9 @@ private:
         const Token& t = arg(n, what);
         std::int64_t v = 0;
         const auto [end, ec] = std::from_chars(t.text.data(), t.text.data() + t.text.size(), v);
-        if (ec == std::errc::result_out_of_range) fail(t, fmt::format("{} '{}' is out of range", what, t.text));
+        if (ec == std::errc::result_out_of_range) fail(t, fmt::format("{} '{}' is out of range", what, shown(t.text)));
         if (ec != std::errc{} || end != t.text.data() + t.text.size())
-            fail(t, fmt::format("bad {}: '{}' is not an integer", what, t.text));
+            fail(t, fmt::format("bad {}: '{}' is not an integer", what, shown(t.text)));
         return v;
     }
 
@@ -157,15 +171,15 @@ private:
         const std::string_view name = d.text;
         if (!seen_header_) {
             if (name != "ricochet")
-                fail(d, fmt::format("expected the header 'ricochet 1' before '{}'", name));
+                fail(d, fmt::format("expected the header 'ricochet 1' before '{}'", shown(name)));
             expected_ = "a format version";
             const Token& v = arg(1, "format version");
             if (v.text != "1") {
                 std::int64_t ver = 0;
                 const auto [end, ec] = std::from_chars(v.text.data(), v.text.data() + v.text.size(), ver);
                 if (ec == std::errc{} && end == v.text.data() + v.text.size() && ver > 1)
-                    fail(v, fmt::format("format version {} is newer than this reader (it reads version 1)", v.text));
-                fail(v, fmt::format("unknown format version '{}' (this reader reads version 1)", v.text));
+                    fail(v, fmt::format("format version {} is newer than this reader (it reads version 1)", shown(v.text)));
+                fail(v, fmt::format("unknown format version '{}' (this reader reads version 1)", shown(v.text)));
             }
             no_more(2);
             seen_header_ = true;
@@ -178,7 +192,7 @@ private:
             const Token& t = arg(1, "kernel name");
             const auto k = parse_kernel(t.text);
             if (!k)
-                fail(t, fmt::format("unknown kernel '{}' ({})", t.text, kernel_names()));
+                fail(t, fmt::format("unknown kernel '{}' ({})", shown(t.text), kernel_names()));
             no_more(2);
             scene_.kernel = *k;
             seen_kernel_ = true;
@@ -208,7 +222,7 @@ private:
             expected_ = "X Y R";
             count(scene_.circles.size(), k_max_entities, "circles");
             Circle c{{number(1, "X"), number(2, "Y")}, number(3, "R")};
-            if (std::signbit(c.r) && c.r != 0.0) fail(tokens_[3], fmt::format("negative radius {}", tokens_[3].text));
+            if (std::signbit(c.r) && c.r != 0.0) fail(tokens_[3], fmt::format("negative radius {}", shown(tokens_[3].text)));
             no_more(4);
             scene_.circles.push_back(c);
         } else if (name == "rect") {
@@ -216,9 +230,9 @@ private:
             count(scene_.rects.size(), k_max_entities, "rects");
             Rect r{number(1, "LEFT"), number(2, "BOTTOM"), number(3, "RIGHT"), number(4, "TOP")};
             if (r.left > r.right)
-                fail(tokens_[1], fmt::format("left {} is greater than right {}", tokens_[1].text, tokens_[3].text));
+                fail(tokens_[1], fmt::format("left {} is greater than right {}", shown(tokens_[1].text), shown(tokens_[3].text)));
             if (r.bottom > r.top)
-                fail(tokens_[2], fmt::format("bottom {} is greater than top {}", tokens_[2].text, tokens_[4].text));
+                fail(tokens_[2], fmt::format("bottom {} is greater than top {}", shown(tokens_[2].text), shown(tokens_[4].text)));
             no_more(5);
             scene_.rects.push_back(r);
         } else if (name == "check") {
@@ -229,10 +243,10 @@ private:
                 // Every name a log may use, from the one list of checks.
                 std::string names;
                 for (Check k : k_all_checks) names += fmt::format("{}{}", names.empty() ? "" : ", ", check_name(k));
-                fail(t, fmt::format("unknown check '{}' ({})", t.text, names));
+                fail(t, fmt::format("unknown check '{}' ({})", shown(t.text), names));
             }
             for (Check have : scene_.checks)
-                if (have == *c) fail(t, fmt::format("duplicate check '{}'", t.text));
+                if (have == *c) fail(t, fmt::format("duplicate check '{}'", shown(t.text)));
             no_more(2);
             scene_.checks.push_back(*c);
         } else if (name == "expect") {
@@ -243,7 +257,7 @@ private:
                 if (scene_.expect_hash) fail(what, "duplicate 'expect hash'");
                 const Token& t = arg(2, "hash");
                 const auto h = parse_hash(t.text);
-                if (!h) fail(t, fmt::format("bad hash '{}': expected exactly 16 lowercase hex digits", t.text));
+                if (!h) fail(t, fmt::format("bad hash '{}': expected exactly 16 lowercase hex digits", shown(t.text)));
                 no_more(3);
                 scene_.expect_hash = *h;
             } else if (what.text == "state") {
@@ -265,21 +279,21 @@ private:
                 if (scene_.expect_failure) fail(what, "duplicate 'expect failure'");
                 const Token& t = arg(2, "check name");
                 const auto c = parse_check(t.text);
-                if (!c) fail(t, fmt::format("unknown check '{}'", t.text));
+                if (!c) fail(t, fmt::format("unknown check '{}'", shown(t.text)));
                 const std::int64_t f = integer(3, "frame");
                 if (f < 0) fail(tokens_[3], fmt::format("negative frame {}", f));
                 no_more(4);
                 scene_.expect_failure = ExpectFailure{*c, f};
                 failure_place_ = {line_, tokens_[2].col, tokens_[3].col};
             } else {
-                fail(what, fmt::format("unknown expectation '{}' (hash, state or failure)", what.text));
+                fail(what, fmt::format("unknown expectation '{}' (hash, state or failure)", shown(what.text)));
             }
         } else if (name == "found") {
             expected_ = "CHECK F BALL";
             if (scene_.found) fail(d, "duplicate 'found'");
             const Token& t = arg(1, "check name");
             const auto c = parse_check(t.text);
-            if (!c) fail(t, fmt::format("unknown check '{}'", t.text));
+            if (!c) fail(t, fmt::format("unknown check '{}'", shown(t.text)));
             const std::int64_t f = integer(2, "frame");
             if (f < 0) fail(tokens_[2], fmt::format("negative frame {}", f));
             const std::int64_t ball = integer(3, "ball index");
@@ -301,13 +315,20 @@ private:
             }
             scene_.provenance.push_back(std::move(words));
         } else {
-            fail(d, fmt::format("unknown directive '{}'", name));
+            fail(d, fmt::format("unknown directive '{}'", shown(name)));
         }
     }
 
-    /// Checks that need the whole log: expect lines must name balls and frames the scene has, and the
-    /// failure's check must be one the log asks for.
+    /// Checks that need the whole log, in the spec's order: expect lines must name balls and frames the scene
+    /// has, and the failure's check must be one the log asks for; so must `found`. The expect lines' checks
+    /// are left out when they are to be replaced (record writes new ones).
     void validate() {
+        if (expect_lines_ == ExpectLines::checked) validate_expect_states();
+        validate_found();
+        if (expect_lines_ == ExpectLines::checked) validate_expect_failure();
+    }
+
+    void validate_expect_states() {
         for (std::size_t i = 0; i < scene_.expect_states.size(); ++i) {
             const ExpectState& e = scene_.expect_states[i];
             const Place& p = state_places_[i];
@@ -318,6 +339,9 @@ private:
                 throw ParseError{p.line, p.col_b, fmt::format("expect state for ball {} but the log has {} balls",
                                                               e.ball, scene_.balls.size())};
         }
+    }
+
+    void validate_found() {
         if (scene_.found) {
             const Found& f = *scene_.found;
             const Place& p = found_place_;
@@ -332,6 +356,9 @@ private:
                 throw ParseError{p.line, p.col_c, fmt::format("found a failure for ball {} but the log has {} balls",
                                                               f.ball, scene_.balls.size())};
         }
+    }
+
+    void validate_expect_failure() {
         if (scene_.expect_failure) {
             const ExpectFailure& f = *scene_.expect_failure;
             bool listed = false;
@@ -361,6 +388,7 @@ private:
     Place failure_place_;
     Place found_place_;
     std::string_view expected_;
+    ExpectLines expect_lines_;
     int line_ = 0;
     int end_col_ = 1;
     bool seen_header_ = false;
@@ -370,9 +398,9 @@ private:
 
 }  // namespace
 
-SceneOrDiagnostic parse_scene_log(std::string_view text, std::string_view filename) {
+SceneOrDiagnostic parse_scene_log(std::string_view text, std::string_view filename, ExpectLines expect_lines) {
     try {
-        return Parser(text).parse();
+        return Parser(text, expect_lines).parse();
     } catch (const ParseError& e) {
         return Diagnostic{std::string(filename), e.line, e.col, e.message};
     }

@@ -1,12 +1,17 @@
 // Scene logs: write -> read bit for bit, every malformed kind's exact diagnostic, atomic saving.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <variant>
+
+#include <fmt/format.h>
 
 #include "ricochet/scene_log.hpp"
 #include "scene_text.hpp"
@@ -148,6 +153,31 @@ TEST(SceneLog, EveryMalformedKindNamesItsPlace) {
     for (const Bad& b : cases) EXPECT_EQ(diag(b.text), std::string("t.scene:") + b.want) << b.name;
 }
 
+TEST(SceneLog, ExpectLinesToBeReplacedAreNotCheckedAgainstTheLog) {
+    // What `ricochet record` reads: stale expectations (frames lowered, a ball and a check taken out).
+    const std::string stale = "ricochet 1\nframes 1\nball 0 0 1 1\ncheck speed\nexpect state 2 0 0 0 1 1\n"
+                              "expect state 1 3 0 0 1 1\nexpect failure oracle 5\nexpect hash 0123456789abcdef\n";
+    EXPECT_EQ(diag(stale), "t.scene:5:14: error: expect state at frame 2 but the log runs 1 frames");
+    auto r = parse_scene_log(stale, "t.scene", ExpectLines::replaced);
+    ASSERT_TRUE(std::holds_alternative<Scene>(r)) << std::get<Diagnostic>(r).str();
+    const Scene& s = std::get<Scene>(r);
+    EXPECT_EQ(s.balls.size(), 1u);
+    EXPECT_TRUE(s.expect_states.empty());
+    EXPECT_FALSE(s.expect_failure);
+    EXPECT_FALSE(s.expect_hash);
+    // Each line is still read as strictly as ever, and `found` (which record keeps) still checked.
+    const auto replaced = [](std::string_view text) {
+        auto p = parse_scene_log(text, "t.scene", ExpectLines::replaced);
+        return std::holds_alternative<Diagnostic>(p) ? std::get<Diagnostic>(p).str() : std::string("parsed");
+    };
+    EXPECT_EQ(replaced("ricochet 1\nexpect hash 3F29C1A07B5E6D84\n"),
+              "t.scene:2:13: error: bad hash '3F29C1A07B5E6D84': expected exactly 16 lowercase hex digits");
+    EXPECT_EQ(replaced("ricochet 1\nexpect state 0 0 0 0 1\n"),
+              "t.scene:2:23: error: 'expect' needs F I X Y VX VY: missing VY");
+    EXPECT_EQ(replaced("ricochet 1\nframes 1\ncheck speed\nfound speed 2 0\n"),
+              "t.scene:4:13: error: found a failure at frame 2 but the log runs 1 frames");
+}
+
 TEST(SceneLog, DiagnosticFormat) {
     EXPECT_EQ((Diagnostic{"a/b.scene", 3, 7, "what"}).str(), "a/b.scene:3:7: error: what");
 }
@@ -193,6 +223,57 @@ TEST_F(TempDir, AtomicWriteIntoAMissingFolderFailsAndCreatesNothing) {
     EXPECT_FALSE(write_file_atomically(dir_ / "no" / "a.scene", "x", &error));
     EXPECT_NE(error.find("cannot create a temporary file"), std::string::npos) << error;
     EXPECT_EQ(count_files(), 0u);
+}
+
+TEST_F(TempDir, AtomicWriteGoesThroughASymbolicLink) {
+    std::filesystem::create_directories(dir_ / "real");
+    const auto target = dir_ / "real" / "a.scene";
+    const auto link = dir_ / "link.scene";
+    std::string error;
+    ASSERT_TRUE(write_file_atomically(target, "first\n", &error)) << error;
+    std::filesystem::permissions(target, std::filesystem::perms(0640));
+    std::filesystem::create_symlink(std::filesystem::path("real") / "a.scene", link);
+    ASSERT_TRUE(write_file_atomically(link, "second\n", &error)) << error;
+    EXPECT_TRUE(std::filesystem::is_symlink(link));
+    EXPECT_EQ(slurp(target), "second\n");
+    EXPECT_EQ(std::filesystem::status(target).permissions(), std::filesystem::perms(0640));
+    // No temporary file left on either side.
+    EXPECT_EQ(count_files(), 2u);
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir_ / "real"), {}), 1);
+    // A dangling link is an error, and nothing is created.
+    std::filesystem::create_symlink("nowhere.scene", dir_ / "dangling.scene");
+    EXPECT_FALSE(write_file_atomically(dir_ / "dangling.scene", "x", &error));
+    EXPECT_NE(error.find("cannot resolve the symbolic link"), std::string::npos) << error;
+    EXPECT_EQ(count_files(), 3u);
+}
+
+TEST_F(TempDir, AtomicWriteRemovesOnlyTheStaleTemporariesOfItsOwnFile) {
+    const auto touch = [&](const std::string& name, bool old) {
+        std::ofstream(dir_ / name) << "partial";
+        // Set exactly: a file system's own clock may lag the process's by a tick.
+        const auto now = std::filesystem::file_time_type::clock::now();
+        std::filesystem::last_write_time(dir_ / name, old ? now - std::chrono::hours(1) : now);
+    };
+    // 2147483647 is past every PID (Linux's pid_max is at most 2^22): its writer is gone.
+    const std::string dead = ".a.scene.tmp.2147483647.AbC123";
+    const std::string live = fmt::format(".a.scene.tmp.{}.AbC123", ::getppid());  // a running writer's
+    const std::string young = ".a.scene.tmp.2147483646.AbC123";                    // made after this process started
+    const std::string other = ".b.scene.tmp.2147483647.AbC123";                    // another log's
+    const std::string unnamed = ".a.scene.tmp.AbC123";                             // no PID: whose is unknown
+    const std::string odd = ".a.scene.tmp.2147483647.AbC12";                      // not mkstemp's six letters
+    touch(dead, true);
+    touch(live, true);
+    touch(young, false);
+    touch(other, true);
+    touch(unnamed, true);
+    touch(odd, true);
+    std::string error;
+    ASSERT_TRUE(write_file_atomically(dir_ / "a.scene", "text\n", &error)) << error;
+    EXPECT_FALSE(std::filesystem::exists(dir_ / dead));
+    for (const std::string& kept : {live, young, other, unnamed, odd})
+        EXPECT_TRUE(std::filesystem::exists(dir_ / kept)) << kept;
+    EXPECT_EQ(slurp(dir_ / "a.scene"), "text\n");
+    EXPECT_EQ(count_files(), 6u);
 }
 
 TEST_F(TempDir, TheSameCaseIsNeverSavedTwice) {

@@ -46,6 +46,8 @@ class Acceptor {
 public:
     void run(std::string_view text) {
         if (text.size() > k_file_limit) throw Rejection{1, "file over the limit of 16 MiB"};
+        // "Lexical rules": no byte order mark at the start (U+FEFF elsewhere is bytes like any other).
+        if (text.starts_with("\xEF\xBB\xBF")) throw Rejection{1, "a byte order mark"};
         std::size_t pos = 0;
         Tokens tokens;
         while (pos < text.size()) {

@@ -248,7 +248,13 @@ TEST(GrammarAcceptor, SeparatorsTabsAndCarriageReturns) {
     accepted("ricochet 1\r\nwall\t0 0\t1 1\r\n\r\nball 0\r0 1 1\n");
     rejected_at(h + "wall 0 0 1 1\v\n", 2);  // a vertical tab is no separator
     rejected_at(h + "wall 0 0 1 1\f\n", 2);
-    rejected_at("\xEF\xBB\xBFricochet 1\n", 1);  // a byte-order mark is part of the first token
+}
+
+TEST(GrammarAcceptor, NoByteOrderMark) {
+    rejected_at("\xEF\xBB\xBFricochet 1\n", 1);
+    rejected_at("\xEF\xBB\xBF# comment\n\nricochet 1\n", 1);
+    rejected_at("\xEF\xBB\xBF", 1);
+    accepted(h + "from a\xEF\xBB\xBFz\n");  // only at the start of the file
 }
 
 TEST(GrammarAcceptor, LineLength) {

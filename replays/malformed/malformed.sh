@@ -1,6 +1,7 @@
 #!/bin/sh
 # One malformed-log kind per call: writes the log, runs `ricochet run` and `ricochet record` on it and
-# checks the exact diagnostic on stderr, exit status 2, and that record left the file unchanged.
+# checks the exact diagnostic on stderr, exit status 2, and that record left the file unchanged (for a
+# stale expect line, expect-*, that record rewrites it into a log that replays).
 #   malformed.sh RICOCHET KIND
 #   malformed.sh --write KIND FILE   writes the kind's log to FILE and prints its diagnostic (LINE:COL: …)
 #   malformed.sh --kinds             prints every kind (the case labels below)
@@ -40,16 +41,32 @@ case "$kind" in
                      want='1:1: error: the file is over the limit of 16777216 bytes' ;;
   bad-hash)          printf '%s\nexpect hash 12345g7890abcdef\n' "$h" >"$f"; want='2:13: error: bad hash '\''12345g7890abcdef'\'': expected exactly 16 lowercase hex digits' ;;
   expect-bad-ball)   printf '%s\nframes 1\nball 0 0 1 1\nexpect state 1 3 0 0 1 1\n' "$h" >"$f"; want='4:16: error: expect state for ball 3 but the log has 1 balls' ;;
+  expect-past-frames) printf '%s\nframes 1\nball 0 0 1 1\nexpect state 2 0 0 0 1 1\n' "$h" >"$f"; want='4:14: error: expect state at frame 2 but the log runs 1 frames' ;;
+  byte-order-mark)   printf '\357\273\277%s\n' "$h" >"$f"; want='1:1: error: a byte order mark (U+FEFF) is not allowed; save the file as UTF-8 without BOM' ;;
+  escape-sequence)   printf '%s\nwal\033]0;pwned\007 0 0 1 1\n' "$h" >"$f"; want='2:1: error: unknown directive '\''wal\x1b]0;pwned\x07'\''' ;;
+  crlf-missing-token) printf '%s\r\nwall 0 0 1\r\n' "$h" >"$f"; want='2:11: error: '\''wall'\'' needs X0 Y0 X1 Y1: missing Y1' ;;
   duplicate-check)   printf '%s\ncheck speed\ncheck speed\n' "$h" >"$f"; want='3:7: error: duplicate check '\''speed'\''' ;;
   *) echo "unknown kind $kind" >&2; exit 1 ;;
 esac
 if [ -z "$ricochet" ]; then printf '%s\n' "$want"; exit 0; fi
 before=$(cksum <"$f")
-for cmd in run record; do
+# A stale expect line is what record replaces (docs/scene-log.md, "Writing logs"): record rewrites it, and the
+# log then replays; every other kind record refuses like run.
+case "$kind" in
+  expect-*) cmds=run; stale=yes ;;
+  *)        cmds='run record'; stale=no ;;
+esac
+for cmd in $cmds; do
   err=$("$ricochet" "$cmd" "$f" 2>&1 >/dev/null)
   rc=$?
   if [ "$rc" != 2 ]; then echo "FAIL $kind ($cmd): exit $rc, expected 2; stderr: $err"; exit 1; fi
   if [ "$err" != "$f:$want" ]; then printf 'FAIL %s (%s): stderr\n  got:  %s\n  want: %s\n' "$kind" "$cmd" "$err" "$f:$want"; exit 1; fi
 done
+if [ "$stale" = yes ]; then
+  err=$("$ricochet" record "$f" 2>&1 >/dev/null) || { echo "FAIL $kind (record): exit $?, expected 0; stderr: $err"; exit 1; }
+  err=$("$ricochet" replay "$f" 2>&1 >/dev/null) || { echo "FAIL $kind: the recorded log does not replay: $err"; exit 1; }
+  echo "ok $kind: $want; record rewrote it"
+  exit 0
+fi
 if [ "$(cksum <"$f")" != "$before" ]; then echo "FAIL $kind: record changed the file"; exit 1; fi
 echo "ok $kind: $want"

@@ -6,17 +6,25 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 
 #include "ricochet/scene.hpp"
 #include "ricochet/scene_log_format.hpp"
 
 namespace ricochet {
 
+/// A log's bytes from disk (k_max_file_size enforced before reading it all), or why not (at 1:1).
+std::variant<std::string, Diagnostic> read_log_text(const std::filesystem::path& path);
+
 /// Reads a log from disk (enforcing k_max_file_size before reading it all). Never throws on bad input.
-SceneOrDiagnostic read_scene_log(const std::filesystem::path& path);
+SceneOrDiagnostic read_scene_log(const std::filesystem::path& path, ExpectLines expect_lines = ExpectLines::checked);
 
 /// Writes text to path atomically: a temporary file in the same folder, fsync, rename over path,
 /// fsync the folder. On failure returns false, sets *error (if given) and leaves path untouched.
+/// A symbolic link is written through: the temporary file goes next to the file it resolves to, which the
+/// rename replaces, and the link stays. The temporary file is named `.NAME.tmp.PID.XXXXXX`; temporaries of
+/// the same NAME that a killed writer left (its PID gone, the file older than this process) are removed.
+/// (atomic_write.cpp)
 bool write_file_atomically(const std::filesystem::path& path, std::string_view text, std::string* error);
 
 /// Where save_scene_log_once left a case.

@@ -37,8 +37,19 @@ struct Diagnostic {
 /// A parsed scene, or where and why it could not be parsed.
 using SceneOrDiagnostic = std::variant<Scene, Diagnostic>;
 
+/// The UTF-8 byte order mark, refused at the start of a log (docs/scene-log.md, "Lexical rules").
+inline constexpr std::string_view k_byte_order_mark = "\xEF\xBB\xBF";
+
+/// What the reader makes of the `expect` lines.
+enum class ExpectLines {
+    checked,   ///< every rule of docs/scene-log.md: what run, replay and every other reader use
+    replaced,  ///< each line read and checked on its own, but not against the rest of the log (its frames,
+               ///< balls, checks), and left out of the scene: `ricochet record`, which writes new ones
+};
+
 /// Reads a log from memory. filename is only used in diagnostics. Never throws on bad input.
-SceneOrDiagnostic parse_scene_log(std::string_view text, std::string_view filename);
+SceneOrDiagnostic parse_scene_log(std::string_view text, std::string_view filename,
+                                  ExpectLines expect_lines = ExpectLines::checked);
 
 /// The canonical text of a scene: header, `from` lines, kernel, frames, walls, balls, circles, rects,
 /// checks, found, expect hash, expect failure, expect states; numbers in shortest round-trip form.
