@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "ricochet/fp_guard.hpp"  // dot and cross are inline: the user's flags decide their bits
+
 namespace ricochet {
 
 /// A 2D vector or point, y up, with components of type T (float, double or an exact number).

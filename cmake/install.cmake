@@ -1,0 +1,35 @@
+# Install rules and the package config. `cmake --install BUILD --prefix P` gives
+#   P/include/ricochet/*.hpp              the public headers
+#   P/lib/libricochet_core.a              the core (static unless BUILD_SHARED_LIBS)
+#   P/bin/ricochet                        the command
+#   P/lib/cmake/ricochet/                 ricochetConfig.cmake and its version: find_package(ricochet 0.2)
+# and find_package gives ricochet::core with its include folder, C++20 and the floating-point flags.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+set(_ricochet_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/ricochet)
+
+install(TARGETS ricochet_core EXPORT ricochetTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/ricochet DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+        FILES_MATCHING PATTERN "*.hpp")
+install(TARGETS ricochet RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+
+# A static core's private xxhash is named in the export as $<LINK_ONLY:PkgConfig::XXHASH>: the config
+# must find it then, and only then.
+get_target_property(_ricochet_core_type ricochet_core TYPE)
+if(_ricochet_core_type STREQUAL "STATIC_LIBRARY")
+  set(RICOCHET_CONFIG_NEEDS_XXHASH TRUE)
+else()
+  set(RICOCHET_CONFIG_NEEDS_XXHASH FALSE)
+endif()
+install(EXPORT ricochetTargets NAMESPACE ricochet:: DESTINATION ${_ricochet_cmake_dir})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/ricochetConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/ricochetConfig.cmake
+                              INSTALL_DESTINATION ${_ricochet_cmake_dir})
+# SameMinorVersion: before 1.0 a minor release may change the API (0.3 is not a 0.2), a patch may not.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/ricochetConfigVersion.cmake
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/ricochetConfig.cmake ${PROJECT_BINARY_DIR}/ricochetConfigVersion.cmake
+        DESTINATION ${_ricochet_cmake_dir})
