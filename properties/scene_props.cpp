@@ -1,6 +1,7 @@
 // Scene-level properties: no tunnelling (single walls, wall soups, closed polygons from inside and
 // outside), the side a ball leaves a wall on, every frame's decisions against the exact answers,
-// symmetry and translation of whole runs, the broad phase, determinism and the scene-log round trip.
+// symmetry and translation of whole runs, the broad phase, determinism, the event order, accuracy at corners
+// and the scene-log round trip.
 // Each statement is a list of checks (checks.hpp).
 #include <algorithm>
 
@@ -34,7 +35,25 @@ rc::Gen<Scene> full_scene() {
         rc::gen::arbitrary<std::uint64_t>(), rc::gen::arbitrary<bool>(), rc::gen::inRange(0, 5), rc::gen::arbitrary<bool>());
 }
 
+/// Moving balls among walls with circles and rects: every kind of event a frame prints.
+rc::Gen<Scene> scene_with_statics() {
+    return rc::gen::apply(
+        [](Scene s, const Scene& statics) {
+            s.circles = statics.circles;
+            s.rects = statics.rects;
+            return s;
+        },
+        gen::moving_scene(6), gen::static_scene());
+}
+
 RICOCHET_PROPERTY_SUITE(Scenes);
+
+/// Each frame's events come in the spec's order and name entities of the scene.
+TEST_P(Scenes, EventOrder) {
+    run_property({"EventOrder", Check::event_order, scene_with_statics(), checked({Check::event_order}, classify_legs),
+                  600},
+                 GetParam());
+}
 
 TEST_P(Scenes, NoTunnelSingleWall) {
     run_property({"NoTunnelSingleWall", Check::no_tunnel, gen::wall_scene(1, 8), checked({Check::no_tunnel}, classify_legs),
