@@ -10,7 +10,7 @@
 int main(int argc, char** argv) {
     bool quick = false;
     unsigned threads = 0;
-    std::string out = "bench/results";
+    std::string out = "bench-results";
     for (int i = 1; i < argc; ++i) {
         const std::string_view a = argv[i];
         if (a == "--quick") {

@@ -10,6 +10,6 @@ namespace ricochet {
 /// Runs the scale benchmark: prints the table, writes OUT_DIR/scale.csv, scale.gp and scale.png.
 /// quick: smaller sizes (about a minute); threads: the most threads for the thread sweep (0: all
 /// cores). Returns 0, or 1 if the robust kernel tunnelled (never expected).
-int run_scale_bench(bool quick, unsigned threads = 0, const std::string& out_dir = "bench/results");
+int run_scale_bench(bool quick, unsigned threads = 0, const std::string& out_dir = "bench-results");
 
 }  // namespace ricochet

@@ -11,7 +11,7 @@ namespace ricochet::bench {
 struct Options {
     bool quick = false;                     ///< smaller query sets: under 2 minutes on 2 cores
     bool smoke = false;                     ///< tiny sets, one repetition: a correctness check for CTest
-    std::string out_dir = "bench/results";  ///< CSV and charts are written here
+    std::string out_dir = "bench-results";  ///< CSV and charts: in the current folder, never the tracked bench/results unless asked
     std::uint64_t seed = 20261123;          ///< every workload is generated from this seed
     bool chart = true;                      ///< draw the charts with gnuplot
 };
