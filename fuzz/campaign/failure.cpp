@@ -81,6 +81,7 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, 
         sha = sha1_hex(read_all(minimized));
         const fs::path named = r.work / ("minimized-" + sha);
         fs::rename(minimized, named, ec);
+        moved.clear();
         input = ec ? minimized : move_into(named, r.kept, &moved);
         if (!moved.empty()) r.notes.push_back(moved);
     }

@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "cache.hpp"
+#include "fuzz_common.hpp"
 #include "process.hpp"
 
 namespace ricochet::fuzz {
@@ -81,15 +82,19 @@ std::uint64_t count_runs(const TargetRun& r) {
     return runs + last;
 }
 
-/// The worker output's last line that says something (not a progress "#N" or final "stat::" line), for
-/// the reason a worker stopped.
+/// The worker output's last line that says why it stopped: a failure line of the target, a sanitizer's or
+/// libFuzzer's SUMMARY, ERROR or INFO line, else the last line that is not a progress "#N" one.
 std::string last_words(const TargetRun& r) {
     std::istringstream in(read_all(r.log));
-    std::string last;
-    for (std::string line; std::getline(in, line);)
-        if (!line.empty() && line[0] != '#' && !line.starts_with("stat::") && !line.starts_with("MS:") &&
-            !line.starts_with("artifact_prefix") && !line.starts_with("Base64:") && !line.starts_with("0x"))
-            last = line;
+    std::string telling, last;
+    for (std::string line; std::getline(in, line);) {
+        if (line.starts_with(k_failure_tag) || line.starts_with("SUMMARY:") || line.starts_with("ERROR:") ||
+            line.starts_with("==") || line.starts_with("INFO: -max_len") || line.starts_with("INFO: exiting") ||
+            line.starts_with("Done "))
+            telling = line;
+        if (!line.empty() && line[0] != '#') last = line;
+    }
+    if (!telling.empty()) return telling;
     return last.empty() ? "no output" : last;
 }
 
