@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "cache_lock.hpp"
 #include "process.hpp"
 
 namespace ricochet::fuzz {
@@ -39,20 +40,34 @@ std::size_t count_files(const fs::path& dir) {
     return n;
 }
 
-void merge_corpus(TargetRun& run, const std::string& kernel) {
+void merge_corpus(TargetRun& run, const std::filesystem::path& cache, const std::string& kernel) {
+    // One merge of a target's corpus at a time; another campaign's workers may still add inputs meanwhile.
+    const CacheLock lock(cache, fmt::format("merging the {} corpus", run.target));
     std::error_code ec;
-    const fs::path merged = run.dir / "corpus.merged";
-    fs::remove_all(merged, ec);
+    // The inputs this merge judges: those there now. One a worker adds later is not judged, so it stays.
+    std::set<std::string> judged;
+    for (const auto& e : fs::directory_iterator(run.corpus, ec))
+        if (e.is_regular_file()) judged.insert(e.path().filename().string());
+    const fs::path merged = run.work / "corpus.merged";
     fs::create_directories(merged, ec);
-    const fs::path log = run.dir / "merge.log";
+    const fs::path log = run.work / "merge.log";
     const auto [rc, out] = run_capture({run.bin.string(), "-merge=1", "-timeout=10", merged.string(), run.corpus.string()},
                                        {"RICOCHET_KERNEL=" + kernel}, log);
     if (rc != 0) {
-        fmt::print("  {}: merge failed (exit {}), corpus kept as it was; see {}\n", run.target, rc, log.string());
+        fmt::print("  {}: merge failed (exit {}), corpus kept as it was; its output:\n{}\n", run.target, rc, out);
         return;
     }
-    fs::remove_all(run.corpus, ec);
-    fs::rename(merged, run.corpus, ec);
+    // The kept inputs go in first (named by their SHA-1, as libFuzzer names corpus files: the same name is
+    // the same bytes), then the judged ones left out are removed: the corpus is never without an input it keeps.
+    std::set<std::string> kept;
+    for (const auto& e : fs::directory_iterator(merged, ec)) {
+        const std::string name = e.path().filename().string();
+        kept.insert(name);
+        if (!judged.contains(name)) fs::rename(e.path(), run.corpus / name, ec);
+    }
+    for (const std::string& name : judged)
+        if (!kept.contains(name)) fs::remove(run.corpus / name, ec);
+    fs::remove_all(merged, ec);
     run.corpus_size = count_files(run.corpus);
 }
 

@@ -21,8 +21,9 @@ std::set<std::string> list_artifacts(const std::filesystem::path& dir);
 /// Regular files directly in dir.
 std::size_t count_files(const std::filesystem::path& dir);
 
-/// Replaces run's corpus by its -merge=1 minimization (the inputs that add coverage), keeping it as it
-/// was if the merge fails (then a note says so). Updates run.corpus_size.
-void merge_corpus(TargetRun& run, const std::string& kernel);
+/// Shrinks run's corpus to its -merge=1 minimization (the inputs that add coverage), holding the cache's
+/// lock (cache_lock.hpp); inputs added by another campaign during the merge stay. Keeps the corpus as it
+/// was if the merge fails (then it prints the merge's output). Updates run.corpus_size.
+void merge_corpus(TargetRun& run, const std::filesystem::path& cache, const std::string& kernel);
 
 }  // namespace ricochet::fuzz

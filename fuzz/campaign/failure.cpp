@@ -5,6 +5,7 @@
 // in the folder under any name.
 #include "failure.hpp"
 
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string_view>
@@ -16,9 +17,11 @@
 #include <fmt/format.h>
 
 #include "cache.hpp"
+#include "cache_lock.hpp"
 #include "fuzz_common.hpp"
 #include "ricochet/replay.hpp"
 #include "process.hpp"
+#include "run_dir.hpp"
 #include "ricochet/checks.hpp"
 #include "ricochet/scene_log.hpp"
 #include "sha1.hpp"
@@ -54,11 +57,16 @@ std::pair<std::string, std::string> signature_of(const std::string& out) {
 }
 
 /// Minimizes one failure, converts it to a scene log, saves it unless it was saved before.
-void handle_failure(TargetRun& r, const CampaignOptions& opt, const fs::path& replay_dir, const std::string& artifact,
+void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, const std::string& artifact,
                     std::set<std::string>& signatures) {
-    const fs::path raw = r.artifacts / artifact;
-    const fs::path minimized = r.artifacts / ("minimized-" + artifact);
-    const fs::path scratch = r.dir / "scratch.log";
+    const fs::path& replay_dir = plan.replay_dir;
+    // The raw artifact joins the cache's kept ones: named by its SHA-1, so the same name is the same bytes.
+    std::string moved;
+    const fs::path raw = move_into(r.artifacts / artifact, r.kept, &moved);
+    if (!moved.empty()) r.notes.push_back(moved);
+    // Everything else is written in this campaign's own folder first.
+    const fs::path minimized = r.work / ("minimized-" + artifact);
+    const fs::path scratch = r.work / "scratch.log";
     // Minimize: libFuzzer keeps the input failing while it shrinks it; capped in runs (and time).
     std::vector<std::string> argv = {r.bin.string(), "-minimize_crash=1", fmt::format("-runs={}", k_minimize_runs)};
     if (opt.runs == 0) argv.push_back(fmt::format("-max_total_time={}", k_minimize_seconds));
@@ -66,9 +74,18 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const fs::path& re
     argv.insert(argv.end(), {"-exact_artifact_path=" + minimized.string(), raw.string()});
     run_capture(argv, {"RICOCHET_KERNEL=" + opt.kernel}, scratch);
     std::error_code ec;
-    const fs::path input = fs::exists(minimized) && fs::file_size(minimized, ec) > 0 ? minimized : raw;
-    const std::string sha = sha1_hex(read_all(input));
-    const fs::path scene_out = r.dir / "failure.scene";
+    fs::path input = raw;
+    std::string sha = sha1_hex(read_all(raw));
+    if (fs::exists(minimized) && fs::file_size(minimized, ec) > 0) {
+        // Kept as minimized-SHA1 (its own bytes' name): two campaigns keeping it keep one file.
+        sha = sha1_hex(read_all(minimized));
+        const fs::path named = r.work / ("minimized-" + sha);
+        fs::rename(minimized, named, ec);
+        moved.clear();
+        input = ec ? minimized : move_into(named, r.kept, &moved);
+        if (!moved.empty()) r.notes.push_back(moved);
+    }
+    const fs::path scene_out = r.work / "failure.scene";
     fs::remove(scene_out, ec);
     const auto [rc, out] = run_capture({r.bin.string(), input.string()},
                                        {"RICOCHET_KERNEL=" + opt.kernel, std::string(k_scene_out_env) + "=" + scene_out.string(),
@@ -97,7 +114,12 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const fs::path& re
     // The target wrote the failure log (make_failure_log); saved verbatim, its note comment kept.
     const std::string text = read_all(scene_out);
     std::string error;
-    const auto saved = save_scene_log_once(replay_dir, "fuzz-" + r.target, std::string_view(text), &error);
+    // Under the cache's lock, so that of two campaigns saving the same case one saves it, one finds it known.
+    std::optional<SavedLog> saved;
+    {
+        const CacheLock lock(plan.cache, "saving a failure log");
+        saved = save_scene_log_once(replay_dir, "fuzz-" + r.target, std::string_view(text), &error);
+    }
     if (!saved) {
         fmt::print("    cannot save the log: {}\n", error);
         ++r.new_failures;
@@ -120,19 +142,26 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const fs::path& re
 
 }  // namespace
 
-void convert_failures(TargetRun& r, const CampaignOptions& opt, const fs::path& replay_dir) {
+void convert_failures(TargetRun& r, const CampaignOptions& opt, const Plan& plan) {
+    // Every artifact in this campaign's own folder is one of its workers'.
     std::set<std::string> fresh;
     for (const std::string& a : list_artifacts(r.artifacts))
-        if (!r.artifacts_before.contains(a) && !a.starts_with("slow-unit-")) fresh.insert(a);
+        if (!a.starts_with("slow-unit-")) fresh.insert(a);
     std::set<std::string> signatures;
     int converted = 0;
     for (const std::string& a : fresh) {
         if (converted++ == k_max_failures_converted) {
             r.notes.push_back(fmt::format("{} more failure artifact(s) left unconverted in {}", fresh.size() - k_max_failures_converted,
-                                          r.artifacts.string()));
+                                          r.kept.string()));
             break;
         }
-        handle_failure(r, opt, replay_dir, a, signatures);
+        handle_failure(r, opt, plan, a, signatures);
+    }
+    // The rest (unconverted, slow units) join the kept ones before this campaign's folder goes.
+    for (const std::string& a : list_artifacts(r.artifacts)) {
+        std::string moved;
+        move_into(r.artifacts / a, r.kept, &moved);
+        if (!moved.empty()) r.notes.push_back(moved);
     }
     for (const auto& n : r.notes) fmt::print("  {}: {}\n", r.target, n);
 }

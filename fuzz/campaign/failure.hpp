@@ -10,7 +10,8 @@
 namespace ricochet::fuzz {
 
 /// Converts up to k_max_failures_converted of run's new artifacts (one per distinct failure) into scene
-/// logs in replay_dir, printing what it did; counts them in run.new_failures and run.known_failures.
-void convert_failures(TargetRun& run, const CampaignOptions& options, const std::filesystem::path& replay_dir);
+/// logs in plan.replay_dir, printing what it did; counts them in run.new_failures and run.known_failures.
+/// Every artifact and minimized input ends in run.kept; saving holds the cache's lock (cache_lock.hpp).
+void convert_failures(TargetRun& run, const CampaignOptions& options, const Plan& plan);
 
 }  // namespace ricochet::fuzz

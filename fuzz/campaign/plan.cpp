@@ -9,6 +9,7 @@
 
 #include "cache.hpp"
 #include "process.hpp"
+#include "run_dir.hpp"
 #include "ricochet/kernel.hpp"
 
 namespace ricochet::fuzz {
@@ -63,36 +64,55 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
         fmt::print(stderr, "ricochet fuzz: error: no fuzz targets in {}; {}\n", plan.bin_dir.string(), how);
         return std::nullopt;
     }
-    std::error_code ec;
-    fs::create_directories(plan.cache, ec);
-    for (const std::string& t : targets) {
+    for (const std::string& t : targets)
         if (!known_target(t)) {
             fmt::print(stderr, "ricochet fuzz: error: unknown target '{}' (parser, static, sweep, scene)\n", t);
             return std::nullopt;
         }
+    std::error_code ec;
+    fs::create_directories(plan.cache, ec);
+    // This campaign's own folder: another campaign on the same cache never touches it.
+    std::string error;
+    const auto run_dir = make_run_dir(plan.cache, &error);
+    if (!run_dir) {
+        fmt::print(stderr, "ricochet fuzz: error: {}\n", error);
+        return std::nullopt;
+    }
+    plan.run_dir = *run_dir;
+    const auto fail = [&] {
+        fs::remove_all(plan.run_dir, ec);
+        return std::nullopt;
+    };
+    for (const std::string& t : targets) {
         TargetRun r;
         r.target = t;
         r.bin = plan.bin_dir / fmt::format("fuzz_{}", t);
         if (!fs::exists(r.bin)) {
             fmt::print(stderr, "ricochet fuzz: error: {} is missing; {}\n", r.bin.string(), how);
-            return std::nullopt;
+            return fail();
         }
         // A libFuzzer binary answers -help=1 with its usage; the gcc build's standalone driver says what it is.
-        const auto [rc, out] = run_capture({r.bin.string(), "-help=1"}, {}, plan.cache / fmt::format("probe-{}.log", t));
+        const auto [rc, out] = run_capture({r.bin.string(), "-help=1"}, {}, plan.run_dir / fmt::format("probe-{}.log", t));
         if (out.find("standalone fuzz driver") != std::string::npos || out.find("Usage:") == std::string::npos) {
             fmt::print(stderr, "ricochet fuzz: error: {} is not a libFuzzer binary (a gcc build runs regression inputs only); {}\n",
                        r.bin.string(), how);
-            return std::nullopt;
+            return fail();
         }
         // The corpus is per kernel: an input that is fine under robust may fail under a lecture kernel and
         // would stop every run at start-up.
         r.dir = plan.cache / t / opt.kernel;
         r.corpus = r.dir / "corpus";
-        r.artifacts = r.dir / "artifacts";
-        r.log = r.dir / "campaign.log";
-        fs::create_directories(r.corpus, ec);
-        fs::create_directories(r.artifacts, ec);
-        fs::remove(r.log, ec);
+        r.kept = r.dir / "artifacts";
+        r.work = plan.run_dir / t;
+        r.artifacts = r.work / "artifacts";
+        r.log = r.work / "campaign.log";
+        for (const fs::path& d : {r.corpus, r.kept, r.artifacts}) {
+            fs::create_directories(d, ec);
+            if (ec) {
+                fmt::print(stderr, "ricochet fuzz: error: {}: cannot create the folder: {}\n", d.string(), ec.message());
+                return fail();
+            }
+        }
         r.dict = plan.source / "fuzz" / fmt::format("{}.dict", t);
         // Seeds: the committed regression inputs (and the replays for the parser). A lecture kernel starts
         // from its own corpus only: committed inputs may be known failures of it.
@@ -100,7 +120,6 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
             if (fs::exists(plan.source / "fuzz" / "corpus" / t)) r.seeds.push_back(plan.source / "fuzz" / "corpus" / t);
             if (t == "parser" && fs::exists(plan.source / "replays")) r.seeds.push_back(plan.source / "replays");
         }
-        r.artifacts_before = list_artifacts(r.artifacts);
         plan.runs.push_back(std::move(r));
     }
     // --jobs workers shared out: each target gets jobs / targets, the first jobs % targets one more.

@@ -23,10 +23,12 @@ using Clock = std::chrono::steady_clock;
 struct TargetRun {
     std::string target;                          ///< parser, static, sweep or scene
     std::filesystem::path bin;                   ///< the fuzz_TARGET binary
-    std::filesystem::path dir;                   ///< CACHE/TARGET/KERNEL
-    std::filesystem::path corpus;                ///< dir/corpus: the working corpus
-    std::filesystem::path artifacts;             ///< dir/artifacts: libFuzzer's crash-, timeout-, ... files
-    std::filesystem::path log;                   ///< dir/campaign.log: every worker's output
+    std::filesystem::path dir;                   ///< CACHE/TARGET/KERNEL: shared by the campaigns on this cache
+    std::filesystem::path corpus;                ///< dir/corpus: the working corpus (shared)
+    std::filesystem::path kept;                  ///< dir/artifacts: artifacts and minimized inputs kept (shared)
+    std::filesystem::path work;                  ///< RUN/TARGET: this campaign's own files
+    std::filesystem::path artifacts;             ///< work/artifacts: this campaign's crash-, timeout-, ... files
+    std::filesystem::path log;                   ///< work/campaign.log: every worker's output
     std::filesystem::path dict;                  ///< fuzz/TARGET.dict in the source tree
     std::vector<std::filesystem::path> seeds;    ///< read-only seed folders (committed inputs)
     int workers = 1;                             ///< worker processes of this target
@@ -39,17 +41,18 @@ struct TargetRun {
     std::size_t log_read = 0;                    ///< bytes of log already read
     int restarts = 0;                            ///< workers restarted after a failure
     int quick_crashes = 0;                       ///< workers that failed within a second of starting
-    std::set<std::string> artifacts_before;      ///< artifacts there before this campaign
     double seconds = 0.0;                        ///< wall time of the campaign
     int new_failures = 0;                        ///< failures saved (or kept) as new
     int known_failures = 0;                      ///< failures whose log was already saved
     std::vector<std::string> notes;              ///< lines for the end of the report
+    std::vector<std::string> stops;              ///< why workers stopped before the campaign's end
 };
 
 /// The whole campaign: where things are, and one run per target.
 struct Plan {
     std::filesystem::path bin_dir;     ///< folder of the fuzz_* binaries
     std::filesystem::path cache;       ///< the cache folder (working corpora, artifacts, logs)
+    std::filesystem::path run_dir;     ///< CACHE/runs/PID-XXXXXX: this campaign's own files (run_dir.hpp)
     std::filesystem::path replay_dir;  ///< where failure logs are saved
     std::filesystem::path source;      ///< the source tree (dictionaries, committed inputs)
     int jobs = 1;                      ///< worker processes in all

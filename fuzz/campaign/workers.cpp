@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "cache.hpp"
+#include "fuzz_common.hpp"
 #include "process.hpp"
 
 namespace ricochet::fuzz {
@@ -81,6 +82,29 @@ std::uint64_t count_runs(const TargetRun& r) {
     return runs + last;
 }
 
+/// The worker output's last line that says why it stopped: a failure line of the target, a sanitizer's or
+/// libFuzzer's SUMMARY, ERROR or INFO line, else the last line that is not a progress "#N" one.
+std::string last_words(const TargetRun& r) {
+    std::istringstream in(read_all(r.log));
+    std::string telling, last;
+    for (std::string line; std::getline(in, line);) {
+        if (line.starts_with(k_failure_tag) || line.starts_with("SUMMARY:") || line.starts_with("ERROR:") ||
+            line.starts_with("==") || line.starts_with("INFO: -max_len") || line.starts_with("INFO: exiting") ||
+            line.starts_with("Done "))
+            telling = line;
+        if (!line.empty() && line[0] != '#') last = line;
+    }
+    if (!telling.empty()) return telling;
+    return last.empty() ? "no output" : last;
+}
+
+/// How a process ended, in words.
+std::string how_it_ended(int status) {
+    if (WIFEXITED(status)) return fmt::format("exited with status {}", WEXITSTATUS(status));
+    if (WIFSIGNALED(status)) return fmt::format("was killed by signal {}", WTERMSIG(status));
+    return "stopped";
+}
+
 }  // namespace
 
 std::string human(double x) {
@@ -107,6 +131,8 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
         argv.insert(argv.end(), {"-timeout=10", "-rss_limit_mb=2048", "-print_final_stats=1",
                                  "-artifact_prefix=" + r.artifacts.string() + "/"});
         if (fs::exists(r.dict)) argv.push_back("-dict=" + r.dict.string());
+        // The caller's flags (after `--`) come last: libFuzzer takes a flag's last value, so they override.
+        argv.insert(argv.end(), opt.libfuzzer_flags.begin(), opt.libfuzzer_flags.end());
         argv.push_back(r.corpus.string());
         for (const auto& s : r.seeds) argv.push_back(s.string());
         r.pids[w] = spawn(argv, {"RICOCHET_KERNEL=" + opt.kernel}, r.log);
@@ -137,11 +163,31 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                 // A worker stops at its first failure; restart it while time is left, unless it keeps failing
                 // at start-up (a corpus input that fails). A campaign by runs does not restart: each worker
                 // runs its inputs once.
-                if (!clean && !by_runs && elapsed() < opt.time - 1 && r.restarts < k_max_restarts &&
-                    r.quick_crashes < k_max_quick_crashes) {
+                const bool time_left = !by_runs && elapsed() < opt.time - 1;
+                if (!clean && time_left && r.restarts < k_max_restarts && r.quick_crashes < k_max_quick_crashes) {
                     ++r.restarts;
                     start_worker(r, w, r.workers - 1 + r.restarts);
                     any = true;
+                    continue;
+                }
+                // Not restarted: say why when it stops before the campaign's time or runs are spent.
+                std::string why;
+                if (by_runs && !clean)
+                    why = fmt::format("it {} before its {} runs (a campaign by runs does not restart workers)", how_it_ended(status),
+                                      opt.runs);
+                else if (time_left && clean)
+                    why = "it exited with status 0 before the time was up";
+                else if (time_left && r.quick_crashes >= k_max_quick_crashes)
+                    why = fmt::format("it {}, and {} starts failed within a second: an input of the corpus fails at start-up",
+                                      how_it_ended(status), r.quick_crashes);
+                else if (time_left)
+                    why = fmt::format("it {}, and the target's workers were restarted {} times already (the most)", how_it_ended(status),
+                                      r.restarts);
+                if (!why.empty()) {
+                    const std::string line = fmt::format("{} worker {} stopped early at {:.0f} s: {}; its last words: {}", r.target, w,
+                                                         elapsed(), why, last_words(r));
+                    fmt::print("  {}\n", line);
+                    r.stops.push_back(line);
                 }
             }
             poll_log(r);
@@ -150,7 +196,7 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
         if (elapsed() - last_print >= k_progress_every_s) {
             last_print = elapsed();
             for (TargetRun& r : plan.runs) {
-                const std::size_t failures = list_artifacts(r.artifacts).size() - r.artifacts_before.size();
+                const std::size_t failures = list_artifacts(r.artifacts).size();
                 fmt::print("[{:4.0f}s] {:<7} exec/s {:>7}  cov {:>5}  corpus {:>5}  failures {}\n", elapsed(), r.target,
                            human(static_cast<double>(r.exec_s)), r.cov, r.corpus_size, failures);
             }

@@ -25,6 +25,7 @@ struct CampaignOptions {
     std::string cache_dir;             ///< working corpus and artifacts
     std::string replay_dir;            ///< where failure logs are saved
     bool no_merge = false;             ///< skip the corpus merge at the end
+    std::vector<std::string> libfuzzer_flags;  ///< passed to every worker after the campaign's own flags
 };
 
 /// Runs a campaign, printing progress and a summary on stdout. Returns 0 if nothing new failed, 1 if

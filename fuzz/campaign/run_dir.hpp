@@ -1,0 +1,20 @@
+// A campaign's own working folder in the cache: CACHE/runs/PID-XXXXXX, so that campaigns sharing one
+// cache never share a temporary file. Folders of campaigns whose PID is gone are removed.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace ricochet::fuzz {
+
+/// Creates CACHE/runs/PID-XXXXXX (mkdtemp) after removing the run folders of dead PIDs; nothing, with
+/// *error set, if it cannot.
+std::optional<std::filesystem::path> make_run_dir(const std::filesystem::path& cache, std::string* error);
+
+/// Moves file into dir under its own name (rename: atomic, same folder tree). Files are named by their
+/// content (libFuzzer's SHA-1 names), so one already there is the same file and is replaced. Returns the
+/// new path, or file itself (with *error set) if it cannot.
+std::filesystem::path move_into(const std::filesystem::path& file, const std::filesystem::path& dir, std::string* error);
+
+}  // namespace ricochet::fuzz
