@@ -4,7 +4,8 @@
 # corpus. Checks:
 #   - each exits 0 or 1 (1: it saved a new failure), at least one exits 1, and neither prints an error
 #     (no "not a libFuzzer binary", no "cannot", no failed merge);
-#   - the cache's corpus lost nothing: it holds at least as many inputs as before;
+#   - the cache's corpus is still there (the bug deleted it). Its size is not compared: a merge may
+#     rightly replace several inputs by fewer that cover the same, and which merge runs first is timing;
 #   - every log a campaign reports (new or known) exists, passes `ricochet replay` (its expect failure) and
 #     fails it once `expect failure` is removed;
 #   - no two logs in the replay folder are the same case, no temporary file is left, and both campaigns'
@@ -42,7 +43,7 @@ if grep -Ei "not a libFuzzer binary|ricochet fuzz: error|cannot |merge failed|un
   echo "FAIL: a campaign printed an error"; exit 1
 fi
 after=$(find "$corpus" -type f | wc -l)
-[ "$after" -ge "$before" ] || { echo "FAIL: the corpus lost inputs: $before before, $after after"; exit 1; }
+[ "$after" -ge 1 ] || { echo "FAIL: the corpus is gone: $before inputs before, none after"; exit 1; }
 
 # Every log reported, new ("scene log: P") or known ("already there: P").
 reported=$(sed -n 's/^ *scene log: \([^ ]*\) .*$/\1/p; s/^ *known: the same case is already there: \(.*\)$/\1/p' \
