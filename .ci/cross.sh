@@ -76,12 +76,16 @@ add_arch() {
   dpkg --add-architecture "$1" && updated=0
 }
 
-# leg -> Debian architecture, GNU triplet (compilers), multiarch triplet (libraries), runner
+# leg -> Debian architecture, GNU triplet (compilers), multiarch triplet (libraries), runner.
+# qemu without -L: the target's libc6:ARCH (installed with the dev packages) loads from /lib and
+# /usr/lib/<multiarch> as on the target. `-L /usr/<triplet>` took the cross toolchain's older
+# ld.so (libc6-s390x-cross 2.36-8) with the multiarch libc.so.6 (2.36-9+deb12u14) that the host's
+# ld.so.cache names, and every s390x program, a C hello world too, died of "stack smashing detected".
 leg_info() {
   case "$1" in
     i386)    deb=i386;  gnu=i686-linux-gnu;    multi=i386-linux-gnu;    runner=() ;;
-    aarch64) deb=arm64; gnu=aarch64-linux-gnu; multi=aarch64-linux-gnu; runner=(qemu-aarch64 -L /usr/aarch64-linux-gnu) ;;
-    s390x)   deb=s390x; gnu=s390x-linux-gnu;   multi=s390x-linux-gnu;   runner=(qemu-s390x -L /usr/s390x-linux-gnu) ;;
+    aarch64) deb=arm64; gnu=aarch64-linux-gnu; multi=aarch64-linux-gnu; runner=(qemu-aarch64) ;;
+    s390x)   deb=s390x; gnu=s390x-linux-gnu;   multi=s390x-linux-gnu;   runner=(qemu-s390x) ;;
   esac
 }
 
