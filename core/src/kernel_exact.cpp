@@ -179,7 +179,7 @@ LegScratch& leg_scratch() {
 }
 void set_scaled(mpz_t out, double x, int k) {
     const num::Dyad d = num::split(x);
-    mpz_set_si(out, static_cast<long>(d.m));
+    num::set_int64(out, d.m);
     if (d.m != 0) mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(d.e - k));
 }
 /// out = a·b + c·d

@@ -1,7 +1,8 @@
 // The floating-point model the determinism contract needs, refused at compile time where the
 // preprocessor can see it: the same bits on every machine need IEEE-754 double arithmetic, each
 // operation rounded once. ricochet::core's compile options carry the flags (-ffp-contract=off
-// -fno-fast-math, -mfpmath=sse on x86-64); this catches a build that overrides them.
+// -fno-fast-math; -mfpmath=sse on x86-64, -msse2 -mfpmath=sse on 32-bit x86, where Debian's gcc
+// defaults to x87); this catches a build that overrides them.
 // Contraction into FMA (-ffp-contract=fast, GCC's default under GNU dialects) leaves no macro, so it
 // cannot be detected here: the flag on the target is the only guard (examples/package_test.sh tests it).
 #pragma once

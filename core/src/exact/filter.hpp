@@ -10,8 +10,12 @@
 
 namespace ricochet::exact_kernel::num {
 
-/// 128-bit integers (a GCC/Clang extension) for the integer path.
+#if defined(__SIZEOF_INT128__)
+/// 128-bit integers (a GCC/Clang extension) for the integer path. 32-bit targets (i386) have none:
+/// there every sign the filter declines goes to GMP, which gives the same exact sign, only slower.
+#define RICOCHET_EXACT_HAVE_I128 1
 __extension__ typedef __int128 I128;
+#endif
 
 /// Unit roundoff: a basic operation whose result is normal is exact up to a factor (1 + δ), |δ| ≤ ε.
 inline constexpr double k_unit = 0x1p-53;
@@ -29,7 +33,9 @@ inline constexpr double k_circle_bound = 6.0 * k_unit;
 inline constexpr double k_filter_tiny = 0x1p-960;
 
 inline int sign_of(double v) { return (v > 0.0) - (v < 0.0); }
+#if RICOCHET_EXACT_HAVE_I128
 inline int sign_of(I128 v) { return (v > 0) - (v < 0); }
+#endif
 
 /// sign((a1 − a0)(b1 − b0) − (c1 − c0)(d1 − d0)), exactly.
 inline int det_sign(double a1, double a0, double b1, double b0, double c1, double c0, double d1, double d0) {
@@ -41,12 +47,14 @@ inline int det_sign(double a1, double a0, double b1, double b0, double c1, doubl
     Scale sc;
     for (double x : {a1, a0, b1, b0, c1, c0, d1, d0}) sc.add(x);
     const int k = sc.exponent();
+#if RICOCHET_EXACT_HAVE_I128
     if (sc.fits(k_small_bits)) {
         const auto i = [k](double x) { return scaled_small(x, k); };
         const I128 lp = static_cast<I128>(i(a1) - i(a0)) * (i(b1) - i(b0));
         const I128 rp = static_cast<I128>(i(c1) - i(c0)) * (i(d1) - i(d0));
         return sign_of(lp - rp);
     }
+#endif
     mpz_class z[8];
     const double xs[8] = {a1, a0, b1, b0, c1, c0, d1, d0};
     for (int j = 0; j < 8; ++j) scaled_big(z[j], xs[j], k);
@@ -64,11 +72,13 @@ inline int circle_sign(double x1, double x0, double y1, double y0, double r1, do
     Scale sc;
     for (double x : {x1, x0, y1, y0, r1, r2}) sc.add(x);
     const int k = sc.exponent();
+#if RICOCHET_EXACT_HAVE_I128
     if (sc.fits(k_small_bits)) {
         const auto i = [k](double x) { return static_cast<I128>(scaled_small(x, k)); };
         const I128 ex = i(x1) - i(x0), ey = i(y1) - i(y0), er = i(r1) + i(r2);
         return sign_of(ex * ex + ey * ey - er * er);
     }
+#endif
     mpz_class z[6];
     const double xs[6] = {x1, x0, y1, y0, r1, r2};
     for (int j = 0; j < 6; ++j) scaled_big(z[j], xs[j], k);

@@ -12,6 +12,8 @@
 
 #include <gmpxx.h>
 
+#include "gmp_int64.hpp"
+
 namespace ricochet::exact_kernel::num {
 
 /// Scratch integers for round_quotient, reused so that rounding allocates nothing in the steady state.
@@ -45,7 +47,7 @@ inline double round_quotient(mpz_srcptr num, mpz_srcptr den, long k) {
     }
     // value = (q + rem/d)·2^low with low = k − sh
     const long low = k - sh;
-    const auto qi = static_cast<std::uint64_t>(mpz_get_ui(s.q));
+    const std::uint64_t qi = low_uint64(s.q);
     const long qbits = std::bit_width(qi);
     const long top = qbits - 1 + low;  // 2^top ≤ value < 2^(top+1)
     if (top >= 1024) return sg > 0 ? INFINITY : -INFINITY;

@@ -14,6 +14,8 @@
 
 #include <gmpxx.h>
 
+#include "gmp_int64.hpp"
+
 namespace ricochet::exact_kernel::num {
 
 /// x = m·2^e with m odd, or m = 0 (e = 0) for x = 0.
@@ -66,7 +68,7 @@ inline std::int64_t scaled_small(double x, int k) {
 /// x/2^k as a GMP integer (x/2^k must be an integer: k ≤ the exponent of x).
 inline void scaled_big(mpz_class& out, double x, int k) {
     const Dyad d = split(x);
-    out = static_cast<long>(d.m);
+    set_int64(out.get_mpz_t(), d.m);
     if (d.m != 0) mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(d.e - k));
 }
 

@@ -1,0 +1,244 @@
+#!/usr/bin/env bash
+# Determinism across architectures: cross-builds `ricochet` for each leg with Debian 12's cross gcc,
+# runs it (i386 natively, aarch64 and s390x under qemu-user) and compares, byte for byte, with a
+# native x86-64 gcc -O0 build:
+#   - `ricochet replay --hashes replays` (one "HASH PATH" line per log), and
+#   - per log, `ricochet run LOG` (its standard output and exit status).
+# A difference fails the leg and names the log, the two builds and the first differing lines.
+#
+#   .ci/cross.sh [LEG...]       legs: i386 aarch64 s390x (default: all three)
+#   .ci/cross.sh --control      control: aarch64 built with -DRICOCHET_CONTROL_CONTRACT=ON (FMA
+#                               contraction allowed); passes only if the corpus tells it apart
+#
+# Installs what a leg is missing (as root, apt-get, non-interactive; `dpkg --add-architecture` for the
+# multiarch dev packages; libssl-dev, for the fuzz campaign's SHA-1, is unpacked aside and linked
+# statically, see openssl_sysroot); a leg whose packages cannot be installed fails with a message,
+# never skips. Leg builds are -O2 (CROSS_OPT), where aarch64 and s390x gcc would contract into FMA.
+# Environment: JOBS (default 2), CROSS_PREFIX (leg build folders, default build-cross-),
+# DET_PREFIX (the native reference is ${DET_PREFIX}gcc-O0, configured exactly as .ci/determinism.sh
+# does, so that the two scripts share it; default build-det-), CROSS_OPT (leg flags, default -O2).
+set -uo pipefail
+cd "$(dirname "$0")/.."
+jobs=${JOBS:-2}
+prefix=${CROSS_PREFIX:-build-cross-}
+ref_dir=${DET_PREFIX:-build-det-}gcc-O0
+opt=${CROSS_OPT:--O2}
+export DEBIAN_FRONTEND=noninteractive
+
+control=0
+legs=()
+for a in "$@"; do
+  case "$a" in
+    --control) control=1 ;;
+    i386|aarch64|s390x) legs+=("$a") ;;
+    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
+    *) echo "cross.sh: unknown leg '$a' (legs: i386 aarch64 s390x, or --control)" >&2; exit 2 ;;
+  esac
+done
+[ ${#legs[@]} -gt 0 ] || [ $control = 1 ] || legs=(i386 aarch64 s390x)
+
+now() { date +%s; }
+say() { echo "cross: $*" >&2; }
+
+# --- packages -------------------------------------------------------------------------------------
+updated=0
+apt_update() {
+  [ $updated = 1 ] && return 0
+  apt-get update -q >/dev/null || { say "apt-get update failed"; return 1; }
+  updated=1
+}
+missing() {  # the packages among "$@" that are not installed
+  local p
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || echo "$p"
+  done
+}
+ensure() {  # ensure PKG...: install the missing ones, or say which could not be
+  local need
+  need=$(missing "$@")
+  [ -z "$need" ] && return 0
+  if [ "$(id -u)" != 0 ]; then
+    say "missing packages and not root: $(echo $need)"; return 1
+  fi
+  apt_update || return 1
+  # shellcheck disable=SC2086
+  if ! apt-get install -y -q --no-install-recommends $need >/tmp/cross-apt.$$.log 2>&1; then
+    tail -n 20 /tmp/cross-apt.$$.log >&2
+    say "could not install: $(echo $need)"
+    rm -f /tmp/cross-apt.$$.log
+    return 1
+  fi
+  rm -f /tmp/cross-apt.$$.log
+}
+add_arch() {
+  dpkg --print-foreign-architectures | grep -qx "$1" && return 0
+  [ "$(id -u)" = 0 ] || { say "dpkg architecture $1 not enabled and not root"; return 1; }
+  dpkg --add-architecture "$1" && updated=0
+}
+
+# leg -> Debian architecture, GNU triplet (compilers), multiarch triplet (libraries), runner.
+# qemu without -L: the target's libc6:ARCH (installed with the dev packages) loads from /lib and
+# /usr/lib/<multiarch> as on the target. `-L /usr/<triplet>` took the cross toolchain's older
+# ld.so (libc6-s390x-cross 2.36-8) with the multiarch libc.so.6 (2.36-9+deb12u14) that the host's
+# ld.so.cache names, and every s390x program, a C hello world too, died of "stack smashing detected".
+leg_info() {
+  case "$1" in
+    i386)    deb=i386;  gnu=i686-linux-gnu;    multi=i386-linux-gnu;    runner=() ;;
+    aarch64) deb=arm64; gnu=aarch64-linux-gnu; multi=aarch64-linux-gnu; runner=(qemu-aarch64) ;;
+    s390x)   deb=s390x; gnu=s390x-linux-gnu;   multi=s390x-linux-gnu;   runner=(qemu-s390x) ;;
+  esac
+}
+
+# openssl_sysroot: libssl-dev:$deb unpacked into a folder of its own, linked statically. The fuzz
+# campaign that `ricochet` links names inputs by SHA-1 through libcrypto, but libssl-dev and libssl3 are
+# Multi-Arch: same, so :$deb must have exactly the host's version, and Debian's archives do not keep
+# them in step (bookworm-security has no s390x; a host not upgraded has an older one). Unpacking the
+# target's package aside needs no version match and changes nothing on the host.
+openssl_sysroot() {
+  ssl_root=$PWD/${prefix}openssl-$deb
+  [ -f "$ssl_root/usr/lib/$multi/libcrypto.a" ] && return 0
+  apt_update || return 1
+  rm -rf "$ssl_root"; mkdir -p "$ssl_root/deb"
+  if ! (cd "$ssl_root/deb" && apt-get download -q "libssl-dev:$deb" >/dev/null 2>&1) ||
+     ! dpkg -x "$ssl_root"/deb/libssl-dev_*.deb "$ssl_root"; then
+    say "could not download and unpack libssl-dev:$deb"; return 1
+  fi
+}
+
+# --- runs -----------------------------------------------------------------------------------------
+# capture DIR RUNNER...: the hashes and every log's `ricochet run` output into DIR.
+capture() {
+  local dir=$1; shift
+  local log name rc
+  mkdir -p "$dir/run"
+  # Pass/fail of the replay is not the question here (the replay tests ask it); the bytes are.
+  "$@" replay --hashes replays >"$dir/hashes.txt" 2>"$dir/hashes.err" </dev/null
+  echo "# exit $?" >>"$dir/hashes.txt"
+  while IFS= read -r log; do
+    name=${log//\//__}
+    "$@" run "$log" >"$dir/run/$name" 2>/dev/null </dev/null
+    rc=$?
+    echo "# exit $rc" >>"$dir/run/$name"
+  done < <(find replays -name '*.scene' | LC_ALL=C sort)
+}
+
+# compare REFDIR LEGDIR REFNAME LEGNAME: 0 if identical; otherwise name each differing output.
+compare() {
+  local a=$1 b=$2 an=$3 bn=$4 f status=0 nlogs
+  if ! cmp -s "$a/hashes.txt" "$b/hashes.txt"; then
+    status=1
+    echo "DIFFERS replay --hashes: $an vs $bn; first differing lines:"
+    diff "$a/hashes.txt" "$b/hashes.txt" | head -n 6
+  fi
+  for f in "$a"/run/*; do
+    f=${f##*/}
+    if [ ! -f "$b/run/$f" ]; then
+      status=1; echo "MISSING in $bn: run ${f//__//}"; continue
+    fi
+    if ! cmp -s "$a/run/$f" "$b/run/$f"; then
+      status=1
+      echo "DIFFERS run ${f//__//}: $an vs $bn; first differing lines:"
+      diff "$a/run/$f" "$b/run/$f" | head -n 4
+    fi
+  done
+  nlogs=$(ls "$a/run" | wc -l)
+  [ $status = 0 ] && say "$bn: replay --hashes and $nlogs run outputs identical to $an"
+  return $status
+}
+
+# --- the native reference -------------------------------------------------------------------------
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+
+build_reference() {
+  ensure cmake ninja-build g++-12 pkg-config libfmt-dev libgmp-dev libxxhash-dev libssl-dev libcli11-dev || return 1
+  if [ ! -f "$ref_dir/CMakeCache.txt" ]; then
+    CC=gcc-12 CXX=g++-12 cmake -S . -B "$ref_dir" -G Ninja -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O0" \
+      -DRICOCHET_TESTS=OFF -DRICOCHET_BENCH=OFF -DRICOCHET_FUZZ=OFF >/dev/null || return 1
+  fi
+  cmake --build "$ref_dir" -j "$jobs" --target ricochet >/dev/null || return 1
+  capture "$out/native" "$ref_dir/cli/ricochet"
+}
+
+# --- one leg --------------------------------------------------------------------------------------
+# leg LEG [BUILDDIR EXTRA_CMAKE_ARGS...]
+leg() {
+  local name=$1 dir=${2:-$prefix$1}; shift; [ $# -gt 0 ] && shift
+  local deb gnu multi runner ssl_root t0 t1 t2 t3
+  leg_info "$name"
+  t0=$(now)
+  local pkgs=(cmake ninja-build pkg-config libcli11-dev
+              "libfmt-dev:$deb" "libgmp-dev:$deb" "libxxhash-dev:$deb")
+  case "$name" in
+    i386) pkgs+=(gcc-i686-linux-gnu g++-i686-linux-gnu) ;;
+    aarch64) pkgs+=(crossbuild-essential-arm64 qemu-user) ;;
+    s390x) pkgs+=(crossbuild-essential-s390x qemu-user) ;;
+  esac
+  if ! add_arch "$deb" || ! ensure "${pkgs[@]}" || ! openssl_sysroot; then
+    echo "FAIL $name: the cross toolchain or the :$deb dev packages could not be installed (see above)"
+    return 1
+  fi
+  t1=$(now)
+  if [ ! -f "$dir/CMakeCache.txt" ]; then
+    if ! cmake -S . -B "$dir" -G Ninja -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/toolchains/$name.cmake" \
+         -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="$opt -isystem $ssl_root/usr/include/$multi" \
+         -DOPENSSL_INCLUDE_DIR="$ssl_root/usr/include" -DOPENSSL_CRYPTO_LIBRARY="$ssl_root/usr/lib/$multi/libcrypto.a" \
+         -DRICOCHET_TESTS=OFF -DRICOCHET_BENCH=OFF -DRICOCHET_FUZZ=OFF "$@" >"$out/$name.configure.log" 2>&1; then
+      cat "$out/$name.configure.log"; rm -rf "$dir"
+      echo "FAIL $name: configure failed"; return 1
+    fi
+  fi
+  if ! cmake --build "$dir" -j "$jobs" --target ricochet >"$out/$name.build.log" 2>&1; then
+    tail -n 40 "$out/$name.build.log"
+    echo "FAIL $name: build failed"; return 1
+  fi
+  t2=$(now)
+  local bin=("${runner[@]}" "$dir/cli/ricochet")
+  if ! "${bin[@]}" --version >/dev/null 2>&1; then
+    "${bin[@]}" --version
+    echo "FAIL $name: the $name binary does not start (${runner[*]:-natively})"; return 1
+  fi
+  capture "$out/$name" "${bin[@]}"
+  t3=$(now)
+  say "$name: packages $((t1 - t0)) s, configure+build $((t2 - t1)) s, runs $((t3 - t2)) s, total $((t3 - t0)) s"
+  leg_seconds=$((t3 - t0))
+}
+
+status=0
+t_ref=$(now)
+say "building the native reference (gcc-12 -O0, $ref_dir)"
+if ! build_reference; then echo "FAIL native reference: build or run failed"; exit 1; fi
+say "native reference: $(( $(now) - t_ref )) s"
+
+summary=()
+for l in "${legs[@]}"; do
+  say "leg $l"
+  leg_seconds=0
+  if leg "$l" && compare "$out/native" "$out/$l" "native-gcc-O0" "$l-gcc$opt"; then
+    summary+=("$l: identical (${leg_seconds} s)")
+  else
+    summary+=("$l: FAILED"); status=1
+  fi
+done
+
+if [ $control = 1 ]; then
+  # The control: a build that may contract a*b+c into FMA (aarch64 has it, gcc -O2 uses it) must
+  # give other bits somewhere in the corpus, or the corpus could not see the flag go missing.
+  say "control: aarch64 with -DRICOCHET_CONTROL_CONTRACT=ON"
+  leg_seconds=0
+  if leg aarch64 "${prefix}aarch64-control" -DRICOCHET_CONTROL_CONTRACT=ON; then
+    if compare "$out/native" "$out/aarch64" "native-gcc-O0" "aarch64-contract" >"$out/control.txt"; then
+      summary+=("control: FAILED, the corpus does not detect FMA contraction")
+      status=1
+    else
+      n=$(grep -c '^DIFFERS' "$out/control.txt")
+      head -n 3 "$out/control.txt"
+      summary+=("control: contraction detected, $n outputs differ (${leg_seconds} s)")
+    fi
+  else
+    summary+=("control: FAILED to build or run"); status=1
+  fi
+fi
+
+for s in "${summary[@]}"; do echo "cross: $s"; done
+exit $status
