@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <string>
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -16,6 +17,23 @@
 
 namespace ricochet::exact_kernel::num {
 namespace {
+
+TEST(ExactArith, SixtyFourBitIntegersCrossIntoGmpWhole) {
+    // Past 32 bits, where a 32-bit long (i386) would cut them; both signs and INT64_MIN.
+    for (const std::int64_t v : {std::int64_t{0}, std::int64_t{1} << 53 | 1, -(std::int64_t{1} << 62) - 7,
+                                 INT64_MIN, INT64_MAX}) {
+        mpz_class z;
+        set_int64(z.get_mpz_t(), v);
+        EXPECT_EQ(z.get_str(), std::to_string(v));
+    }
+    // The low 64 bits of |z|, for a 57-bit quotient and one past 64 bits.
+    const mpz_class q("144115188075855875");  // 2^57 + 3
+    EXPECT_EQ(low_uint64(q.get_mpz_t()), (std::uint64_t{1} << 57) + 3);
+    const mpz_class big = (mpz_class(1) << 70) + 5;
+    EXPECT_EQ(low_uint64(big.get_mpz_t()), 5u);
+    EXPECT_EQ(low_uint64(mpz_class(-9).get_mpz_t()), 9u);
+    EXPECT_EQ(low_uint64(mpz_class(0).get_mpz_t()), 0u);
+}
 
 std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
 
