@@ -6,6 +6,7 @@
 #include "ricochet/checks.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/step_trace.hpp"
+#include "mutant_kernel.hpp"
 
 namespace ricochet {
 namespace {
@@ -108,11 +109,9 @@ TEST(Checks, AccuracyHoldsEachLegToTheRestOfTheFrame) {
     s.balls = {{{0.5, 1}, {0.5, -2}}};
     EXPECT_FALSE(first_failure(s, KernelId::robust, Check::accuracy));
     EXPECT_FALSE(first_failure(s, KernelId::lecture_double, Check::accuracy));
-    KernelOps ops = kernel_ops(KernelId::robust);
-    ops.name = "whole-frame-after-bounce-test";
-    ops.step_ball = &whole_frame_after_bounce;
-    const std::optional<KernelId> bad = register_kernel(ops);
-    ASSERT_TRUE(bad);
+    mutant::Mutation m;
+    m.ops.step_ball = &whole_frame_after_bounce;
+    const std::optional<KernelId> bad = mutant::id();
     // Its t_i, B_i and v′ are robust's: only the second leg's length is wrong.
     const auto f = first_failure(s, *bad, Check::accuracy);
     ASSERT_TRUE(f);
@@ -121,15 +120,19 @@ TEST(Checks, AccuracyHoldsEachLegToTheRestOfTheFrame) {
     EXPECT_NE(f->message.find("is not the rest of the frame"), std::string::npos) << f->message;
 }
 
-/// robust, except that a frame with a hit ends going straight back (v' = −v): the bug of mutant 28.
-FrameStatus straight_back(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
-                          StepScratch& scratch, const WallIndex* index) {
+/// robust, except that a frame with a hit ends moving out(v, the first wall hit), v the frame's velocity.
+template <Vec2 (*out)(Vec2 v, const Wall& hit)>
+FrameStatus robust_leaving(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
+                           StepScratch& scratch, const WallIndex* index) {
     const Vec2 v = ball.vel;
     const std::size_t before = hits.size();
     const FrameStatus status = kernel_ops(KernelId::robust).step_ball(ball, memory, walls, hits, scratch, index);
-    if (hits.size() > before) ball.vel = -v;
+    if (hits.size() > before) ball.vel = out(v, walls[hits[before].wall]);
     return status;
 }
+
+/// Going straight back (v' = −v): the bug of mutant 28.
+Vec2 straight_back(Vec2 v, const Wall&) { return -v; }
 
 TEST(Checks, AccuracyHoldsTheBounceToTheExactReflection) {
     // The ball ends its first frame exactly on the wall y = 0 (t_i = 1), so the frame's end state carries v'.
@@ -139,11 +142,9 @@ TEST(Checks, AccuracyHoldsTheBounceToTheExactReflection) {
     s.balls = {{{0.5, 1}, {0.5, -1}}};
     EXPECT_FALSE(first_failure(s, KernelId::robust, Check::accuracy));
     EXPECT_FALSE(first_failure(s, KernelId::lecture_double, Check::accuracy));
-    KernelOps ops = kernel_ops(KernelId::robust);
-    ops.name = "straight-back-test";
-    ops.step_ball = &straight_back;
-    const std::optional<KernelId> bad = register_kernel(ops);
-    ASSERT_TRUE(bad);
+    mutant::Mutation m;
+    m.ops.step_ball = &robust_leaving<straight_back>;
+    const std::optional<KernelId> bad = mutant::id();
     // Same speed, same side: speed and bounce-side hold; only the bounce's direction is wrong.
     EXPECT_FALSE(first_failure(s, *bad, Check::speed));
     EXPECT_FALSE(first_failure(s, *bad, Check::bounce_side));
@@ -157,16 +158,8 @@ TEST(Checks, AccuracyHoldsTheBounceToTheExactReflection) {
     EXPECT_FALSE(first_failure(corner, *bad, Check::accuracy));
 }
 
-/// robust, except that a frame with a hit ends reflected about the wall hit alone (no corner rule).
-FrameStatus hit_wall_only(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
-                          StepScratch& scratch, const WallIndex* index) {
-    const Vec2 v = ball.vel;
-    const std::size_t before = hits.size();
-    const KernelOps& robust = kernel_ops(KernelId::robust);
-    const FrameStatus status = robust.step_ball(ball, memory, walls, hits, scratch, index);
-    if (hits.size() > before) ball.vel = robust.reflect(v, walls[hits[before].wall]);
-    return status;
-}
+/// Reflected about the wall hit alone, no corner rule.
+Vec2 hit_wall_only(Vec2 v, const Wall& hit) { return kernel_ops(KernelId::robust).reflect(v, hit); }
 
 TEST(Checks, AccuracyHoldsACornerToTheCornerRule) {
     // The frame ends exactly at (1, 0), the corner of the floor y = 0 (wall 0, hit) and the wall x = 1 met
@@ -181,11 +174,9 @@ TEST(Checks, AccuracyHoldsACornerToTheCornerRule) {
     const auto lecture = first_failure(s, KernelId::lecture_double, Check::accuracy);
     ASSERT_TRUE(lecture);
     EXPECT_NE(lecture->message.find("from the corner rule's v'"), std::string::npos) << lecture->message;
-    KernelOps ops = kernel_ops(KernelId::robust);
-    ops.name = "hit-wall-only-test";
-    ops.step_ball = &hit_wall_only;
-    const std::optional<KernelId> bad = register_kernel(ops);
-    ASSERT_TRUE(bad);
+    mutant::Mutation m;
+    m.ops.step_ball = &robust_leaving<hit_wall_only>;
+    const std::optional<KernelId> bad = mutant::id();
     const auto f = first_failure(s, *bad, Check::accuracy);
     ASSERT_TRUE(f);
     EXPECT_EQ(f->frame, 1);
