@@ -14,6 +14,8 @@
 namespace ricochet::checks {
 namespace {
 
+bool finite(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
 class Accuracy final : public FrameCheck {
 public:
     bool needs_traces() const override { return true; }
@@ -49,9 +51,7 @@ private:
             const Event& hit = *hits[k++];
             // A leg with a non-finite end is oracle's failure; there is no exact crossing to compare with (nor
             // an exact side of its start to keep).
-            if (!std::isfinite(leg.from.x) || !std::isfinite(leg.from.y) || !std::isfinite(leg.to.x) ||
-                !std::isfinite(leg.to.y))
-                break;
+            if (!finite(leg.from) || !finite(leg.to)) break;
             const Wall* keep_now = kept;
             const int keep_now_from = kept_from;
             if (hit.index < scene_.walls.size()) {
@@ -105,9 +105,7 @@ private:
         std::size_t k = 0;
         for (std::size_t l = 0; l < trace.legs.size(); ++l) {
             const TracedLeg& leg = trace.legs[l];
-            const bool finite = std::isfinite(leg.from.x) && std::isfinite(leg.from.y) && std::isfinite(leg.to.x) &&
-                                std::isfinite(leg.to.y) && std::isfinite(leg.vel.x) && std::isfinite(leg.vel.y);
-            if (!finite) break;  // oracle's failure: not a segment
+            if (!finite(leg.from) || !finite(leg.to) || !finite(leg.vel)) break;  // oracle's failure: not a segment
             if (!(leg.from == start))
                 return failure(Check::accuracy, f.index, i,
                                fmt::format("leg {} starts at {}, not at {} where the {} ended", l, leg.from, start,
