@@ -38,6 +38,25 @@ TEST(SceneLogDiagnostics, ValidUtf8IsKeptEverythingElseEscaped) {
               "t.scene:2:1: error: unknown directive 'a\\xc2\\x9bb\\xe2\\x80\\xaec\\xef\\xbb\\xbfd\\xe2\\x80\\xa8'");
 }
 
+TEST(SceneLogDiagnostics, EachRangeEndsWhereRfc3629AndTheHiddenListSay) {
+    // Three-byte forms: E0 needs A0–BF next (E0 80 80 would be an overlong U+0000), U+0800 is the first;
+    // the third byte must be a continuation (41 is below 80, C0 above BF). A byte that starts no sequence
+    // stands alone, so the rest of the cut sequence is judged byte by byte.
+    EXPECT_EQ(unknown("a\xe0\x80\x80" "b\xe0\xa0\x80" "c\xe1\x80\x41" "d\xe1\x80\xc0"),
+              "t.scene:2:1: error: unknown directive 'a\\xe0\\x80\\x80b\xe0\xa0\x80"
+              "c\\xe1\\x80Ad\\xe1\\x80\\xc0'");
+    // The hidden characters at each end of their ranges, and the characters just outside them kept:
+    // U+0080 and U+009F (C1) hidden, U+00A0 kept; U+200E, U+200F hidden; U+2027 kept, U+2028, U+2029
+    // hidden; U+202A, U+202E hidden, U+202F kept; U+2065 kept, U+2066, U+2069 hidden, U+206A kept.
+    EXPECT_EQ(unknown("\xc2\x80" "\xc2\x9f" "\xc2\xa0" "\xe2\x80\x8e" "\xe2\x80\x8f" "\xe2\x80\xa7" "\xe2\x80\xa9"),
+              "t.scene:2:1: error: unknown directive '\\xc2\\x80\\xc2\\x9f\xc2\xa0\\xe2\\x80\\x8e\\xe2\\x80\\x8f"
+              "\xe2\x80\xa7\\xe2\\x80\\xa9'");
+    EXPECT_EQ(unknown("\xe2\x80\xaa" "\xe2\x80\xae" "\xe2\x80\xaf" "\xe2\x81\xa5" "\xe2\x81\xa6" "\xe2\x81\xa9"
+                      "\xe2\x81\xaa"),
+              "t.scene:2:1: error: unknown directive '\\xe2\\x80\\xaa\\xe2\\x80\\xae\xe2\x80\xaf\xe2\x81\xa5"
+              "\\xe2\\x81\\xa6\\xe2\\x81\\xa9\xe2\x81\xaa'");
+}
+
 TEST(SceneLogDiagnostics, LongTokensAreCutAtACharacter) {
     const std::string x64(64, 'x');
     EXPECT_EQ(unknown(x64), "t.scene:2:1: error: unknown directive '" + x64 + "'");

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <random>
 #include <variant>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -261,19 +262,35 @@ TEST_F(TempDir, AtomicWriteRemovesOnlyTheStaleTemporariesOfItsOwnFile) {
     const std::string other = ".b.scene.tmp.2147483647.AbC123";                    // another log's
     const std::string unnamed = ".a.scene.tmp.AbC123";                             // no PID: whose is unknown
     const std::string odd = ".a.scene.tmp.2147483647.AbC12";                      // not mkstemp's six letters
+    // Names that only look like a dead writer's: an empty PID, a PID that is not a number, or is followed by
+    // more than digits, or is 0; letters outside [0-9a-zA-Z] on each side of the ranges mkstemp draws from.
+    const std::vector<std::string> lookalikes = {
+        ".a.scene.tmp..AbC123",           ".a.scene.tmp.x2147483647.AbC123", ".a.scene.tmp.2147483647x.AbC123",
+        ".a.scene.tmp.0.AbC123",          ".a.scene.tmp.2147483647.AbC-23",  ".a.scene.tmp.2147483647.AbC:23",
+        ".a.scene.tmp.2147483647.AbC_23", ".a.scene.tmp.2147483647.AbC{23",
+    };
+    // This process's own (a writer at work on another thread), and a folder and a link named like a dead one's.
+    const std::string own = fmt::format(".a.scene.tmp.{}.AbC123", ::getpid());
+    const std::string folder = ".a.scene.tmp.2147483645.AbC123", link = ".a.scene.tmp.2147483644.AbC123";
     touch(dead, true);
     touch(live, true);
     touch(young, false);
     touch(other, true);
     touch(unnamed, true);
     touch(odd, true);
+    for (const std::string& name : lookalikes) touch(name, true);
+    touch(own, true);
+    std::filesystem::create_directory(dir_ / folder);
+    std::filesystem::create_symlink(dir_ / live, dir_ / link);
     std::string error;
     ASSERT_TRUE(write_file_atomically(dir_ / "a.scene", "text\n", &error)) << error;
     EXPECT_FALSE(std::filesystem::exists(dir_ / dead));
-    for (const std::string& kept : {live, young, other, unnamed, odd})
-        EXPECT_TRUE(std::filesystem::exists(dir_ / kept)) << kept;
+    std::vector<std::string> kept = {live, young, other, unnamed, odd, own, folder, link};
+    kept.insert(kept.end(), lookalikes.begin(), lookalikes.end());
+    for (const std::string& name : kept)
+        EXPECT_TRUE(std::filesystem::symlink_status(dir_ / name).type() != std::filesystem::file_type::not_found) << name;
     EXPECT_EQ(slurp(dir_ / "a.scene"), "text\n");
-    EXPECT_EQ(count_files(), 6u);
+    EXPECT_EQ(count_files(), kept.size() + 1);
 }
 
 TEST_F(TempDir, TheSameCaseIsNeverSavedTwice) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cfloat>
+#include <vector>
 
 #include "ricochet/truth.hpp"
 
@@ -118,6 +119,59 @@ TEST(TruthBounce, AZeroLengthWallOrABallAtRestIsJudgedWithoutDividing) {
     // v = (1, −1) off the floor y = 0 reflects to (1, 1) exactly; (1, 1 + 2^-40) is far outside 2·2^-48·√2.
     EXPECT_TRUE(truth::bounce_accuracy({1, -1}, Wall{{0, 0}, {1, 0}}, {1, 1}, 0x1p-48, 0).within);
     EXPECT_FALSE(truth::bounce_accuracy({1, -1}, Wall{{0, 0}, {1, 0}}, {1, 1 + 0x1p-40}, 0x1p-48, 0).within);
+}
+
+TEST(TruthCorner, AZeroLengthWallOrAnUnclearSideIsNotConditioned) {
+    // The hit wall p0 → p1 = (0, 0) → (1, 0) has n = (e_y, −e_x) = (0, −1); v = (0, −1) meets it with
+    // n·v = 1, clear (4·1 ≥ |v|∞·|n|∞ = 1), and R = v − 2(n·v)/(n·n)·n = (0, 1).
+    const Wall hit{{0, 0}, {1, 0}};
+    const Vec2 v{0, -1};
+    const std::vector<Wall> none;
+    const std::vector<int> no_sides;
+    EXPECT_TRUE(truth::corner_accuracy(v, hit, 1, none, no_sides, {0, 1}, 0x1p-52, 0).conditioned);
+    // A hit wall of no length has no normal.
+    EXPECT_FALSE(truth::corner_accuracy(v, Wall{{0, 0}, {0, 0}}, 1, none, no_sides, {0, 1}, 0x1p-52, 0).conditioned);
+    // Nor has another wall of no length at the corner.
+    const std::vector<Wall> point = {Wall{{0, 0}, {0, 0}}};
+    const std::vector<int> one_side = {1};
+    EXPECT_FALSE(truth::corner_accuracy(v, hit, 1, point, one_side, {0, 1}, 0x1p-52, 0).conditioned);
+    // A wall (0, 0) → (0, 1), n = (1, 0), that R = (0, 1) runs along: n·R = 0, no clear side.
+    const std::vector<Wall> along = {Wall{{0, 0}, {0, 1}}};
+    EXPECT_FALSE(truth::corner_accuracy(v, hit, 1, along, one_side, {0, 1}, 0x1p-52, 0).conditioned);
+}
+
+TEST(TruthCorner, AWallCrossedAgainAfterALaterReflectionSendsTheBallStraightBack) {
+    // Hit: (0, 0) → (1, 0), n = (0, −1), v = (0, −1): R = (0, 1) (the test above).
+    // Wall 0: (0, 0) → (−1, −2), n0 = (−2, 1), met from side +1: n0·R = 1 > 0, not crossed (clear: 4 ≥ 1·2).
+    // Wall 1: (0, 0) → (−1, −3), n1 = (−3, 1), met from side −1: n1·R = 1 crosses it (clear: 4 ≥ 1·3), so
+    //   R = (0, 1) − 2·1/10·(−3, 1) = (3/5, 4/5), the second reflection.
+    // Then n0·R = −6/5 + 4/5 = −2/5 crosses wall 0 (clear: 4·2/5 ≥ 4/5·2), n1·R = −9/5 + 4/5 = −1 does not,
+    // and n·R = −4/5 is clear: the rule goes straight back, v′ = −v = (0, 1).
+    const Wall hit{{0, 0}, {1, 0}};
+    const std::vector<Wall> others = {Wall{{0, 0}, {-1, -2}}, Wall{{0, 0}, {-1, -3}}};
+    const std::vector<int> from = {1, -1};
+    const auto back = truth::corner_accuracy({0, -1}, hit, 1, others, from, {0, 1}, 0x1p-52, 0);
+    EXPECT_TRUE(back.conditioned);
+    EXPECT_TRUE(back.within);
+    EXPECT_EQ(back.error, 0.0);
+    // The two reflections' (3/5, 4/5), however close, is not straight back: −v bit for bit or nothing.
+    const auto reflected = truth::corner_accuracy({0, -1}, hit, 1, others, from, {0.6, 0.8}, 0x1p-52, 0);
+    EXPECT_TRUE(reflected.conditioned);
+    EXPECT_FALSE(reflected.within);
+    EXPECT_EQ(reflected.error, 2.0);
+}
+
+TEST(TruthLegEnd, ABallAtRestAtTheOriginIsWithinWithErrorZero) {
+    // M = 0, so ε·M = 0: the error is reported as 0 rather than 0/0, and to = from + R·v exactly.
+    const std::vector<double> ts = {0.5};
+    const auto r = truth::leg_end_accuracy({0, 0}, {0, 0}, ts, {0, 0});
+    EXPECT_TRUE(r.conditioned);
+    EXPECT_TRUE(r.within);
+    EXPECT_EQ(r.error, 0.0);
+    // The 2^−1072 of underflow allowed, and no more: 2^−1074 is within, 2^−1071 is not (M = |to|∞, so
+    // the (2k + 3)·ε·M = 5·2^−53·|to|∞ part is far below 2^−1074).
+    EXPECT_TRUE(truth::leg_end_accuracy({0, 0}, {0, 0}, ts, {0x1p-1074, 0}).within);
+    EXPECT_FALSE(truth::leg_end_accuracy({0, 0}, {0, 0}, ts, {0x1p-1071, 0}).within);
 }
 
 }  // namespace

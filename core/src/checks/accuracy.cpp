@@ -118,7 +118,9 @@ private:
                                            l, leg.from, leg.to, leg.vel, ts.size(), r.error, leg.from,
                                            2 * ts.size() + 3));
             if (leg.blocked) continue;
-            // A hit taken (it printed the k-th hit): the next leg starts at its printed B_i.
+            // A hit taken (it printed the k-th hit): the next leg starts at its printed B_i. (k < hits.size()
+            // and the leg's wall is hits[k]'s for every kernel the tests run: a kernel that hits without printing
+            // it, or prints another wall, fails `oracle` and `event-order`; here the walk just stops.)
             if (!leg.hit || k >= hits.size() || hits[k]->index != *leg.hit) break;
             start = hits[k++]->pos;
             ts.push_back(leg.hit_t);
@@ -141,6 +143,9 @@ private:
             from.push_back(truth::side(leg.from, c));
             if (from.back() == 0) return std::nullopt;
         }
+        // A leg that starts on the line of the wall it hits comes from no side, and the corner rule does not say
+        // where it goes: not judged. (No test has met one: robust's and exact's sweeps call such a leg `leaving`,
+        // never a hit; a lecture kernel would need a leg from exactly on the line to a corner.)
         if (hit_from == 0) return std::nullopt;
         const truth::HitAccuracy r =
             truth::corner_accuracy(leg.vel, w, hit_from, others, from, v_out, bound_.rel, bound_.abs);

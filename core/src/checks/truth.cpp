@@ -253,6 +253,7 @@ HitAccuracy corner_accuracy(Vec2 v, const Wall& hit, int hit_from, std::span<con
     // err ≤ 3m·(2·rel·|v| + abs)  ⇔  over = err − 3m·abs ≤ 0, or over² ≤ 36m²·rel²·(v·v).
     const mpq_class over = err - 3 * m * Q(abs_bound);
     r.within = sgn(over) <= 0 || over * over <= 36 * m * m * Q(rel) * Q(rel) * vv;
+    // vv ≠ 0 here: for v = 0 every side is 0, which is not hit_from (±1), so the rule went straight back above.
     r.error = sgn(vv) == 0 ? 0.0 : err.get_d() / std::sqrt(vv.get_d());
     return r;
 }
