@@ -41,8 +41,7 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 std::optional<double> to_double(std::string_view s, std::string& why) {
     bool negative = false;
     std::string_view body = s;
-    // (s is a token, never empty: the empty() test is a guard.)
-    if (!body.empty() && body.front() == '-') {
+    if (body.starts_with('-')) {
         negative = true;
         body.remove_prefix(1);
     }
@@ -124,7 +123,7 @@ private:
         }
         if (tokens_.empty()) return;
         // Just past the line's last character: the CR of a CRLF line end is no character of the line.
-        const bool crlf_end = !line.empty() && line.back() == '\r' && line.size() == full_size;
+        const bool crlf_end = line.ends_with('\r') && line.size() == full_size;
         end_col_ = static_cast<int>(line.size() - (crlf_end ? 1 : 0)) + 1;
         directive();
     }

@@ -35,9 +35,10 @@ std::size_t utf8_sequence(std::string_view text, std::size_t i, char32_t& cp) {
 }
 
 /// Characters a terminal does not show as themselves: C1 controls, and the invisible marks, separators and
-/// bidirectional controls that would hide or reorder the text around them ("Trojan Source").
+/// bidirectional controls that would hide or reorder the text around them ("Trojan Source"). cp is the code
+/// point of a multi-byte sequence, so cp ≥ 0x80, and the C1 controls U+0080–U+009F are those up to 0x9F.
 bool is_hidden(char32_t cp) {
-    return (cp >= 0x80 && cp <= 0x9F) || cp == 0x200E || cp == 0x200F || cp == 0x2028 || cp == 0x2029 ||
+    return cp <= 0x9F || cp == 0x200E || cp == 0x200F || cp == 0x2028 || cp == 0x2029 ||
            (cp >= 0x202A && cp <= 0x202E) || (cp >= 0x2066 && cp <= 0x2069) || cp == 0xFEFF;
 }
 

@@ -70,10 +70,25 @@ TEST(Checks, AccuracyFailsForFloatsRoundingAndHoldsForRobust) {
     EXPECT_EQ(g->message.find("exact crossing"), std::string::npos) << g->message;
 }
 
-/// robust's sweep and reflection against wall 0 alone, except that after a bounce the ball moves a whole
-/// frame's v′ instead of the rest, (1 − t_i)·v′. Traced as a kernel traces its legs.
-FrameStatus whole_frame_after_bounce(Ball& ball, BallMemory&, std::span<const Wall> walls, std::vector<HitEvent>& hits,
-                                     StepScratch& scratch, const WallIndex*) {
+/// A leg after a bounce at B_i = hit (t_i = t) leaving with v′ = v: where a wrong kernel puts it.
+struct LegAfter {
+    Vec2 from, to, vel;
+};
+/// A whole frame's v′ instead of the rest, (1 − t_i)·v′.
+LegAfter whole_frame(Vec2 hit, Vec2 v, double) { return {hit, hit + v, v}; }
+/// The rest of the frame, but from a point a quarter above B_i.
+LegAfter from_elsewhere(Vec2 hit, Vec2 v, double t) {
+    const Vec2 from = hit + Vec2{0, 0.25};
+    return {from, from + (1 - t) * v, v};
+}
+/// The rest of the frame, traced with a velocity that is not a number.
+LegAfter nan_velocity(Vec2 hit, Vec2 v, double t) { return {hit, hit + (1 - t) * v, {std::nan(""), v.y}}; }
+
+/// robust's sweep and reflection against wall 0 alone, the leg after a bounce placed by after(B_i, v′, t_i),
+/// the hit printed if print_hit. Traced as a kernel traces its legs.
+template <LegAfter (*after)(Vec2 hit, Vec2 v, double t), bool print_hit = true>
+FrameStatus bounce_then(Ball& ball, BallMemory&, std::span<const Wall> walls, std::vector<HitEvent>& hits,
+                        StepScratch& scratch, const WallIndex*) {
     const KernelOps& robust = kernel_ops(KernelId::robust);
     const auto leg = [&](Vec2 from, Vec2 to, Vec2 vel) -> TracedLeg* {
         if (scratch.trace == nullptr) return nullptr;
@@ -94,10 +109,10 @@ FrameStatus whole_frame_after_bounce(Ball& ball, BallMemory&, std::span<const Wa
         first->hit_t = s.t;
         ++scratch.trace->reflections;
     }
-    hits.push_back({0, s.t, s.point});
-    const Vec2 v = robust.reflect(ball.vel, walls[0]);
-    leg(s.point, s.point + v, v);
-    ball = {s.point + v, v};
+    if (print_hit) hits.push_back({0, s.t, s.point});
+    const LegAfter next = after(s.point, robust.reflect(ball.vel, walls[0]), s.t);
+    leg(next.from, next.to, next.vel);
+    ball = {next.to, next.vel};
     return FrameStatus::ok;
 }
 
@@ -110,7 +125,7 @@ TEST(Checks, AccuracyHoldsEachLegToTheRestOfTheFrame) {
     EXPECT_FALSE(first_failure(s, KernelId::robust, Check::accuracy));
     EXPECT_FALSE(first_failure(s, KernelId::lecture_double, Check::accuracy));
     mutant::Mutation m;
-    m.ops.step_ball = &whole_frame_after_bounce;
+    m.ops.step_ball = &bounce_then<whole_frame>;
     const std::optional<KernelId> bad = mutant::id();
     // Its t_i, B_i and v′ are robust's: only the second leg's length is wrong.
     const auto f = first_failure(s, *bad, Check::accuracy);
@@ -118,6 +133,58 @@ TEST(Checks, AccuracyHoldsEachLegToTheRestOfTheFrame) {
     EXPECT_EQ(f->frame, 1);
     EXPECT_NE(f->message.find("leg 1 ((0.75, 0) -> (1.25, 2))"), std::string::npos) << f->message;
     EXPECT_NE(f->message.find("is not the rest of the frame"), std::string::npos) << f->message;
+    // The rest of the frame from (0.75, 0.25), not from the printed B_i.
+    m.ops.step_ball = &bounce_then<from_elsewhere>;
+    const auto g = first_failure(s, *bad, Check::accuracy);
+    ASSERT_TRUE(g);
+    EXPECT_EQ(g->frame, 1);
+    EXPECT_NE(g->message.find("leg 1 starts at (0.75, 0.25), not at (0.75, 0) where the previous leg ended"),
+              std::string::npos)
+        << g->message;
+    // A leg traced moving NaN: the frame leaves the accepted range, so the run stops with a step error, the
+    // ball keeping its state (step.hpp), and no check judges that frame: no accuracy failure, and no exact
+    // arithmetic on the NaN (GMP's rational of a NaN raises SIGFPE).
+    m.ops.step_ball = &bounce_then<nan_velocity>;
+    const std::vector<Check> accuracy = {Check::accuracy};
+    const CheckedRun n = run_checked(s, *bad, s.frames, accuracy);
+    EXPECT_FALSE(n.failure);
+    ASSERT_TRUE(n.error);
+    EXPECT_EQ(n.error->frame, 1);
+    // A hit traced but not printed: there is no printed B_i for the next leg to start at, so accuracy stops
+    // its walk there; `oracle` reports the kernel's hits and its trace disagreeing.
+    m.ops.step_ball = &bounce_then<whole_frame, false>;
+    EXPECT_FALSE(first_failure(s, *bad, Check::accuracy));
+    const auto unprinted = first_failure(s, *bad, Check::oracle);
+    ASSERT_TRUE(unprinted);
+    EXPECT_EQ(unprinted->frame, 1);
+}
+
+TEST(Checks, AccuracyFollowsAReflectionOffAContactWall) {
+    // replays/robust-endpoint-contact-speed.scene: the ball rests on the wall's end point P0 = (0, 1) and is
+    // reflected off it as a contact, without a hit. The leg after such a blocked leg starts where the blocked
+    // one started, with the same rest of the frame.
+    Scene s;
+    s.frames = 3;
+    s.walls = {{{0, 1}, {74, 74}}};
+    s.balls = {{{1.105431282474736e-75, 1}, {-1.105431282474736e-75, 0}}};
+    Ball ball = s.balls[0];
+    BallMemory memory;
+    std::vector<HitEvent> hits;
+    StepTrace trace;
+    StepScratch scratch;
+    scratch.trace = &trace;
+    std::size_t blocked = 0;
+    std::vector<FrameStatus> statuses;
+    for (std::int64_t f = 0; f < s.frames; ++f) {
+        trace.clear();
+        statuses.push_back(step_ball(KernelId::robust, ball, memory, s.walls, hits, scratch));
+        for (const TracedLeg& leg : trace.legs) blocked += leg.blocked ? 1 : 0;
+    }
+    // Frame 1 hits P0; frames 2 and 3 reflect off the contact, leg after blocked leg, until the bounce limit
+    // keeps the ball at its safe point.
+    EXPECT_EQ(statuses, (std::vector<FrameStatus>{FrameStatus::ok, FrameStatus::bounce_limit, FrameStatus::bounce_limit}));
+    EXPECT_GT(blocked, 0u);
+    EXPECT_FALSE(first_failure(s, KernelId::robust, Check::accuracy));
 }
 
 /// robust, except that a frame with a hit ends moving out(v, the first wall hit), v the frame's velocity.

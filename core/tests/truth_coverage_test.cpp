@@ -161,6 +161,18 @@ TEST(TruthCorner, AWallCrossedAgainAfterALaterReflectionSendsTheBallStraightBack
     EXPECT_EQ(reflected.error, 2.0);
 }
 
+TEST(TruthCorner, AWallThatALaterReflectionRunsAlongIsNotConditioned) {
+    // Hit: (0, 0) → (1, 0), n = (0, −1), v = (0, −1): R = (0, 1).
+    // Wall 0: (0, 0) → (−1, 0), n0 = (0, 1), met from +1: n0·R = 1, clear, not crossed.
+    // Wall 1: (0, 0) → (1, 1), n1 = (1, −1), met from +1: n1·R = −1 crosses it (clear: 4 ≥ 1·1), so
+    //   R = (0, 1) − 2·(−1)/2·(1, −1) = (1, 0).
+    // Then n0·R = 0: whether R still crosses wall 0 is not clear, and the rule is not judged.
+    const Wall hit{{0, 0}, {1, 0}};
+    const std::vector<Wall> others = {Wall{{0, 0}, {-1, 0}}, Wall{{0, 0}, {1, 1}}};
+    const std::vector<int> from = {1, 1};
+    EXPECT_FALSE(truth::corner_accuracy({0, -1}, hit, 1, others, from, {1, 0}, 0x1p-52, 0).conditioned);
+}
+
 TEST(TruthLegEnd, ABallAtRestAtTheOriginIsWithinWithErrorZero) {
     // M = 0, so ε·M = 0: the error is reported as 0 rather than 0/0, and to = from + R·v exactly.
     const std::vector<double> ts = {0.5};

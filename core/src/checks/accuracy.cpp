@@ -105,7 +105,10 @@ private:
         std::size_t k = 0;
         for (std::size_t l = 0; l < trace.legs.size(); ++l) {
             const TracedLeg& leg = trace.legs[l];
-            if (!finite(leg.from) || !finite(leg.to) || !finite(leg.vel)) break;  // oracle's failure: not a segment
+            // A non-finite point is oracle's failure (not a segment). A non-finite velocity leaves the accepted
+            // range, and such a frame is never checked (the run stops with a step error): a guard, since GMP's
+            // rational of a NaN raises SIGFPE.
+            if (!finite(leg.from) || !finite(leg.to) || !finite(leg.vel)) break;
             if (!(leg.from == start))
                 return failure(Check::accuracy, f.index, i,
                                fmt::format("leg {} starts at {}, not at {} where the {} ended", l, leg.from, start,

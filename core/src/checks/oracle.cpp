@@ -167,23 +167,21 @@ private:
                 return fail(fmt::format("stopped at the bounce limit at {}, but the last point of its path is {}",
                                         state->pos, last));
         }
-        // The frame's first hit against the exact kernel's frame from the same state and memory. Never false:
-        // the exact kernel's trace has no legs, so its frames returned above.
-        if (kernel_ != KernelId::exact) {
-            Ball ball = f.before[i];
-            BallMemory memory = f.memory_before[i];
-            hits_.clear();
-            // A frame that leaves the accepted range changes nothing and reports no hits (step.hpp): the exact
-            // kernel's reflection may round a component past 2^256 where this kernel's does not (or the other
-            // way round), and then there is no exact frame to compare with.
-            if (step_ball(KernelId::exact, ball, memory, scene_.walls, hits_, scratch_) == FrameStatus::out_of_range)
-                return std::nullopt;
-            const long want = hits_.empty() ? -1 : static_cast<long>(hits_.front().wall);
-            const long got = printed.empty() ? -1 : static_cast<long>(printed.front());
-            if (want != got)
-                return fail(fmt::format("from {} moving {} the kernel hits {} first, the exact kernel hits {}",
-                                        f.before[i].pos, f.before[i].vel, wall_name(got), wall_name(want)));
-        }
+        // The frame's first hit against the exact kernel's frame from the same state and memory. (The exact
+        // kernel's own frames returned above: it traces no legs.)
+        Ball ball = f.before[i];
+        BallMemory memory = f.memory_before[i];
+        hits_.clear();
+        // A frame that leaves the accepted range changes nothing and reports no hits (step.hpp): the exact
+        // kernel's reflection may round a component past 2^256 where this kernel's does not (or the other
+        // way round), and then there is no exact frame to compare with.
+        if (step_ball(KernelId::exact, ball, memory, scene_.walls, hits_, scratch_) == FrameStatus::out_of_range)
+            return std::nullopt;
+        const long want = hits_.empty() ? -1 : static_cast<long>(hits_.front().wall);
+        const long got = printed.empty() ? -1 : static_cast<long>(printed.front());
+        if (want != got)
+            return fail(fmt::format("from {} moving {} the kernel hits {} first, the exact kernel hits {}",
+                                    f.before[i].pos, f.before[i].vel, wall_name(got), wall_name(want)));
         return std::nullopt;
     }
 
