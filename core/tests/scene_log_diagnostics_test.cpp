@@ -95,6 +95,8 @@ TEST(SceneLogDiagnostics, CrlfColumnsAreLfColumns) {
     EXPECT_EQ(diag("ricochet 1\r\nball 0 0 1 1 7\r\n"),
               "t.scene:2:14: error: unexpected '7' after 'ball' (X Y VX VY expected)");
     EXPECT_EQ(diag("ricochet 1\r\nwall 0 0 1\r"), "t.scene:2:11: error: 'wall' needs X0 Y0 X1 Y1: missing Y1");
+    // A lone CR before a comment ends no line: it is a separator, a character of the line like the tab.
+    EXPECT_EQ(diag("ricochet 1\nwall 0 0 1\r# c\n"), "t.scene:2:12: error: 'wall' needs X0 Y0 X1 Y1: missing Y1");
 }
 
 TEST(SceneLogDiagnostics, EveryLfDiagnosticIsTheCrlfOne) {
