@@ -194,9 +194,13 @@ TEST(Render, AFailureIsACrossAtTheBallsStateAndItsMessageIsEscaped) {
     f.ball = 0;
     f.message = "piece (0, 8) -> (-4, 9) < wall & more";
     run.failure = f;
-    const std::string svg = render_svg(s, run);
-    // Frame 2's state (10, 5) ↦ (727.273, 400): a cross 9 px each way.
-    EXPECT_TRUE(has(svg, "<g stroke=\"red\" stroke-width=\"3\"><line x1=\"718.273\" y1=\"391.000\" x2=\"736.273\" "
+    // The whole scene's view, so the mapping is the box's (the failure view is render_run_test's).
+    RenderOptions o;
+    o.view = RenderView::all;
+    const std::string svg = render_svg(s, run, o);
+    // Frame 2's state (10, 5) ↦ (727.273, 400): a cross 9 px each way; no piece, so no crossing.
+    EXPECT_TRUE(has(svg, "marked at (10, 5), the ball's state at the end of frame 2"));
+    EXPECT_TRUE(has(svg, "<g stroke=\"red\" stroke-width=\"3\" data-x=\"10\" data-y=\"5\"><line x1=\"718.273\" y1=\"391.000\" x2=\"736.273\" "
                          "y2=\"409.000\"/><line x1=\"718.273\" y1=\"409.000\" x2=\"736.273\" y2=\"391.000\"/></g>"));
     EXPECT_EQ(count(svg, "<g stroke=\"red\""), 1u);
     EXPECT_TRUE(has(svg, "piece (0, 8) -&gt; (-4, 9) &lt; wall &amp; more</text>"));
