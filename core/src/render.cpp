@@ -29,6 +29,8 @@ constexpr double k_all_pad = 0.05;
 constexpr double k_failure_pad = 0.15;
 /// Height of one caption line below the picture, in pixels.
 constexpr double k_caption_line = 16;
+/// Balls drawn beyond this many get no label (the failing ball always does): 64 labels hide the paths.
+constexpr std::size_t k_max_labels = 16;
 
 /// An axis-aligned box in the world; empty until a point is added.
 struct Box {
@@ -180,8 +182,18 @@ public:
         failing_ = std::move(ff);
     }
 
-    /// Takes the failing frame another recorder kept.
-    void take_failing(Recorder& other) { failing_ = std::move(other.failing_); }
+    /// Path i, moved out.
+    Path take_path(std::size_t i) { return std::move(paths_[i]); }
+
+    /// Draws path (ball b's) in place of the last ball drawn.
+    void replace_last(Path path, std::uint32_t b) {
+        // Degenerate: with no ball drawn there is no place to give.
+        if (paths_.empty()) return;
+        slot_[paths_.back().ball] = -1;
+        path.ball = b;
+        paths_.back() = std::move(path);
+        slot_[b] = static_cast<std::int32_t>(paths_.size() - 1);
+    }
 
     /// Whether ball b's path is drawn.
     bool draws(std::uint32_t b) const { return b < slot_.size() && slot_[b] >= 0; }
@@ -283,6 +295,12 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
         if (!(near.span() > 0)) near = Box{};
     }
     const bool framed = !near.empty();
+    // The failing frame is seen at least as wide as it is tall: the picture keeps its width (and its
+    // captions room), and the walls beside a steep path stay in view.
+    if (framed && near.x1 - near.x0 < near.y1 - near.y0) {
+        const double mid = 0.5 * near.x0 + 0.5 * near.x1, half = 0.5 * (near.y1 - near.y0);
+        near.x0 = mid - half, near.x1 = mid + half;
+    }
     Box b = framed ? near : all;
     if (b.empty()) b = Box{0, 0, 1, 1};
     // Degenerate: a scene of one point still gets a unit-sized picture around it. (Within the accepted
@@ -397,11 +415,16 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
                 fmt::format_to(it, "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"3\" fill=\"{}\"/>\n", v.sx(p.points[i].x),
                                v.sy(p.points[i].y), colour);
         const Vec2 start = p.points.front(), end = p.points.back();
-        if (clip_box.holds(start))
+        const bool label = rec.paths().size() <= k_max_labels || (failure && failure->ball == p.ball);
+        if (clip_box.holds(start)) {
             fmt::format_to(it,
-                           "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"5\" fill=\"white\" stroke=\"{}\" stroke-width=\"2\"/>"
-                           "<text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"{}\">b{}</text>\n",
-                           v.sx(start.x), v.sy(start.y), colour, v.sx(start.x) + 7, v.sy(start.y) - 7, colour, p.ball);
+                           "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"5\" fill=\"white\" stroke=\"{}\" stroke-width=\"2\"/>",
+                           v.sx(start.x), v.sy(start.y), colour);
+            if (label)
+                fmt::format_to(it, "<text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"{}\">b{}</text>", v.sx(start.x) + 7,
+                               v.sy(start.y) - 7, colour, p.ball);
+            out += '\n';
+        }
         if (clip_box.holds(end))
             fmt::format_to(it, "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"5\" fill=\"{}\"/>\n", v.sx(end.x), v.sy(end.y),
                            colour);
@@ -480,25 +503,25 @@ RenderResult render_run(const Scene& scene, KernelId kernel, const RenderOptions
     result.failure = run.failure;
     result.error = run.error;
     if (run.failure && !rec.draws(run.failure->ball)) {
-        // The failing ball was not known while its path went by: step the scene again, without checks and
-        // as run_checked's World did (CheckOptions' default WorldOptions), keeping its path in place of
-        // the last ball drawn. The same bits: options change no event (world.hpp).
-        Recorder again(scene, first, last, drawn_balls(scene.balls.size(), options.max_balls, run.failure->ball),
-                       options.max_points);
-        again.take_failing(rec);
-        World world(scene, kernel, CheckOptions{}.world);
+        // The failing ball was not known while its path went by: step it again alone, without checks and
+        // as run_checked's World did (CheckOptions' default WorldOptions), and draw it in place of the
+        // last ball drawn. The same bits: balls are independent and options change no event (world.hpp).
+        const std::uint32_t failing = run.failure->ball;
+        Scene alone = scene;
+        alone.balls = {scene.balls[failing]};
+        Recorder solo(alone, first, last, {0}, static_cast<std::uint32_t>(rec.budget()));
+        World world(alone, kernel, CheckOptions{}.world);
         std::vector<Event> events;
         world.start(events);
-        again.add_frame(events);
+        solo.add_frame(events);
         const std::int64_t to = std::min(last, run.frames_run);
         for (std::int64_t f = 1; f <= to; ++f) {
             events.clear();
             if (world.step(events)) break;
-            again.add_frame(events);
+            solo.add_frame(events);
             if (progress) progress(f, to);
         }
-        result.svg = draw(scene, again, run.failure, options, first, options.last_frame.value_or(run.frames_run));
-        return result;
+        rec.replace_last(solo.take_path(0), failing);
     }
     result.svg = draw(scene, rec, run.failure, options, first, options.last_frame.value_or(run.frames_run));
     return result;

@@ -122,6 +122,22 @@ TEST(RenderRun, TheViewFramesTheFailingFramesPointsNotTheWholeRun) {
     EXPECT_TRUE(has(whole.svg, "data-x=\"2.5\" data-y=\"0\""));
 }
 
+TEST(RenderRun, ASteepFailingFrameIsSeenAsWideAsItIsTall) {
+    // The piece (0, 3) → (0, −3) through the short wall (−0.5, 0) → (0.5, 0): the frame's box
+    // [−0.5, 0.5] × [−3, 3] is widened about x = 0 to [−3, 3], so the picture keeps its 800 px.
+    mutant::Mutation m;
+    walls_ignored(m);
+    Scene s;
+    s.frames = 1;
+    s.walls = {{{-0.5, 0}, {0.5, 0}}};
+    s.balls = {{{0, 3}, {0, -6}}};
+    s.checks = {Check::no_tunnel};
+    const RenderResult r = render_run(s, mutant::id());
+    EXPECT_TRUE(has(r.svg, "x in [-3, 3], y in [-3, 3]")) << r.svg;
+    EXPECT_EQ(picture_size(r.svg).first, 800);
+    EXPECT_TRUE(has(r.svg, "data-x=\"0\" data-y=\"0\""));
+}
+
 TEST(RenderRun, AHundredThousandBallsGiveABoundedPictureWithTheFailingBall) {
     // 10^5 balls, the failing one last: 64 paths drawn (balls 0..62 and ball 99999), the rest counted.
     mutant::Mutation m;
@@ -134,12 +150,13 @@ TEST(RenderRun, AHundredThousandBallsGiveABoundedPictureWithTheFailingBall) {
         << r.svg.substr(0, 2000);
     EXPECT_TRUE(has(r.svg, ">b99999</text>"));
     EXPECT_FALSE(has(r.svg, ">b63</text>"));
+    EXPECT_FALSE(has(r.svg, ">b0</text>"));  // 64 labels would hide the paths: only the failing ball's
     // Every ball drawn has at most 3 points (frames 0..2) and 3 markers: bounded by the balls drawn, not
     // the balls run. Each drawn element is under 200 bytes.
     EXPECT_LE(count(r.svg, "<polyline"), 65u);
     EXPECT_LT(r.svg.size(), 64u * 4 * 200 + 4000);
-    // The failing ball's path is its real one: frame 0 (1, 3), frame 1 (3, −1), frame 2 (5, −5), in the
-    // whole-scene view too.
+    // The failing ball's path is its real one, stepped again alone: frame 0 (1, 3), frame 1 (3, −1),
+    // frame 2 (5, −5), in the whole-scene view.
     RenderOptions all;
     all.view = RenderView::all;
     const RenderResult whole = render_run(s, mutant::id(), all);
@@ -148,7 +165,10 @@ TEST(RenderRun, AHundredThousandBallsGiveABoundedPictureWithTheFailingBall) {
     const std::size_t line = whole.svg.rfind("<polyline points=\"", label);
     const std::size_t stop = whole.svg.find('"', line + 18);
     const std::string pts = whole.svg.substr(line + 18, stop - line - 18);
-    EXPECT_EQ(count(pts, ","), 3u) << pts;
+    // The whole view bounds x in [−4, 5] (wall 0, the failing path), y in [−5, 5]: padded to
+    // [−4.5, 5.5] × [−5.5, 5.5], scale 720/11; (1, 3) ↦ (400, 203.636), (3, −1) ↦ (530.909, 465.455),
+    // (5, −5) ↦ (661.818, 727.273).
+    EXPECT_EQ(pts, "400.000,203.636 530.909,465.455 661.818,727.273 ");
 }
 
 TEST(RenderRun, AFrameRangeKeepsOnlyItsFramesAndTheAllViewStopsAtItsEnd) {
