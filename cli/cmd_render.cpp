@@ -25,16 +25,15 @@ void register_render(CLI::App& app) {
         std::uint64_t max_work = k_default_max_work;
     };
     auto opt = std::make_shared<Options>();
-    CLI::App* sub = app.add_subcommand(
-        "render",
-        "draw a log's scene and run as SVG. The run is checked as `replay` checks it and drawn as it streams by:\n"
-        "only the drawn balls' points of frames A..B and the failing frame are kept. It stops after frame B once\n"
-        "the first failure is found (with --view all: at frame B); past B it goes on only to find that failure,\n"
-        "so the mark is the one `replay` reports. --view failure (the default) frames the failing frame: the\n"
-        "failing ball's path in it and the walls it met, marked where a no-tunnel piece crossed its wall (else\n"
-        "at the ball's state); a run without a failure is drawn whole. At most --max-balls paths are drawn (balls\n"
-        "0, 1, ..., the failing ball always) and at most --max-points points in all; the caption says what was\n"
-        "left out");
+    CLI::App* sub = app.add_subcommand("render", "draw a log's scene and run as SVG, framed on the first failure");
+    sub->footer(
+        "The run is checked as `replay` checks it and drawn as it streams by: only the drawn balls' points of\n"
+        "frames A..B and the failing frame are kept. It stops after frame B once the first failure is found\n"
+        "(with --view all: at frame B); past B it goes on only to find that failure, so the mark is the one\n"
+        "`replay` reports. --view failure (the default) frames the failing frame: the failing ball's path in it\n"
+        "and the walls it met, marked where a no-tunnel piece crossed its wall (else at the ball's state); a run\n"
+        "without a failure is drawn whole. At most --max-balls paths are drawn (balls 0, 1, ... and the failing\n"
+        "ball always) and at most --max-points points in all; the caption says what was left out.");
     sub->add_option("LOG", opt->log, "scene log")->required();
     sub->add_option("-o,--output", opt->out, "the SVG file to write")->required();
     sub->add_option("--frames", opt->frames, "A:B, the frames whose paths are drawn (default: every frame run)");
