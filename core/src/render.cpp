@@ -519,7 +519,6 @@ RenderResult render_run(const Scene& scene, KernelId kernel, const RenderOptions
             events.clear();
             if (world.step(events)) break;
             solo.add_frame(events);
-            if (progress) progress(f, to);
         }
         rec.replace_last(solo.take_path(0), failing);
     }
