@@ -227,5 +227,34 @@ TEST(RenderRun, ThePointBudgetCutsLongPathsAndSaysSo) {
     EXPECT_EQ(polyline_after(r.svg, "stroke=\"#1f77b4\"").size(), 10u);
 }
 
+// The hook render_run stops the run with: asked after every frame, 0 included, with the checks done.
+TEST(RunCheckedStop, StopAfterEndsTheRunAfterThatFrameWithTheSameEventsAndHash) {
+    Scene s;
+    s.frames = 10;
+    s.walls = {{{5, -1}, {5, 1}}};
+    s.balls = {{{1, 0}, {1, 0}}};
+    s.checks = {Check::no_tunnel, Check::speed};
+    std::vector<std::int64_t> asked;
+    std::size_t frames_seen = 0;
+    CheckOptions o;
+    o.on_frame = [&](std::span<const Event>) { ++frames_seen; };
+    o.stop_after = [&](const CheckedRun& r) {
+        asked.push_back(r.frames_run);
+        return r.frames_run == 3;
+    };
+    const CheckedRun stopped = run_checked(s, KernelId::robust, s.frames, s.checks, o);
+    EXPECT_EQ(stopped.frames_run, 3);
+    EXPECT_EQ(asked, (std::vector<std::int64_t>{0, 1, 2, 3}));
+    EXPECT_EQ(frames_seen, 4u);
+    // The same as a run of 3 frames: events and hash.
+    const CheckedRun three = run_checked(s, KernelId::robust, 3, s.checks);
+    EXPECT_EQ(stopped.events, three.events);
+    EXPECT_EQ(stopped.hash, three.hash);
+    EXPECT_FALSE(stopped.failure);
+    // Stopping at frame 0 steps nothing.
+    o.stop_after = [](const CheckedRun&) { return true; };
+    EXPECT_EQ(run_checked(s, KernelId::robust, s.frames, s.checks, o).frames_run, 0);
+}
+
 }  // namespace
 }  // namespace ricochet

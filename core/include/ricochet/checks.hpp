@@ -169,8 +169,9 @@ struct CheckedRun {
 struct CheckOptions {
     bool keep_events = true;                                   ///< store events in CheckedRun::events
     std::function<void(std::span<const Event>)> on_frame;      ///< called with each frame's events, in order
-    /// Asked after each frame stepped without error (0 included) once its checks are done, with the run so far (its hash not
-    /// yet set): true ends the run after that frame. Checks and events up to it are as without it.
+    /// Asked after each frame stepped without error (0 included) once its checks are done, with the run
+    /// so far (its hash not yet set): true ends the run after that frame, its hash covering the frames
+    /// run. Checks and events up to it are as without it.
     std::function<bool(const CheckedRun&)> stop_after;
     /// How the run's World and the checks' own worlds step (broad-phase's excepted). Options change no
     /// event's bits (world.hpp; broad-phase checks it), so no check's answer depends on them.
@@ -178,7 +179,8 @@ struct CheckOptions {
 };
 
 /// Runs frames 0..frames of scene under kernel, asserting checks on every frame. After the first failure
-/// the remaining checks are skipped but the run goes on (the hash covers the whole run). The run's World
+/// the remaining checks are skipped but the run goes on (the hash covers the whole run) unless
+/// options.stop_after ends it. The run's World
 /// and the checks' own worlds step with options.world (by default as `ricochet run` does), except
 /// broad-phase's.
 CheckedRun run_checked(const Scene& scene, KernelId kernel, std::int64_t frames, std::span<const Check> checks,
