@@ -29,6 +29,8 @@ constexpr double k_all_pad = 0.05;
 constexpr double k_failure_pad = 0.15;
 /// Height of one caption line below the picture, in pixels.
 constexpr double k_caption_line = 16;
+/// Width of one character of the 12 px sans-serif text, a little over its average, in pixels.
+constexpr double k_char_px = 7;
 /// Balls drawn beyond this many get no label (the failing ball always does): 64 labels hide the paths.
 constexpr std::size_t k_max_labels = 16;
 
@@ -316,11 +318,13 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
     // What may be drawn: the picture's own extent in the world, margins included.
     const double m = v.margin / v.scale;
     const Box clip_box{v.x0 - m, v.y0 - m, v.x1 + m, v.y1 + m};
-    const double normal_len = 0.04 * std::max(w_world, h_world);
+    // Normals are 4 % of the larger world span long, in picture units: far from the origin a world-sized
+    // step would round away (at 1e15 the ulp is 0.125).
+    const double normal_px = 0.04 * std::max(w_world, h_world) * v.scale;
 
     // Caption lines under the picture: what it shows, then what it leaves out.
     std::vector<std::string> caption;
-    caption.push_back(fmt::format("kernel {}, frames {}..{}, x in [{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}]", scene.kernel,
+    caption.push_back(fmt::format("kernel {}, frames {}..{}, x in [{}, {}], y in [{}, {}]", scene.kernel,
                                   first, last, b.x0, b.x1, b.y0, b.y1));
     if (framed)
         caption.push_back(fmt::format("view: the failing frame {} of ball {} (--view all shows the whole scene)",
@@ -392,17 +396,17 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
         // The outward normal n̂ = (e_y, −e_x)/|e| drawn from the midpoint of the part shown; P0 marked by a
         // small square where it is shown.
         const Vec2 n = unit_normal(w);
-        const Vec2 mid = 0.5 * (a + z);
-        const Vec2 tip = mid + normal_len * n;
+        // (y up in the world is y down in the picture: the tip is mid + len·(n̂x, −n̂y).)
+        const double mx = 0.5 * (v.sx(a.x) + v.sx(z.x)), my = 0.5 * (v.sy(a.y) + v.sy(z.y));
+        const double tx = mx + normal_px * n.x, ty = my - normal_px * n.y;
         if (n != Vec2{})
             fmt::format_to(it,
                            "<line x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\" stroke=\"#888\" stroke-width=\"1.2\"/>"
                            "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"2\" fill=\"#888\"/>\n",
-                           v.sx(mid.x), v.sy(mid.y), v.sx(tip.x), v.sy(tip.y), v.sx(tip.x), v.sy(tip.y));
+                           mx, my, tx, ty, tx, ty);
         if (a == w.p0) fmt::format_to(it, "<rect x=\"{:.3f}\" y=\"{:.3f}\" width=\"4\" height=\"4\" fill=\"black\"/>",
                                       v.sx(w.p0.x) - 2, v.sy(w.p0.y) - 2);
-        fmt::format_to(it, "<text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"#555\">w{}</text>\n", v.sx(tip.x) + 4,
-                       v.sy(tip.y) + 4, i);
+        fmt::format_to(it, "<text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"#555\">w{}</text>\n", tx + 4, ty + 4, i);
     }
     // Ball paths: the state at the first frame, then each frame's hits and its state.
     for (const Path& p : rec.paths()) {
@@ -443,10 +447,21 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
                            failing->mark->x, failing->mark->y, cx - 9, cy - 9, cx + 9, cy + 9, cx - 9, cy + 9, cx + 9,
                            cy - 9);
         }
+        // The message in at most two lines above the picture, broken at a space, cut with "..." when longer.
+        const std::size_t per_line = std::max<std::size_t>(20, static_cast<std::size_t>((width - 16) / k_char_px));
         std::string text = failure->str();
-        if (text.size() > 140) text = text.substr(0, 137) + "...";
+        if (text.size() > 2 * per_line) text = text.substr(0, 2 * per_line - 3) + "...";
+        std::string second;
+        if (text.size() > per_line) {
+            std::size_t at = text.rfind(' ', per_line);
+            if (at == std::string::npos || at < per_line / 2) at = per_line;
+            second = text.substr(at + (text[at] == ' ' ? 1 : 0));
+            text.resize(at);
+            if (second.size() > per_line) second = second.substr(0, per_line - 3) + "...";
+        }
         // XML-escape the message: it quotes path pieces like "(0, 8) -> (-4, 9)".
         fmt::format_to(it, "<text x=\"8\" y=\"18\" fill=\"red\">{}</text>\n", xml_escaped(text));
+        if (!second.empty()) fmt::format_to(it, "<text x=\"8\" y=\"32\" fill=\"red\">{}</text>\n", xml_escaped(second));
     }
     out += "</svg>\n";
     return out;

@@ -208,7 +208,9 @@ TEST(Render, AFailureIsACrossAtTheBallsStateAndItsMessageIsEscaped) {
     EXPECT_FALSE(has(svg, "-> (-4"));
 }
 
-TEST(Render, ALongFailureMessageIsCutTo140Characters) {
+TEST(Render, ALongFailureMessageIsCutToTwoLinesOfThePicturesWidth) {
+    // 800 px hold (800 − 16) / 7 = 112 characters a line: a message of 300 without a space is cut to
+    // 221 and "...", and broken at 112.
     CheckedRun run = path_run();
     CheckFailure f;
     f.frame = 7;  // no state at frame 7: no cross, only the message
@@ -216,13 +218,22 @@ TEST(Render, ALongFailureMessageIsCutTo140Characters) {
     run.failure = f;
     const std::string svg = render_svg(box_scene(), run);
     EXPECT_EQ(count(svg, "<g stroke=\"red\""), 0u);
-    const std::string open = "<text x=\"8\" y=\"18\" fill=\"red\">";
-    const std::size_t from = svg.find(open);
-    ASSERT_NE(from, std::string::npos);
-    const std::size_t to = svg.find("</text>", from);
-    const std::string text = svg.substr(from + open.size(), to - from - open.size());
-    EXPECT_EQ(text.size(), 140u);
-    EXPECT_EQ(text, f.str().substr(0, 137) + "...");
+    const auto line = [&](const std::string& open) {
+        const std::size_t from = svg.find(open);
+        if (from == std::string::npos) return std::string("(none)");
+        const std::size_t to = svg.find("</text>", from);
+        return svg.substr(from + open.size(), to - from - open.size());
+    };
+    const std::string first = line("<text x=\"8\" y=\"18\" fill=\"red\">");
+    const std::string second = line("<text x=\"8\" y=\"32\" fill=\"red\">");
+    EXPECT_EQ(first, f.str().substr(0, 112));
+    EXPECT_EQ(second, f.str().substr(112, 109) + "...");
+    // A shorter message breaks at its last space before the 112th character.
+    f.message = std::string(60, 'a') + " " + std::string(60, 'b');
+    run.failure = f;
+    const std::string two = render_svg(box_scene(), run);
+    EXPECT_TRUE(has(two, "ball 0: " + std::string(60, 'a') + "</text>")) << two;
+    EXPECT_TRUE(has(two, "<text x=\"8\" y=\"32\" fill=\"red\">" + std::string(60, 'b') + "</text>"));
 }
 
 }  // namespace
