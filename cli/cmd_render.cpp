@@ -1,9 +1,12 @@
-// `ricochet render LOG -o FILE.svg [--frames A:B] [--kernel K] [--max-work N]`: a picture of the scene and its run.
+// `ricochet render LOG -o FILE.svg [--frames A:B] [--view failure|all] [--max-balls N] [--max-points N]
+// [--width PX] [--kernel K] [--max-work N]`: a picture of the scene and its run, drawn as the run streams by.
 #include <charconv>
 
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "number_option.hpp"
+#include "progress.hpp"
 #include "ricochet/render.hpp"
 #include "ricochet/scene_log.hpp"
 
@@ -15,19 +18,48 @@ void register_render(CLI::App& app) {
         std::string out;
         std::string frames;
         std::string kernel;
+        std::string view = "failure";
+        std::uint32_t max_balls = RenderOptions{}.max_balls;
+        std::uint32_t max_points = RenderOptions{}.max_points;
+        int width = RenderOptions{}.width;
         std::uint64_t max_work = k_default_max_work;
     };
     auto opt = std::make_shared<Options>();
-    CLI::App* sub = app.add_subcommand("render", "draw a log's scene and run as SVG");
+    CLI::App* sub = app.add_subcommand("render", "draw a log's scene and run as SVG, framed on the first failure");
+    sub->footer(
+        "The run is checked as `replay` checks it and drawn as it streams by: only the drawn balls' points of\n"
+        "frames A..B and the failing frame are kept. It stops after frame B once the first failure is found\n"
+        "(with --view all: at frame B); past B it goes on only to find that failure, so the mark is the one\n"
+        "`replay` reports. --view failure (the default) frames the failing frame: the failing ball's path in it\n"
+        "and the walls it met, marked where a no-tunnel piece crossed its wall (else at the ball's state); a run\n"
+        "without a failure is drawn whole. At most --max-balls paths are drawn (balls 0, 1, ... and the failing\n"
+        "ball always) and at most --max-points points in all; the caption says what was left out.");
     sub->add_option("LOG", opt->log, "scene log")->required();
     sub->add_option("-o,--output", opt->out, "the SVG file to write")->required();
-    sub->add_option("--frames", opt->frames, "A:B, the frames whose paths are drawn");
+    sub->add_option("--frames", opt->frames, "A:B, the frames whose paths are drawn (default: every frame run)");
+    sub->add_option("--view", opt->view, "failure: frame the failing frame (default); all: the whole scene")
+        ->check(CLI::Validator(
+            [](std::string& input) -> std::string {
+                if (input == "failure" || input == "all") return {};
+                return fmt::format("'{}' is not a view (expected failure or all)", input);
+            },
+            "failure|all"));
+    sub->add_option("--max-balls", opt->max_balls, "draw the paths of at most N balls (default 64)")
+        ->check(number_in(std::uint32_t{1}, std::uint32_t{100000}, "a ball count"));
+    sub->add_option("--max-points", opt->max_points, "draw at most N path points in all (default 100000)")
+        ->check(number_in(std::uint32_t{1}, std::uint32_t{10000000}, "a point count"));
+    sub->add_option("--width", opt->width, "picture width in pixels (default 800)")
+        ->check(number_in(100, 20000, "a width in pixels"));
     sub->add_option("--kernel", opt->kernel, "override the log's kernel");
     add_max_work_option(*sub, opt->max_work);
     sub->callback([opt] {
         Scene scene = load_scene_or_exit(opt->log);
         if (!opt->kernel.empty()) scene.kernel = kernel_or_exit(opt->kernel);
         RenderOptions r;
+        r.view = opt->view == "all" ? RenderView::all : RenderView::failure;
+        r.max_balls = opt->max_balls;
+        r.max_points = opt->max_points;
+        r.width = opt->width;
         if (!opt->frames.empty()) {
             const auto colon = opt->frames.find(':');
             std::int64_t a = 0, b = 0;
@@ -44,13 +76,19 @@ void register_render(CLI::App& app) {
             r.last_frame = b;
         }
         check_work_or_exit(opt->log, scene, scene.frames, opt->max_work);
-        const CheckedRun run = run_checked(scene, scene.kernel, scene.frames, scene.checks);
+        RenderResult result;
+        {
+            Progress progress(fmt::format("ricochet render {}", opt->log));
+            result = render_run(scene, scene.kernel, r,
+                                [&](std::int64_t done, std::int64_t total) { progress.update(done, total); });
+        }
         std::string error;
-        if (!write_file_atomically(opt->out, render_svg(scene, run, r), &error)) {
+        if (!write_file_atomically(opt->out, result.svg, &error)) {
             fmt::print(stderr, "ricochet: error: {}\n", error);
             throw Exit{1};
         }
-        write_stdout(fmt::format("wrote {}{}\n", opt->out, run.failure ? fmt::format(" (marked: {})", run.failure->str()) : ""));
+        write_stdout(fmt::format("wrote {}{}\n", opt->out,
+                                 result.failure ? fmt::format(" (marked: {})", result.failure->str()) : ""));
     });
 }
 

@@ -115,6 +115,28 @@ case "$case" in
   work-default)      run 2 replay "$big"
                      first_line err "ricochet: error: $big: too much work: 10000000 frames × 200 balls × (4 walls + 0 circles + 0 rects + 1) = 10000000000 is over the bound of 100000000; raise it with --max-work N (0: no bound)" ;;
   work-frames-flag)  run 2 run "$log" --frames 5 --max-work 19; grep -q "= 20 is over the bound of 19" "$dir/err" || fail "work not from --frames" ;;
+  # render: its view, its bounds on what is drawn, and the pinball table's tunnel marked where it crossed.
+  render-view-bad)   run 2 render "$log" -o "$dir/x.svg" --view some
+                     first_line err "ricochet: error: --view: 'some' is not a view (expected failure or all)"
+                     [ ! -e "$dir/x.svg" ] || fail "render wrote the picture" ;;
+  render-max-balls-0) run 2 render "$log" -o "$dir/x.svg" --max-balls 0
+                     first_line err "ricochet: error: --max-balls: '0' is out of range (expected a ball count from 1 to 100000)"
+                     [ ! -e "$dir/x.svg" ] || fail "render wrote the picture" ;;
+  render-max-points-abc) run 2 render "$log" -o "$dir/x.svg" --max-points abc
+                     first_line err "ricochet: error: --max-points: 'abc' is not a point count (expected 1 to 10000000)" ;;
+  render-width-tiny) run 2 render "$log" -o "$dir/x.svg" --width 5
+                     first_line err "ricochet: error: --width: '5' is out of range (expected a width in pixels from 100 to 20000)" ;;
+  render-max-balls)  run 0 render "$log" -o "$dir/x.svg" --max-balls 1
+                     grep -q 'paths of 1 of 2 balls drawn (balls 0..0), 1 left out' "$dir/x.svg" || fail "no left-out caption"
+                     ! grep -q '>b1</text>' "$dir/x.svg" || fail "ball 1 drawn" ;;
+  render-tunnel-view) printf 'ricochet 1\nkernel lecture-double\nframes 10\nwall 0 10 0 0\nwall 0 0 10 0\nwall 10 0 10 10\nwall 10 10 0 10\nwall 0 2 3 0.5\nwall 7 0.5 10 2\nball 8 5 4 1\ncheck no-tunnel\n' >"$dir/t.scene"
+                     run 0 render "$dir/t.scene" -o "$dir/x.svg"
+                     grep -q '^wrote .* (marked: no-tunnel broke at frame 4 ball 0: ' "$dir/out" || fail "no mark reported"
+                     grep -q 'data-x="0" data-y="8"' "$dir/x.svg" || fail "the mark is not the crossing (0, 8)"
+                     grep -q 'view: the failing frame 4 of ball 0' "$dir/x.svg" || fail "not framed on the failure"
+                     run 0 render "$dir/t.scene" -o "$dir/all.svg" --view all
+                     ! grep -q 'view: the failing frame' "$dir/all.svg" || fail "--view all framed the failure"
+                     grep -q 'data-x="0" data-y="8"' "$dir/all.svg" || fail "--view all lost the mark" ;;
   *) echo "unknown case $case" >&2; exit 1 ;;
 esac
 echo "ok $case"

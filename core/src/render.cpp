@@ -1,14 +1,20 @@
-// Render: the scene and its run as SVG (y up in the world, y down in SVG: sy = top − y).
+// Render: the scene and its run as SVG (y up in the world, y down in SVG: sy = top − y), drawn from one
+// pass over the run's events that keeps only what the picture shows.
 #include "ricochet/render.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <span>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "ricochet/format.hpp"
+#include "ricochet/line.hpp"
+#include "ricochet/world.hpp"
 
 namespace ricochet {
 
@@ -16,6 +22,34 @@ namespace {
 
 constexpr std::array<const char*, 8> k_ball_colours = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
                                                        "#8c564b", "#e377c2", "#17becf", "#bcbd22"};
+/// Padding around the whole scene, as a share of its larger span: the walls stay off the picture's edge.
+constexpr double k_all_pad = 0.05;
+/// Padding around the failing frame, as a share of its larger span: enough to see where the path came
+/// from and went, little enough that the crossing stays large.
+constexpr double k_failure_pad = 0.15;
+/// Height of one caption line below the picture, in pixels.
+constexpr double k_caption_line = 16;
+/// Width of one character of the 12 px sans-serif text, a little over its average, in pixels.
+constexpr double k_char_px = 7;
+/// Balls drawn beyond this many get no label (the failing ball always does): 64 labels hide the paths.
+constexpr std::size_t k_max_labels = 16;
+
+/// An axis-aligned box in the world; empty until a point is added.
+struct Box {
+    double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+    bool empty() const { return !(x0 <= x1 && y0 <= y1); }
+    void add(Vec2 p) {
+        // Degenerate: a non-finite point (a lecture kernel's NaN or overflow) bounds nothing.
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    }
+    void add(const Box& b) {
+        if (!b.empty()) add(Vec2{b.x0, b.y0}), add(Vec2{b.x1, b.y1});
+    }
+    bool holds(Vec2 p) const { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; }
+    bool meets(const Box& b) const { return !b.empty() && b.x0 <= x1 && b.x1 >= x0 && b.y0 <= y1 && b.y1 >= y0; }
+    double span() const { return std::max(x1 - x0, y1 - y0); }
+};
 
 /// World → picture: sx = (x − x0)·scale + margin, sy = (y1 − y)·scale + margin.
 struct View {
@@ -24,46 +58,301 @@ struct View {
     double sy(double y) const { return (y1 - y) * scale + margin; }
 };
 
-void grow(double& lo, double& hi, double v) {
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
+/// The part of segment a → b inside box c (Liang–Barsky: a + t·d for t in [t0, t1], each edge a bound
+/// p·t ≤ q), or nothing. Ends that need no cut are returned as given, bit for bit.
+std::optional<std::pair<Vec2, Vec2>> clip(Vec2 a, Vec2 b, const Box& c) {
+    // Degenerate: a segment with a non-finite end is not a segment.
+    if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) return std::nullopt;
+    const Vec2 d = b - a;
+    double t0 = 0, t1 = 1;
+    const auto edge = [&](double p, double q) {
+        if (p == 0) return q >= 0;
+        const double r = q / p;
+        if (p < 0) {
+            if (r > t1) return false;
+            t0 = std::max(t0, r);
+        } else {
+            if (r < t0) return false;
+            t1 = std::min(t1, r);
+        }
+        return true;
+    };
+    if (!edge(-d.x, a.x - c.x0) || !edge(d.x, c.x1 - a.x) || !edge(-d.y, a.y - c.y0) || !edge(d.y, c.y1 - a.y))
+        return std::nullopt;
+    return std::pair{t0 == 0 ? a : a + t0 * d, t1 == 1 ? b : a + t1 * d};
+}
+
+/// Where the piece from → to meets the line of wall w: with e = P1 − P0 and d = to − from,
+/// cross(e, from + s·d − P0) = 0  ⇒  s = cross(e, P0 − from) / cross(e, d), kept in [0, 1].
+Vec2 crossing_point(const FailurePiece& piece, const Wall& w) {
+    const Vec2 e = w.p1 - w.p0, d = piece.to - piece.from;
+    const double den = cross(e, d);
+    // Degenerate: a piece along the wall's line (or of zero length) meets it where it starts.
+    if (!(den != 0)) return piece.from;
+    const double s = cross(e, w.p0 - piece.from) / den;
+    // Degenerate: an overflowing quotient says nothing; the piece's start is still on the path.
+    if (!std::isfinite(s) || s <= 0) return piece.from;
+    if (s >= 1) return piece.to;
+    return piece.from + s * d;
+}
+
+/// One drawn ball's path over the frames drawn: its points in order, which of them are hits, and
+/// whether points were left out at its end (the point budget).
+struct Path {
+    std::uint32_t ball = 0;
+    std::vector<Vec2> points;
+    std::vector<bool> hit;
+    bool cut = false;
+};
+
+/// The failing frame: the failing ball's path in it (from its state before the frame), the walls it hit
+/// there, and where the mark goes.
+struct FailingFrame {
+    std::vector<Vec2> points;
+    std::vector<std::uint32_t> walls;  ///< walls hit in the frame, and the wall a no-tunnel piece went through
+    std::optional<Vec2> mark;          ///< the crossing on the wall, else the ball's state at the frame's end
+    std::optional<std::uint32_t> crossed;  ///< the wall the mark is on, for a no-tunnel piece
+};
+
+/// The balls whose paths are drawn: the first max by index; the failing ball takes the last place when
+/// it is not among them.
+std::vector<std::uint32_t> drawn_balls(std::size_t balls, std::uint32_t max, std::optional<std::uint32_t> failing) {
+    std::vector<std::uint32_t> drawn;
+    const std::size_t n = std::min<std::size_t>(balls, std::max<std::uint32_t>(max, 1));
+    for (std::uint32_t b = 0; b < n; ++b) drawn.push_back(b);
+    if (failing && *failing < balls && *failing >= n) drawn.back() = *failing;
+    return drawn;
+}
+
+/// Keeps, frame by frame, the points of the drawn balls in frames first..last and the frame before the
+/// current one's positions of every ball (so the failing frame's path can start where it did): memory
+/// in the drawn points and the balls, not in the events.
+class Recorder {
+public:
+    Recorder(const Scene& scene, std::int64_t first, std::int64_t last, std::vector<std::uint32_t> drawn,
+             std::uint32_t max_points)
+        : scene_(scene), first_(first), last_(last), slot_(scene.balls.size(), -1) {
+        for (const Ball& b : scene.balls) before_.push_back(b.pos);
+        for (std::uint32_t b : drawn) {
+            slot_[b] = static_cast<std::int32_t>(paths_.size());
+            paths_.push_back({b, {}, {}, false});
+        }
+        // Degenerate: no ball drawn leaves the budget unshared.
+        budget_ = std::max<std::size_t>(1, max_points / std::max<std::size_t>(1, drawn.size()));
+    }
+
+    /// One frame's events, in the run's order.
+    void add_frame(std::span<const Event> events) {
+        // The states of the frame before become where this frame starts.
+        for (const Event& e : current_)
+            if (e.kind == Event::Kind::state && e.ball < before_.size()) before_[e.ball] = e.pos;
+        current_.assign(events.begin(), events.end());
+        if (events.empty()) return;
+        const std::int64_t f = events.front().frame;
+        current_frame_ = f;
+        if (f < first_ || f > last_) return;
+        for (const Event& e : events) {
+            if (e.kind == Event::Kind::overlap || e.ball >= slot_.size() || slot_[e.ball] < 0) continue;
+            // The first frame's hits lie before its state, where the path starts.
+            if (f == first_ && e.kind == Event::Kind::hit) continue;
+            Path& p = paths_[static_cast<std::size_t>(slot_[e.ball])];
+            if (p.points.size() >= budget_) {
+                p.cut = true;
+                continue;
+            }
+            p.points.push_back(e.pos);
+            p.hit.push_back(e.kind == Event::Kind::hit);
+        }
+    }
+
+    /// The failure found in the frame last added (nothing is kept when that frame was not added).
+    void note_failure(const CheckFailure& failure) {
+        if (!current_frame_ || *current_frame_ != failure.frame) return;
+        FailingFrame ff;
+        if (failure.frame > 0 && failure.ball < before_.size()) ff.points.push_back(before_[failure.ball]);
+        for (const Event& e : current_) {
+            if (e.ball != failure.ball || e.kind == Event::Kind::overlap) continue;
+            ff.points.push_back(e.pos);
+            if (e.kind == Event::Kind::hit) ff.walls.push_back(e.index);
+            else ff.mark = e.pos;
+        }
+        if (failure.piece && failure.piece->wall < scene_.walls.size()) {
+            ff.mark = crossing_point(*failure.piece, scene_.walls[failure.piece->wall]);
+            ff.walls.push_back(failure.piece->wall);
+            ff.crossed = failure.piece->wall;
+        }
+        failing_ = std::move(ff);
+    }
+
+    /// Path i, moved out.
+    Path take_path(std::size_t i) { return std::move(paths_[i]); }
+
+    /// Draws path (ball b's) in place of the last ball drawn.
+    void replace_last(Path path, std::uint32_t b) {
+        // Degenerate: with no ball drawn there is no place to give.
+        if (paths_.empty()) return;
+        slot_[paths_.back().ball] = -1;
+        path.ball = b;
+        paths_.back() = std::move(path);
+        slot_[b] = static_cast<std::int32_t>(paths_.size() - 1);
+    }
+
+    /// Whether ball b's path is drawn.
+    bool draws(std::uint32_t b) const { return b < slot_.size() && slot_[b] >= 0; }
+
+    const std::vector<Path>& paths() const { return paths_; }
+    const std::optional<FailingFrame>& failing() const { return failing_; }
+    std::size_t budget() const { return budget_; }
+
+private:
+    const Scene& scene_;
+    std::int64_t first_, last_;
+    std::vector<std::int32_t> slot_;  ///< ball → its place in paths_, −1 if not drawn
+    std::vector<Path> paths_;
+    std::vector<Vec2> before_;        ///< every ball's position before the current frame
+    std::vector<Event> current_;      ///< the frame last added
+    std::optional<std::int64_t> current_frame_;
+    std::optional<FailingFrame> failing_;
+    std::size_t budget_ = 0;
+};
+
+std::string xml_escaped(std::string_view text) {
+    std::string escaped;
+    for (char ch : text) {
+        if (ch == '<') escaped += "&lt;";
+        else if (ch == '>') escaped += "&gt;";
+        else if (ch == '&') escaped += "&amp;";
+        else escaped += ch;
+    }
+    return escaped;
+}
+
+/// Writes a path as polylines through the picture, split where it leaves the clip box.
+void draw_polyline(std::string& out, const std::vector<Vec2>& points, const View& v, const Box& clip_box,
+                   std::string_view style) {
+    std::string run;
+    std::size_t in_run = 0;
+    const auto flush = [&] {
+        if (in_run > 0) fmt::format_to(std::back_inserter(out), "<polyline points=\"{}\" {}/>\n", run, style);
+        run.clear();
+        in_run = 0;
+    };
+    const auto put = [&](Vec2 p) {
+        fmt::format_to(std::back_inserter(run), "{:.3f},{:.3f} ", v.sx(p.x), v.sy(p.y));
+        ++in_run;
+    };
+    if (points.size() == 1) {
+        if (clip_box.holds(points[0])) put(points[0]);
+        flush();
+        return;
+    }
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+        const auto c = clip(points[i], points[i + 1], clip_box);
+        if (!c) {
+            flush();
+            continue;
+        }
+        if (c->first != points[i]) flush();
+        if (in_run == 0) put(c->first);
+        put(c->second);
+        if (c->second != points[i + 1]) flush();
+    }
+    flush();
 }
 
 }  // namespace
 
-std::string render_svg(const Scene& scene, const CheckedRun& run, const RenderOptions& options) {
-    const std::int64_t first = options.first_frame;
-    const std::int64_t last = options.last_frame.value_or(run.frames_run);
-    const auto in_frames = [&](std::int64_t f) { return f >= first && f <= last; };
+namespace {
 
+/// The picture of what a recorder kept.
+std::string draw(const Scene& scene, const Recorder& rec, const std::optional<CheckFailure>& failure,
+                 const RenderOptions& options, std::int64_t first, std::int64_t last) {
     // Bounds of everything drawn.
-    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
-    for (const Wall& w : scene.walls) {
-        grow(x0, x1, w.p0.x), grow(x0, x1, w.p1.x), grow(y0, y1, w.p0.y), grow(y0, y1, w.p1.y);
+    Box all;
+    for (const Wall& w : scene.walls) all.add(w.p0), all.add(w.p1);
+    for (const Circle& c : scene.circles) all.add(Vec2{c.c.x - c.r, c.c.y - c.r}), all.add(Vec2{c.c.x + c.r, c.c.y + c.r});
+    for (const Rect& r : scene.rects) all.add(Vec2{r.left, r.bottom}), all.add(Vec2{r.right, r.top});
+    for (const Path& p : rec.paths())
+        for (Vec2 q : p.points) all.add(q);
+    const std::optional<FailingFrame>& failing = rec.failing();
+    if (failing)
+        for (Vec2 q : failing->points) all.add(q);
+
+    // The failing frame's box: its path and mark, and the walls it met as far as they run near it
+    // (a long wall would otherwise pull the view back out to the whole scene).
+    Box near;
+    if (options.view == RenderView::failure && failing) {
+        for (Vec2 q : failing->points) near.add(q);
+        if (failing->mark) near.add(*failing->mark);
+        if (!near.empty()) {
+            const double s = near.span();
+            const Box reach{near.x0 - s, near.y0 - s, near.x1 + s, near.y1 + s};
+            Box walls;
+            for (std::uint32_t w : failing->walls)
+                if (w < scene.walls.size())
+                    if (auto c = clip(scene.walls[w].p0, scene.walls[w].p1, reach)) walls.add(c->first), walls.add(c->second);
+            near.add(walls);
+        }
+        // Degenerate: a failing frame of one point (frame 0, a ball at rest) has no extent to frame.
+        if (!(near.span() > 0)) near = Box{};
     }
-    for (const Circle& c : scene.circles) {
-        grow(x0, x1, c.c.x - c.r), grow(x0, x1, c.c.x + c.r), grow(y0, y1, c.c.y - c.r), grow(y0, y1, c.c.y + c.r);
+    const bool framed = !near.empty();
+    // The failing frame is seen at least as wide as it is tall: the picture keeps its width (and its
+    // captions room), and the walls beside a steep path stay in view.
+    if (framed && near.x1 - near.x0 < near.y1 - near.y0) {
+        const double mid = 0.5 * near.x0 + 0.5 * near.x1, half = 0.5 * (near.y1 - near.y0);
+        near.x0 = mid - half, near.x1 = mid + half;
     }
-    for (const Rect& r : scene.rects) {
-        grow(x0, x1, r.left), grow(x0, x1, r.right), grow(y0, y1, r.bottom), grow(y0, y1, r.top);
-    }
-    for (const Event& e : run.events)
-        if (e.kind != Event::Kind::overlap && in_frames(e.frame)) grow(x0, x1, e.pos.x), grow(y0, y1, e.pos.y);
-    if (!(x0 <= x1)) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+    Box b = framed ? near : all;
+    if (b.empty()) b = Box{0, 0, 1, 1};
     // Degenerate: a scene of one point still gets a unit-sized picture around it. (Within the accepted
     // range, |x| <= 2^256, the span is finite.)
-    double span = std::max(x1 - x0, y1 - y0);
-    if (!(span > 0)) span = std::max(1.0, std::fabs(x0) * 1e-12);
-    const double pad = span * 0.05;
+    double span = b.span();
+    if (!(span > 0)) span = std::max(1.0, std::fabs(b.x0) * 1e-12);
+    const double pad = span * (framed ? k_failure_pad : k_all_pad);
     View v;
-    v.x0 = x0 - pad, v.x1 = x1 + pad, v.y0 = y0 - pad, v.y1 = y1 + pad;
+    v.x0 = b.x0 - pad, v.x1 = b.x1 + pad, v.y0 = b.y0 - pad, v.y1 = b.y1 + pad;
     const double w_world = v.x1 - v.x0, h_world = v.y1 - v.y0;
     const double inner = options.width - 2 * v.margin;
     v.scale = inner / std::max(w_world, h_world);
-    const double width = w_world * v.scale + 2 * v.margin;
-    const double height = h_world * v.scale + 2 * v.margin + 30;
-    const double normal_len = 0.04 * std::max(w_world, h_world);
+    // What may be drawn: the picture's own extent in the world, margins included.
+    const double m = v.margin / v.scale;
+    const Box clip_box{v.x0 - m, v.y0 - m, v.x1 + m, v.y1 + m};
+    // Normals are 4 % of the larger world span long, in picture units: far from the origin a world-sized
+    // step would round away (at 1e15 the ulp is 0.125).
+    const double normal_px = 0.04 * std::max(w_world, h_world) * v.scale;
 
+    // Caption lines under the picture: what it shows, then what it leaves out.
+    std::vector<std::string> caption;
+    caption.push_back(fmt::format("kernel {}, frames {}..{}, x in [{}, {}], y in [{}, {}]", scene.kernel,
+                                  first, last, b.x0, b.x1, b.y0, b.y1));
+    if (framed)
+        caption.push_back(fmt::format("view: the failing frame {} of ball {} (--view all shows the whole scene)",
+                                      failure->frame, failure->ball));
+    if (failing && failing->mark)
+        caption.push_back(failing->crossed
+                              ? fmt::format("marked at ({}, {}), where the piece crosses wall {}", failing->mark->x,
+                                            failing->mark->y, *failing->crossed)
+                              : fmt::format("marked at ({}, {}), the ball's state at the end of frame {}",
+                                            failing->mark->x, failing->mark->y, failure->frame));
+    const std::size_t drawn = rec.paths().size();
+    if (drawn < scene.balls.size()) {
+        const std::uint32_t lastb = rec.paths().back().ball;
+        const bool swapped = lastb != drawn - 1;
+        const std::string which = !swapped ? fmt::format("balls 0..{}", drawn - 1)
+                                  : drawn >= 2 ? fmt::format("balls 0..{} and the failing ball {}", drawn - 2, lastb)
+                                               : fmt::format("the failing ball {}", lastb);
+        caption.push_back(fmt::format("paths of {} of {} balls drawn ({}), {} left out (--max-balls)", drawn,
+                                      scene.balls.size(), which, scene.balls.size() - drawn));
+    }
+    std::size_t cut = 0;
+    for (const Path& p : rec.paths()) cut += p.cut;
+    if (cut > 0)
+        caption.push_back(fmt::format("{} path(s) end after their first {} points (--max-points {} shared by the balls drawn)",
+                                      cut, rec.budget(), options.max_points));
+
+    const double width = w_world * v.scale + 2 * v.margin;
+    const double height = h_world * v.scale + 2 * v.margin + 30 + k_caption_line * static_cast<double>(caption.size() - 1);
     std::string out;
     auto it = std::back_inserter(out);
     fmt::format_to(it,
@@ -71,20 +360,25 @@ std::string render_svg(const Scene& scene, const CheckedRun& run, const RenderOp
                    "viewBox=\"0 0 {:.0f} {:.0f}\" font-family=\"sans-serif\" font-size=\"12\">\n"
                    "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
                    width, height, width, height);
-    fmt::format_to(it, "<text x=\"8\" y=\"{:.1f}\">kernel {}, frames {}..{}, x in [{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}]</text>\n",
-                   height - 10, scene.kernel, first, last, x0, x1, y0, y1);
-    // Statics first, so paths are drawn over them.
+    for (std::size_t i = 0; i < caption.size(); ++i)
+        fmt::format_to(it, "<text x=\"8\" y=\"{:.1f}\">{}</text>\n",
+                       height - 10 - k_caption_line * static_cast<double>(caption.size() - 1 - i), caption[i]);
+    // Statics first, so paths are drawn over them; each cut to the picture.
     for (std::size_t i = 0; i < scene.rects.size(); ++i) {
         const Rect& r = scene.rects[i];
+        const double left = std::max(r.left, clip_box.x0), right = std::min(r.right, clip_box.x1);
+        const double bottom = std::max(r.bottom, clip_box.y0), top = std::min(r.top, clip_box.y1);
+        if (!(left <= right && bottom <= top)) continue;
         fmt::format_to(it,
                        "<rect x=\"{:.3f}\" y=\"{:.3f}\" width=\"{:.3f}\" height=\"{:.3f}\" fill=\"#2ca02c\" "
                        "fill-opacity=\"0.15\" stroke=\"#2ca02c\" stroke-width=\"1.5\"/>"
                        "<text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"#2ca02c\">r{}</text>\n",
-                       v.sx(r.left), v.sy(r.top), (r.right - r.left) * v.scale, (r.top - r.bottom) * v.scale,
-                       v.sx(r.left) + 3, v.sy(r.top) + 13, i);
+                       v.sx(left), v.sy(top), (right - left) * v.scale, (top - bottom) * v.scale, v.sx(left) + 3,
+                       v.sy(top) + 13, i);
     }
     for (std::size_t i = 0; i < scene.circles.size(); ++i) {
         const Circle& c = scene.circles[i];
+        if (!clip_box.meets(Box{c.c.x - c.r, c.c.y - c.r, c.c.x + c.r, c.c.y + c.r})) continue;
         fmt::format_to(it,
                        "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"{:.3f}\" fill=\"#ff7f0e\" fill-opacity=\"0.15\" "
                        "stroke=\"#ff7f0e\" stroke-width=\"1.5\"/><text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"#ff7f0e\">c{}</text>\n",
@@ -92,78 +386,159 @@ std::string render_svg(const Scene& scene, const CheckedRun& run, const RenderOp
     }
     for (std::size_t i = 0; i < scene.walls.size(); ++i) {
         const Wall& w = scene.walls[i];
+        const auto seen = clip(w.p0, w.p1, clip_box);
+        if (!seen) continue;
+        const auto [a, z] = *seen;
         fmt::format_to(it,
                        "<line x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\" stroke=\"black\" stroke-width=\"2.5\" "
                        "stroke-linecap=\"round\"/>\n",
-                       v.sx(w.p0.x), v.sy(w.p0.y), v.sx(w.p1.x), v.sy(w.p1.y));
-        // The outward normal n̂ = (e_y, −e_x)/|e| drawn from the midpoint; P0 marked by a small square.
+                       v.sx(a.x), v.sy(a.y), v.sx(z.x), v.sy(z.y));
+        // The outward normal n̂ = (e_y, −e_x)/|e| drawn from the midpoint of the part shown; P0 marked by a
+        // small square where it is shown.
         const Vec2 n = unit_normal(w);
-        const Vec2 m = 0.5 * (w.p0 + w.p1);
-        const Vec2 tip = m + normal_len * n;
+        // (y up in the world is y down in the picture: the tip is mid + len·(n̂x, −n̂y).)
+        const double mx = 0.5 * (v.sx(a.x) + v.sx(z.x)), my = 0.5 * (v.sy(a.y) + v.sy(z.y));
+        const double tx = mx + normal_px * n.x, ty = my - normal_px * n.y;
         if (n != Vec2{})
             fmt::format_to(it,
                            "<line x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\" stroke=\"#888\" stroke-width=\"1.2\"/>"
                            "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"2\" fill=\"#888\"/>\n",
-                           v.sx(m.x), v.sy(m.y), v.sx(tip.x), v.sy(tip.y), v.sx(tip.x), v.sy(tip.y));
-        fmt::format_to(it,
-                       "<rect x=\"{:.3f}\" y=\"{:.3f}\" width=\"4\" height=\"4\" fill=\"black\"/>"
-                       "<text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"#555\">w{}</text>\n",
-                       v.sx(w.p0.x) - 2, v.sy(w.p0.y) - 2, v.sx(tip.x) + 4, v.sy(tip.y) + 4, i);
+                           mx, my, tx, ty, tx, ty);
+        if (a == w.p0) fmt::format_to(it, "<rect x=\"{:.3f}\" y=\"{:.3f}\" width=\"4\" height=\"4\" fill=\"black\"/>",
+                                      v.sx(w.p0.x) - 2, v.sy(w.p0.y) - 2);
+        fmt::format_to(it, "<text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"#555\">w{}</text>\n", tx + 4, ty + 4, i);
     }
     // Ball paths: the state at the first frame, then each frame's hits and its state.
-    for (std::size_t b = 0; b < scene.balls.size(); ++b) {
-        const char* colour = k_ball_colours[b % k_ball_colours.size()];
-        std::string points;
-        std::vector<Vec2> hits;
-        Vec2 start{}, end{};
-        bool have = false;
-        for (const Event& e : run.events) {
-            if (e.ball != b || e.kind == Event::Kind::overlap || !in_frames(e.frame)) continue;
-            if (e.frame == first && e.kind == Event::Kind::hit) continue;
-            if (!have) start = e.pos;
-            have = true;
-            end = e.pos;
-            fmt::format_to(std::back_inserter(points), "{:.3f},{:.3f} ", v.sx(e.pos.x), v.sy(e.pos.y));
-            if (e.kind == Event::Kind::hit) hits.push_back(e.pos);
+    for (const Path& p : rec.paths()) {
+        if (p.points.empty()) continue;
+        const char* colour = k_ball_colours[p.ball % k_ball_colours.size()];
+        draw_polyline(out, p.points, v, clip_box,
+                      fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\"", colour));
+        for (std::size_t i = 0; i < p.points.size(); ++i)
+            if (p.hit[i] && clip_box.holds(p.points[i]))
+                fmt::format_to(it, "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"3\" fill=\"{}\"/>\n", v.sx(p.points[i].x),
+                               v.sy(p.points[i].y), colour);
+        const Vec2 start = p.points.front(), end = p.points.back();
+        const bool label = rec.paths().size() <= k_max_labels || (failure && failure->ball == p.ball);
+        if (clip_box.holds(start)) {
+            fmt::format_to(it,
+                           "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"5\" fill=\"white\" stroke=\"{}\" stroke-width=\"2\"/>",
+                           v.sx(start.x), v.sy(start.y), colour);
+            if (label)
+                fmt::format_to(it, "<text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"{}\">b{}</text>", v.sx(start.x) + 7,
+                               v.sy(start.y) - 7, colour, p.ball);
+            out += '\n';
         }
-        if (!have) continue;
-        fmt::format_to(it, "<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\"/>\n", points,
-                       colour);
-        for (const Vec2& h : hits)
-            fmt::format_to(it, "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"3\" fill=\"{}\"/>\n", v.sx(h.x), v.sy(h.y),
+        if (clip_box.holds(end))
+            fmt::format_to(it, "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"5\" fill=\"{}\"/>\n", v.sx(end.x), v.sy(end.y),
                            colour);
-        fmt::format_to(it,
-                       "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"5\" fill=\"white\" stroke=\"{}\" stroke-width=\"2\"/>"
-                       "<text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"{}\">b{}</text>\n"
-                       "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"5\" fill=\"{}\"/>\n",
-                       v.sx(start.x), v.sy(start.y), colour, v.sx(start.x) + 7, v.sy(start.y) - 7, colour, b,
-                       v.sx(end.x), v.sy(end.y), colour);
     }
-    // The failure: a red cross at the failing ball's state in the failing frame.
-    if (run.failure) {
-        const CheckFailure& f = *run.failure;
-        for (const Event& e : run.events)
-            if (e.kind == Event::Kind::state && e.frame == f.frame && e.ball == f.ball) {
-                const double cx = v.sx(e.pos.x), cy = v.sy(e.pos.y);
-                fmt::format_to(it,
-                               "<g stroke=\"red\" stroke-width=\"3\"><line x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" "
-                               "y2=\"{:.3f}\"/><line x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\"/></g>\n",
-                               cx - 9, cy - 9, cx + 9, cy + 9, cx - 9, cy + 9, cx + 9, cy - 9);
-            }
-        std::string text = f.str();
-        if (text.size() > 140) text = text.substr(0, 137) + "...";
-        // XML-escape the message: it quotes path pieces like "(0, 8) -> (-4, 9)".
-        std::string escaped;
-        for (char ch : text) {
-            if (ch == '<') escaped += "&lt;";
-            else if (ch == '>') escaped += "&gt;";
-            else if (ch == '&') escaped += "&amp;";
-            else escaped += ch;
+    // The failure: the failing frame's path drawn over the rest, and a red cross where it happened (on
+    // the wall for a piece that went through one, else at the ball's state at the frame's end).
+    if (failure) {
+        if (failing && failing->points.size() > 1)
+            draw_polyline(out, failing->points, v, clip_box,
+                          "fill=\"none\" stroke=\"red\" stroke-width=\"3\" stroke-opacity=\"0.5\"");
+        if (failing && failing->mark && clip_box.holds(*failing->mark)) {
+            const double cx = v.sx(failing->mark->x), cy = v.sy(failing->mark->y);
+            fmt::format_to(it,
+                           "<g stroke=\"red\" stroke-width=\"3\" data-x=\"{}\" data-y=\"{}\"><line x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" "
+                           "y2=\"{:.3f}\"/><line x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\"/></g>\n",
+                           failing->mark->x, failing->mark->y, cx - 9, cy - 9, cx + 9, cy + 9, cx - 9, cy + 9, cx + 9,
+                           cy - 9);
         }
-        fmt::format_to(it, "<text x=\"8\" y=\"18\" fill=\"red\">{}</text>\n", escaped);
+        // The message in at most two lines above the picture, broken at a space, cut with "..." when longer.
+        const std::size_t per_line = std::max<std::size_t>(20, static_cast<std::size_t>((width - 16) / k_char_px));
+        std::string text = failure->str();
+        if (text.size() > 2 * per_line) text = text.substr(0, 2 * per_line - 3) + "...";
+        std::string second;
+        if (text.size() > per_line) {
+            std::size_t at = text.rfind(' ', per_line);
+            if (at == std::string::npos || at < per_line / 2) at = per_line;
+            second = text.substr(at + (text[at] == ' ' ? 1 : 0));
+            text.resize(at);
+            if (second.size() > per_line) second = second.substr(0, per_line - 3) + "...";
+        }
+        // XML-escape the message: it quotes path pieces like "(0, 8) -> (-4, 9)".
+        fmt::format_to(it, "<text x=\"8\" y=\"18\" fill=\"red\">{}</text>\n", xml_escaped(text));
+        if (!second.empty()) fmt::format_to(it, "<text x=\"8\" y=\"32\" fill=\"red\">{}</text>\n", xml_escaped(second));
     }
     out += "</svg>\n";
     return out;
+}
+
+}  // namespace
+
+std::string render_svg(const Scene& scene, const CheckedRun& run, const RenderOptions& options) {
+    const std::int64_t first = options.first_frame;
+    const std::int64_t last = options.last_frame.value_or(run.frames_run);
+    std::optional<std::uint32_t> failing_ball;
+    if (run.failure) failing_ball = run.failure->ball;
+    Recorder rec(scene, first, last, drawn_balls(scene.balls.size(), options.max_balls, failing_ball),
+                 options.max_points);
+    // The events come frame after frame: each frame is handed over whole, in one pass; the failing frame
+    // is the first run of events with the failure's frame number.
+    const std::span<const Event> events = run.events;
+    bool noted = false;
+    for (std::size_t at = 0; at < events.size();) {
+        std::size_t end = at;
+        while (end < events.size() && events[end].frame == events[at].frame) ++end;
+        rec.add_frame(events.subspan(at, end - at));
+        if (run.failure && !noted && run.failure->frame == events[at].frame) {
+            rec.note_failure(*run.failure);
+            noted = true;
+        }
+        at = end;
+    }
+    return draw(scene, rec, run.failure, options, first, last);
+}
+
+RenderResult render_run(const Scene& scene, KernelId kernel, const RenderOptions& options,
+                        const RenderProgress& progress) {
+    const std::int64_t first = options.first_frame;
+    const std::int64_t last = std::min(options.last_frame.value_or(scene.frames), scene.frames);
+    Recorder rec(scene, first, last, drawn_balls(scene.balls.size(), options.max_balls, std::nullopt),
+                 options.max_points);
+    bool noted = false;
+    CheckOptions co;
+    co.keep_events = false;
+    co.on_frame = [&](std::span<const Event> events) { rec.add_frame(events); };
+    co.stop_after = [&](const CheckedRun& r) {
+        if (r.failure && !noted) {
+            rec.note_failure(*r.failure);
+            noted = true;
+        }
+        if (progress) progress(r.frames_run, scene.frames);
+        // Past the last frame drawn the run goes on only to find the first failure.
+        return r.frames_run >= last && (r.failure || options.view == RenderView::all);
+    };
+    const CheckedRun run = run_checked(scene, kernel, scene.frames, scene.checks, co);
+    RenderResult result;
+    result.frames_run = run.frames_run;
+    result.failure = run.failure;
+    result.error = run.error;
+    if (run.failure && !rec.draws(run.failure->ball)) {
+        // The failing ball was not known while its path went by: step it again alone, without checks and
+        // as run_checked's World did (CheckOptions' default WorldOptions), and draw it in place of the
+        // last ball drawn. The same bits: balls are independent and options change no event (world.hpp).
+        const std::uint32_t failing = run.failure->ball;
+        Scene alone = scene;
+        alone.balls = {scene.balls[failing]};
+        Recorder solo(alone, first, last, {0}, static_cast<std::uint32_t>(rec.budget()));
+        World world(alone, kernel, CheckOptions{}.world);
+        std::vector<Event> events;
+        world.start(events);
+        solo.add_frame(events);
+        const std::int64_t to = std::min(last, run.frames_run);
+        for (std::int64_t f = 1; f <= to; ++f) {
+            events.clear();
+            if (world.step(events)) break;
+            solo.add_frame(events);
+        }
+        rec.replace_last(solo.take_path(0), failing);
+    }
+    result.svg = draw(scene, rec, run.failure, options, first, options.last_frame.value_or(run.frames_run));
+    return result;
 }
 
 }  // namespace ricochet

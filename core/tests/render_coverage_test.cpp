@@ -3,6 +3,7 @@
 // sx = (x − x0)·scale + 40, sy = (y1 − y)·scale + 40 (y up in the world, down in SVG).
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 
 #include "ricochet/render.hpp"
@@ -194,16 +195,22 @@ TEST(Render, AFailureIsACrossAtTheBallsStateAndItsMessageIsEscaped) {
     f.ball = 0;
     f.message = "piece (0, 8) -> (-4, 9) < wall & more";
     run.failure = f;
-    const std::string svg = render_svg(s, run);
-    // Frame 2's state (10, 5) ↦ (727.273, 400): a cross 9 px each way.
-    EXPECT_TRUE(has(svg, "<g stroke=\"red\" stroke-width=\"3\"><line x1=\"718.273\" y1=\"391.000\" x2=\"736.273\" "
+    // The whole scene's view, so the mapping is the box's (the failure view is render_run_test's).
+    RenderOptions o;
+    o.view = RenderView::all;
+    const std::string svg = render_svg(s, run, o);
+    // Frame 2's state (10, 5) ↦ (727.273, 400): a cross 9 px each way; no piece, so no crossing.
+    EXPECT_TRUE(has(svg, "marked at (10, 5), the ball's state at the end of frame 2"));
+    EXPECT_TRUE(has(svg, "<g stroke=\"red\" stroke-width=\"3\" data-x=\"10\" data-y=\"5\"><line x1=\"718.273\" y1=\"391.000\" x2=\"736.273\" "
                          "y2=\"409.000\"/><line x1=\"718.273\" y1=\"409.000\" x2=\"736.273\" y2=\"391.000\"/></g>"));
     EXPECT_EQ(count(svg, "<g stroke=\"red\""), 1u);
     EXPECT_TRUE(has(svg, "piece (0, 8) -&gt; (-4, 9) &lt; wall &amp; more</text>"));
     EXPECT_FALSE(has(svg, "-> (-4"));
 }
 
-TEST(Render, ALongFailureMessageIsCutTo140Characters) {
+TEST(Render, ALongFailureMessageIsCutToTwoLinesOfThePicturesWidth) {
+    // 800 px hold (800 − 16) / 7 = 112 characters a line: a message of 300 without a space is cut to
+    // 221 and "...", and broken at 112.
     CheckedRun run = path_run();
     CheckFailure f;
     f.frame = 7;  // no state at frame 7: no cross, only the message
@@ -211,13 +218,119 @@ TEST(Render, ALongFailureMessageIsCutTo140Characters) {
     run.failure = f;
     const std::string svg = render_svg(box_scene(), run);
     EXPECT_EQ(count(svg, "<g stroke=\"red\""), 0u);
-    const std::string open = "<text x=\"8\" y=\"18\" fill=\"red\">";
-    const std::size_t from = svg.find(open);
-    ASSERT_NE(from, std::string::npos);
-    const std::size_t to = svg.find("</text>", from);
-    const std::string text = svg.substr(from + open.size(), to - from - open.size());
-    EXPECT_EQ(text.size(), 140u);
-    EXPECT_EQ(text, f.str().substr(0, 137) + "...");
+    const auto line = [&](const std::string& open) {
+        const std::size_t from = svg.find(open);
+        if (from == std::string::npos) return std::string("(none)");
+        const std::size_t to = svg.find("</text>", from);
+        return svg.substr(from + open.size(), to - from - open.size());
+    };
+    const std::string first = line("<text x=\"8\" y=\"18\" fill=\"red\">");
+    const std::string second = line("<text x=\"8\" y=\"32\" fill=\"red\">");
+    EXPECT_EQ(first, f.str().substr(0, 112));
+    EXPECT_EQ(second, f.str().substr(112, 109) + "...");
+    // A shorter message breaks at its last space before the 112th character.
+    f.message = std::string(60, 'a') + " " + std::string(60, 'b');
+    run.failure = f;
+    const std::string two = render_svg(box_scene(), run);
+    EXPECT_TRUE(has(two, "ball 0: " + std::string(60, 'a') + "</text>")) << two;
+    EXPECT_TRUE(has(two, "<text x=\"8\" y=\"32\" fill=\"red\">" + std::string(60, 'b') + "</text>"));
+}
+
+}  // namespace
+}  // namespace ricochet
+
+namespace ricochet {
+namespace {
+
+// The failure's mark and view from a run written by hand: one wall along y = 0 from (0, 0) to (10, 0),
+// one ball whose frame 1 goes from `from` to `to`, and a no-tunnel failure naming that piece.
+std::string piece_svg(Vec2 from, Vec2 to, RenderView view = RenderView::failure) {
+    Scene s;
+    s.walls = {{{0, 0}, {10, 0}}};
+    s.balls = {{from, to - from}};
+    CheckedRun run;
+    run.frames_run = 1;
+    run.events = {state(0, 0, from, to - from), state(1, 0, to, to - from)};
+    CheckFailure f;
+    f.frame = 1;
+    f.piece = FailurePiece{from, to, 0};
+    run.failure = f;
+    RenderOptions o;
+    o.view = view;
+    return render_svg(s, run, o);
+}
+
+TEST(Render, TheMarkStaysOnThePieceWhenItsLineMeetsTheWallOutsideIt) {
+    // (2, 3) → (6, 1): the line meets y = 0 at s = 3/2, past the piece's end: the mark is the end (6, 1).
+    EXPECT_TRUE(has(piece_svg({2, 3}, {6, 1}), "data-x=\"6\" data-y=\"1\""));
+    // (2, −1) → (2, −5) moves away from the line (s = −1/4): the mark is the start.
+    EXPECT_TRUE(has(piece_svg({2, -1}, {2, -5}), "data-x=\"2\" data-y=\"-1\""));
+    // Along the wall's line (e × d = 0): the start.
+    EXPECT_TRUE(has(piece_svg({2, 0}, {5, 0}), "data-x=\"2\" data-y=\"0\""));
+    // A crossing inside: (2, 2) → (4, −2) meets y = 0 halfway, at (3, 0); "where the piece crosses".
+    const std::string svg = piece_svg({2, 2}, {4, -2});
+    EXPECT_TRUE(has(svg, "data-x=\"3\" data-y=\"0\""));
+    EXPECT_TRUE(has(svg, "marked at (3, 0), where the piece crosses wall 0"));
+}
+
+TEST(Render, TheFailureViewLeavesOutWhatLiesOutsideItAndCutsWhatCrossesIt) {
+    // The piece (2, 2) → (4, −2): box [2, 4] × [−2, 2] with the wall's part within one span (4) of it,
+    // x in [0, 8]; widened in nothing (8 ≥ 4). A circle and a rect far off are not drawn; a rect across
+    // the view's edge is cut to it; a path far off draws no polyline, no marker and no label.
+    Scene s;
+    s.walls = {{{0, 0}, {10, 0}}, {{100, 100}, {101, 100}}};
+    s.circles = {{{50, 50}, 1}};
+    s.rects = {{-100, -1, 1, 1}, {60, 60, 61, 61}};
+    s.balls = {{{2, 2}, {2, -4}}, {{70, 70}, {1, 0}}};
+    CheckedRun run;
+    run.frames_run = 1;
+    run.events = {state(0, 0, {2, 2}), state(0, 1, {70, 70}), state(1, 0, {4, -2}), state(1, 1, {71, 70})};
+    CheckFailure f;
+    f.frame = 1;
+    f.piece = FailurePiece{{2, 2}, {4, -2}, 0};
+    run.failure = f;
+    const std::string svg = render_svg(s, run);
+    EXPECT_TRUE(has(svg, "x in [0, 8], y in [-2, 2]")) << svg;
+    EXPECT_FALSE(has(svg, ">c0<"));
+    EXPECT_FALSE(has(svg, ">r1<"));
+    EXPECT_FALSE(has(svg, ">w1<"));
+    EXPECT_FALSE(has(svg, ">b1<"));
+    EXPECT_TRUE(has(svg, ">b0<"));
+    // The view [−1.2, 9.2] × [−3.2, 3.2], scale 720/10.4, margins 40/scale = 0.578 world units: rect 0's
+    // left side −100 is cut to −1.778 (the picture's left edge), so it is 2.778·720/10.4 = 192.308 wide.
+    EXPECT_TRUE(has(svg, "width=\"192.308\" height=\"138.462\" fill=\"#2ca02c\"")) << svg;
+    // Wall 0 runs past the view on the right (10 > 9.2 + 0.578): cut at the picture's edge, x = 800, so
+    // its far end P1 is not there; its P0 square is.
+    EXPECT_TRUE(has(svg, "x2=\"800.000\"")) << svg;
+    EXPECT_EQ(count(svg, "width=\"4\" height=\"4\""), 1u);
+}
+
+TEST(Render, NonFinitePointsBoundNothingAndDrawNoPiece) {
+    // A lecture kernel's NaN: the path (0, 0) → NaN → (10, 0) draws no piece to or from the NaN, and the
+    // bounds are the finite points' ([0, 10] × [0, 0]).
+    Scene s;
+    s.balls = {{{0, 0}, {1, 0}}};
+    CheckedRun run;
+    run.frames_run = 2;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    run.events = {state(0, 0, {0, 0}), state(1, 0, {nan, 0}), state(2, 0, {10, 0})};
+    const std::string svg = render_svg(s, run);
+    EXPECT_TRUE(has(svg, "x in [0, 10], y in [0, 0]")) << svg;
+    EXPECT_EQ(count(svg, "<polyline"), 0u) << svg;
+}
+
+TEST(Render, AFailureAtFrameZeroWithOnePointIsShownInTheWholeView) {
+    // Nothing to frame (one point): the whole scene's view, the mark at the ball's state.
+    Scene s = box_scene();
+    CheckedRun run;
+    run.events = {state(0, 0, {5, 5})};
+    CheckFailure f;
+    f.check = Check::boundary;
+    run.failure = f;
+    const std::string svg = render_svg(s, run);
+    EXPECT_FALSE(has(svg, "view: the failing frame"));
+    EXPECT_TRUE(has(svg, "x in [0, 10], y in [0, 10]"));
+    EXPECT_TRUE(has(svg, "data-x=\"5\" data-y=\"5\""));
 }
 
 }  // namespace

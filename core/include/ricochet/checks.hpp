@@ -138,12 +138,20 @@ SpeedBound speed_bound(KernelId kernel);
 /// core/tests/promise_test.cpp), so 256 leaves a factor of 2.
 inline constexpr double k_hit_accuracy_ulps = 256.0;
 
+/// Where a path broke: the printed piece from → to and the wall it went through (no-tunnel).
+struct FailurePiece {
+    Vec2 from;               ///< the piece's start
+    Vec2 to;                 ///< its end
+    std::uint32_t wall = 0;  ///< the wall it went through
+};
+
 /// The first broken invariant of a run.
 struct CheckFailure {
     Check check = Check::no_tunnel;  ///< the invariant that broke
     std::int64_t frame = 0;          ///< the first frame it broke in
     std::uint32_t ball = 0;          ///< the ball it broke for
     std::string message;  ///< expected against actual, for people
+    std::optional<FailurePiece> piece;  ///< no-tunnel: the piece and its wall, for pictures (message unchanged)
     /// "CHECK broke at frame F ball I: MESSAGE".
     std::string str() const;
 };
@@ -161,13 +169,18 @@ struct CheckedRun {
 struct CheckOptions {
     bool keep_events = true;                                   ///< store events in CheckedRun::events
     std::function<void(std::span<const Event>)> on_frame;      ///< called with each frame's events, in order
+    /// Asked after each frame stepped without error (0 included) once its checks are done, with the run
+    /// so far (its hash not yet set): true ends the run after that frame, its hash covering the frames
+    /// run. Checks and events up to it are as without it.
+    std::function<bool(const CheckedRun&)> stop_after;
     /// How the run's World and the checks' own worlds step (broad-phase's excepted). Options change no
     /// event's bits (world.hpp; broad-phase checks it), so no check's answer depends on them.
     WorldOptions world{};
 };
 
 /// Runs frames 0..frames of scene under kernel, asserting checks on every frame. After the first failure
-/// the remaining checks are skipped but the run goes on (the hash covers the whole run). The run's World
+/// the remaining checks are skipped but the run goes on (the hash covers the whole run) unless
+/// options.stop_after ends it. The run's World
 /// and the checks' own worlds step with options.world (by default as `ricochet run` does), except
 /// broad-phase's.
 CheckedRun run_checked(const Scene& scene, KernelId kernel, std::int64_t frames, std::span<const Check> checks,

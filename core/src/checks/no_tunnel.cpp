@@ -26,11 +26,13 @@ public:
             const long other = path_.advance(e.ball, e.pos);
             // Taken only if the two disagree, a bug in one of them: no test has found such a path.
             if (!w && other >= 0) w = static_cast<std::uint32_t>(other);
-            if (w && !found)
+            if (w && !found) {
                 found = failure(Check::no_tunnel, f.index, e.ball,
                                 fmt::format("the path piece {} -> {} goes through wall {} ({}); expected no piece to "
                                             "cross a wall",
                                             q, e.pos, *w, scene_.walls[*w]));
+                found->piece = FailurePiece{q, e.pos, *w};
+            }
         }
         return found;
     }

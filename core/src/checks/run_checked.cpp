@@ -153,7 +153,9 @@ CheckedRun run_checked(const Scene& scene, KernelId kernel, std::int64_t frames,
     finish_frame(events);
     if (checker) run.failure = checker->run(world, {0, events, {}, {}, {}});
     if (run.failure) checker.reset();
-    for (std::int64_t f = 1; f <= frames; ++f) {
+    const auto stop = [&] { return options.stop_after && options.stop_after(run); };
+    const bool stop_at_0 = stop();
+    for (std::int64_t f = 1; f <= frames && !stop_at_0; ++f) {
         const bool checking = checker.has_value();
         if (checking) {
             before.assign(world.balls().begin(), world.balls().end());
@@ -170,6 +172,7 @@ CheckedRun run_checked(const Scene& scene, KernelId kernel, std::int64_t frames,
         if (checking) run.failure = checker->run(world, {f, events, before, memory_before, {}});
         // Nothing left to check: drop the checks' own worlds and their work.
         if (run.failure) checker.reset();
+        if (stop()) break;
     }
     run.hash = hasher.digest();
     return run;
