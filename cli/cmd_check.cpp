@@ -1,6 +1,8 @@
-// `ricochet check`: the whole regression gate. Replays the corpus (replays/ of the source tree), runs
-// the lecture's pinball example, then the property suite if it was built, then a short fuzz campaign
-// if the fuzz targets were built; one summary, non-zero exit if anything failed.
+// `ricochet check`: the whole regression gate. Replays the project's corpus (--replay-dir, else
+// $RICOCHET_REPLAY_DIR, else replays/ of the project folder: ricochet_cli/project.hpp), runs the lecture's
+// pinball example, then the property suite if it was built, then a short fuzz campaign if the fuzz targets
+// were built (both saving what they find into that same folder); one summary, non-zero exit if anything
+// failed, 2 if there is no project.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,22 +19,35 @@
 #include "ricochet/checks.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/scene_log.hpp"
+#include "ricochet_cli/project.hpp"
+
+extern char** environ;
 
 namespace ricochet::cli {
 
 namespace {
 
-/// Runs argv (no shell), inheriting stdout/stderr; returns its exit status (127 if it could not start).
-int run_program(const std::vector<std::string>& argv) {
+/// Runs argv (no shell), inheriting stdout/stderr, with env_extra ("NAME=VALUE") added to the environment
+/// (replacing a variable of the same name); returns its exit status (127 if it could not start).
+int run_program(const std::vector<std::string>& argv, const std::vector<std::string>& env_extra = {}) {
+    // Built before fork: the child only calls execve.
+    std::vector<char*> args, env;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    for (char** e = environ; *e != nullptr; ++e) {
+        const std::string_view var = *e;
+        bool replaced = false;
+        for (const std::string& x : env_extra) replaced = replaced || var.starts_with(x.substr(0, x.find('=') + 1));
+        if (!replaced) env.push_back(*e);
+    }
+    for (const std::string& x : env_extra) env.push_back(const_cast<char*>(x.c_str()));
+    env.push_back(nullptr);
     std::fflush(stdout);
     std::fflush(stderr);
     const pid_t pid = ::fork();
     if (pid < 0) return 127;
     if (pid == 0) {
-        std::vector<char*> args;
-        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        args.push_back(nullptr);
-        ::execv(args[0], args.data());
+        ::execve(args[0], args.data(), env.data());
         std::_Exit(127);
     }
     int status = 0;
@@ -81,6 +96,7 @@ void register_check(CLI::App& app) {
         long fuzz_runs = 10000;
         long fuzz_seed = 1;
         bool no_properties = false;
+        std::string replay_dir;
         std::uint64_t max_work = k_default_max_work;
     };
     auto opt = std::make_shared<Options>();
@@ -94,8 +110,20 @@ void register_check(CLI::App& app) {
         ->check(number_in(0, 86400, "a number of seconds"));
     add_max_work_option(*sub, opt->max_work);
     sub->add_flag("--no-properties", opt->no_properties, "skip the property suite");
+    sub->add_option("--replay-dir", opt->replay_dir,
+                    "the corpus to replay, and where the properties and the fuzz campaign save failures "
+                    "(default $RICOCHET_REPLAY_DIR, else the project folder's replays/)");
     sub->callback([opt] {
         if (opt->fuzz_time < 0) opt->fuzz_time = env_fuzz_seconds();
+        const auto project = find_project(opt->replay_dir);
+        if (!project) {
+            fmt::print(stderr, "{}\n", no_project_message("check", "run it in a project folder or pass --replay-dir DIR"));
+            throw Exit{2};
+        }
+        const std::filesystem::path replays = project->replay_dir;
+        // The children (properties, fuzz) get it absolute: they may resolve it from elsewhere.
+        std::error_code abs_ec;
+        const std::filesystem::path replays_abs = std::filesystem::absolute(replays, abs_ec);
         const bool by_time = opt->fuzz_time >= 0;
         std::vector<std::string> summary;
         bool failed = false;
@@ -106,17 +134,21 @@ void register_check(CLI::App& app) {
         };
 
         // 1. The corpus.
-        fmt::print("== replay {}\n", source_replays_dir().string());
+        fmt::print("== replay {}\n", replays.string());
         ReplaySummary r;
-        const double t_replay = timed([&] { r = replay_paths({source_replays_dir().string()}, false, opt->max_work); });
+        const double t_replay = timed([&] { r = replay_paths({replays.string()}, false, opt->max_work); });
         failed = failed || r.failed > 0 || r.bad_input;
         summary.push_back(fmt::format("replay      {} passed, {} failed ({:.2f} s)", r.passed, r.failed, t_replay));
 
         // 2. The lecture's pinball experiment, under every kernel: robust must keep its checks.
-        const std::filesystem::path pinball = source_replays_dir() / "pinball.scene";
+        const std::filesystem::path pinball = replays / "pinball.scene";
         fmt::print("== lecture pinball example {}\n", pinball.string());
+        std::error_code pin_ec;
         auto parsed = read_scene_log(pinball);
-        if (auto* d = std::get_if<Diagnostic>(&parsed)) {
+        if (!std::filesystem::exists(pinball, pin_ec)) {
+            // A project of its own need not carry the lecture's example.
+            summary.push_back(fmt::format("pinball     skipped (no {})", pinball.string()));
+        } else if (auto* d = std::get_if<Diagnostic>(&parsed)) {
             fmt::print(stderr, "{}\n", d->str());
             failed = true;
             summary.push_back("pinball     unreadable");
@@ -154,7 +186,8 @@ void register_check(CLI::App& app) {
         } else {
             fmt::print("== properties {}\n", props);
             int rc = 0;
-            const double t = timed([&] { rc = run_program({props}); });
+            // The suite saves its failures into (and first replays the saved logs of) the same corpus.
+            const double t = timed([&] { rc = run_program({props}, {fmt::format("{}={}", k_replay_dir_env, replays_abs.string())}); });
             failed = failed || rc != 0;
             summary.push_back(fmt::format("properties  {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
         }
@@ -165,7 +198,7 @@ void register_check(CLI::App& app) {
         } else if (!any_fuzz_target_built()) {
             summary.push_back("fuzz        not built (configure with clang-14 and RICOCHET_FUZZ=ON)");
         } else {
-            std::vector<std::string> argv = {self_exe(), "fuzz"};
+            std::vector<std::string> argv = {self_exe(), "fuzz", "--replay-dir", replays_abs.string()};
             if (by_time) {
                 fmt::print("== fuzz for {} s\n", opt->fuzz_time);
                 argv.insert(argv.end(), {"--time", std::to_string(opt->fuzz_time)});

@@ -24,11 +24,11 @@ struct Exit {
 void register_run(CLI::App& app);
 /// `ricochet record LOG`.
 void register_record(CLI::App& app);
-/// `ricochet replay [PATH...] [--hashes]`.
+/// `ricochet replay [PATH...] [--hashes]` (default: the project's replays/, ricochet_cli/project.hpp).
 void register_replay(CLI::App& app);
 /// `ricochet render LOG -o FILE.svg [--frames A:B]`.
 void register_render(CLI::App& app);
-/// `ricochet check`.
+/// `ricochet check [--replay-dir DIR]`: the project's corpus, properties and a short fuzz campaign.
 void register_check(CLI::App& app);
 /// `ricochet help [COMMAND]`: the program's help, or a command's, on stdout.
 void register_help(CLI::App& app);
@@ -46,8 +46,6 @@ void print_unknown_command(const CLI::App& app, const std::string& word);
 Scene load_scene_or_exit(const std::filesystem::path& path);
 /// The kernel called name, or a diagnostic on stderr and Exit{2}.
 KernelId kernel_or_exit(const std::string& name);
-/// The folder of the source tree's corpus (replays/ under the source dir baked in at configure time).
-std::filesystem::path source_replays_dir();
 /// Outcome of replaying some logs (counts, and whether a path or log could not be read or run).
 struct ReplaySummary {
     int passed = 0;

@@ -1,4 +1,4 @@
-// Helpers shared by the subcommands: loading logs, kernels, the corpus location, replaying.
+// Helpers shared by the subcommands: loading logs, kernels, replaying.
 #include <algorithm>
 #include <chrono>
 #include <system_error>
@@ -30,8 +30,6 @@ KernelId kernel_or_exit(const std::string& name) {
     }
     return *k;
 }
-
-std::filesystem::path source_replays_dir() { return std::filesystem::path(RICOCHET_SOURCE_DIR) / "replays"; }
 
 ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work) {
     ReplaySummary s;

@@ -40,6 +40,24 @@ big=$dir/big.scene
   i=0; while [ $i -lt 200 ]; do printf 'ball %d.5 50 0.25 0.125\n' $((i % 90 + 5)); i=$((i + 1)); done; } >"$big"
 enospc="ricochet: error: writing standard output: No space left on device"
 
+# The project folder (cli/include/ricochet_cli/project.hpp): a clone-like folder with replays/ and a log in
+# it, a subfolder two levels down, and a folder no project holds (mktemp's folder is under /tmp).
+proj=$dir/proj
+mkproj() {
+  unset RICOCHET_REPLAY_DIR
+  mkdir -p "$proj/replays" "$proj/a/b" "$dir/none"
+  cp "$log" "$proj/replays/t.scene"
+}
+# no_project_here: skip if some folder above $dir/none holds replays/ (then it is in a project after all).
+no_project_here() {
+  d=$dir
+  while [ "$d" != / ]; do [ -d "$d/replays" ] && { echo "skip $case: $d holds replays/"; exit 77; }; d=$(dirname "$d"); done
+  [ -d /replays ] && { echo "skip $case: /replays exists"; exit 77; }
+  return 0
+}
+# The tree this script is in (the source tree ricochet was built from, in a CTest run).
+src=$(cd "$(dirname "$0")/../.." && pwd)
+
 case "$case" in
   full-run)          run_full 1 run "$log"; first_line err "$enospc" ;;
   full-replay)       run_full 1 replay "$log"; first_line err "$enospc" ;;
@@ -115,6 +133,43 @@ case "$case" in
   work-default)      run 2 replay "$big"
                      first_line err "ricochet: error: $big: too much work: 10000000 frames × 200 balls × (4 walls + 0 circles + 0 rects + 1) = 10000000000 is over the bound of 100000000; raise it with --max-work N (0: no bound)" ;;
   work-frames-flag)  run 2 run "$log" --frames 5 --max-work 19; grep -q "= 20 is over the bound of 19" "$dir/err" || fail "work not from --frames" ;;
+  # --- The project folder: defaults from the nearest folder holding replays/, never the source tree.
+  project-here)      mkproj; cd "$proj"; run 0 replay
+                     grep -q '^ok   replays/t\.scene: ' "$dir/out" || fail "replay did not read the project's replays/"
+                     has out "1 passed, 0 failed" ;;
+  project-subfolder) mkproj; cd "$proj/a/b"; run 0 replay
+                     grep -q '^ok   \.\./\.\./replays/t\.scene: ' "$dir/out" || fail "replay did not find the project above"
+                     has out "1 passed, 0 failed" ;;
+  project-build-folder) mkproj; mkdir -p "$proj/build/replays"; : >"$proj/build/CMakeCache.txt"; cd "$proj/build"
+                     run 0 replay; grep -q '^ok   \.\./replays/t\.scene: ' "$dir/out" || fail "a build folder was taken for the project" ;;
+  project-none)      mkproj; no_project_here; cd "$dir/none"
+                     run 2 replay
+                     first_line err "ricochet replay: error: no project folder: neither $dir/none nor any folder above it holds replays/; name the logs or folders to replay (ricochet replay PATH...), or set RICOCHET_REPLAY_DIR"
+                     [ ! -s "$dir/out" ] || fail "replay printed on stdout"
+                     run 2 check --no-properties --fuzz-runs 0
+                     first_line err "ricochet check: error: no project folder: neither $dir/none nor any folder above it holds replays/; run it in a project folder or pass --replay-dir DIR, or set RICOCHET_REPLAY_DIR"
+                     run 2 fuzz --runs 1 --cache-dir "$dir/cache"
+                     first_line err "ricochet fuzz: error: no project folder: neither $dir/none nor any folder above it holds replays/; run it in a project folder or pass --replay-dir DIR, or set RICOCHET_REPLAY_DIR"
+                     [ -z "$(ls -A "$dir/none")" ] || fail "something was written in the folder" ;;
+  project-env)       mkproj; no_project_here; cd "$dir/none"
+                     export RICOCHET_REPLAY_DIR="$proj/replays"; run 0 replay; unset RICOCHET_REPLAY_DIR
+                     grep -q "^ok   $proj/replays/t\.scene: " "$dir/out" || fail "RICOCHET_REPLAY_DIR was not read"
+                     run 0 check --no-properties --fuzz-runs 0 --replay-dir "$proj/replays"
+                     has out "check passed"; grep -q "^pinball     skipped (no $proj/replays/pinball.scene)" "$dir/out" || fail "no pinball line" ;;
+  project-check)     mkproj; cd "$proj/a"; run 0 check --no-properties --fuzz-runs 0
+                     has out "== replay ../replays"
+                     grep -q '^replay      1 passed, 0 failed' "$dir/out" || fail "check did not replay the project's corpus" ;;
+  project-fuzz)      mkproj; bins=$(dirname "$ricochet")/../fuzz
+                     "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
+                     git -C "$src" rev-parse 2>/dev/null || { echo "skip $case: $src is not a git checkout"; exit 77; }
+                     before=$(git -C "$src" status --porcelain --ignored=no)
+                     cd "$proj/a/b"
+                     # Fixed seed and count, no clock: lecture-double fails within a few thousand inputs.
+                     run 1 fuzz --target scene --kernel lecture-double --runs 100000 --seed 1 --cache-dir "$dir/cache"
+                     ls "$proj"/replays/fuzz-scene-*.scene >/dev/null 2>&1 || fail "no failure log saved in the project's replays/"
+                     [ "$(git -C "$src" status --porcelain --ignored=no)" = "$before" ] || fail "the source tree changed: $(git -C "$src" status --porcelain)"
+                     [ -z "$(ls -A "$proj/a/b")" ] || fail "something was written in the current folder"
+                     run 0 replay "$proj/replays" ;;
   *) echo "unknown case $case" >&2; exit 1 ;;
 esac
 echo "ok $case"
