@@ -5,6 +5,7 @@
 // in the folder under any name.
 #include "failure.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -67,8 +68,10 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, 
     // Everything else is written in this campaign's own folder first.
     const fs::path minimized = r.work / ("minimized-" + artifact);
     const fs::path scratch = r.work / "scratch.log";
-    // Minimize: libFuzzer keeps the input failing while it shrinks it; capped in runs (and time).
-    std::vector<std::string> argv = {r.bin.string(), "-minimize_crash=1", fmt::format("-runs={}", k_minimize_runs)};
+    // Minimize: libFuzzer keeps the input failing while it shrinks it; capped in runs (and time). A campaign
+    // of fewer --runs per worker minimizes with as many: N bounds every libFuzzer process it starts.
+    const std::uint64_t minimize_runs = opt.runs > 0 ? std::min<std::uint64_t>(opt.runs, k_minimize_runs) : k_minimize_runs;
+    std::vector<std::string> argv = {r.bin.string(), "-minimize_crash=1", fmt::format("-runs={}", minimize_runs)};
     if (opt.runs == 0) argv.push_back(fmt::format("-max_total_time={}", k_minimize_seconds));
     if (opt.seed > 0) argv.push_back(fmt::format("-seed={}", opt.seed));
     argv.insert(argv.end(), {"-exact_artifact_path=" + minimized.string(), raw.string()});
