@@ -19,6 +19,8 @@
 #include "ricochet/checks.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/scene_log.hpp"
+#include "ricochet_cli/json.hpp"
+#include "ricochet_cli/json_stdout.hpp"
 #include "ricochet_cli/project.hpp"
 
 extern char** environ;
@@ -97,6 +99,7 @@ void register_check(CLI::App& app) {
         long fuzz_seed = 1;
         bool no_properties = false;
         std::string replay_dir;
+        bool json = false;
         std::uint64_t max_work = k_default_max_work;
     };
     auto opt = std::make_shared<Options>();
@@ -113,6 +116,9 @@ void register_check(CLI::App& app) {
     sub->add_option("--replay-dir", opt->replay_dir,
                     "the corpus to replay, and where the properties and the fuzz campaign save failures "
                     "(default $RICOCHET_REPLAY_DIR, else the project folder's replays/)");
+    sub->add_flag("--json", opt->json,
+                  "print one JSON document (docs/cli-json.md, schema ricochet-check/1) on stdout instead of the summary; "
+                  "everything else goes to stderr");
     sub->callback([opt] {
         if (opt->fuzz_time < 0) opt->fuzz_time = env_fuzz_seconds();
         const auto project = find_project(opt->replay_dir);
@@ -125,6 +131,16 @@ void register_check(CLI::App& app) {
         std::error_code abs_ec;
         const std::filesystem::path replays_abs = std::filesystem::absolute(replays, abs_ec);
         const bool by_time = opt->fuzz_time >= 0;
+        // Under --json every stage's output, the children's too, goes to stderr; the document is built as
+        // the stages run.
+        JsonStdout json_out(opt->json);
+        JsonWriter json;
+        json.begin_object().member("schema", fmt::format("ricochet-check/{}", k_json_schema_version));
+        json.member("replay_dir", replays.string()).key("stages").begin_object();
+        // stage(NAME, STATUS): opens the stage's object; the caller adds members and closes it.
+        const auto stage = [&](std::string_view name, std::string_view status) -> JsonWriter& {
+            return json.key(name).begin_object().member("status", status);
+        };
         std::vector<std::string> summary;
         bool failed = false;
         const auto timed = [](auto&& f) {
@@ -139,6 +155,9 @@ void register_check(CLI::App& app) {
         const double t_replay = timed([&] { r = replay_paths({replays.string()}, false, opt->max_work); });
         failed = failed || r.failed > 0 || r.bad_input;
         summary.push_back(fmt::format("replay      {} passed, {} failed ({:.2f} s)", r.passed, r.failed, t_replay));
+        stage("replay", r.failed > 0 || r.bad_input ? "failed" : "passed").member("seconds", t_replay);
+        write_replay_members(json, r);
+        json.end_object();
 
         // 2. The lecture's pinball experiment, under every kernel: robust must keep its checks.
         const std::filesystem::path pinball = replays / "pinball.scene";
@@ -148,10 +167,12 @@ void register_check(CLI::App& app) {
         if (!std::filesystem::exists(pinball, pin_ec)) {
             // A project of its own need not carry the lecture's example.
             summary.push_back(fmt::format("pinball     skipped (no {})", pinball.string()));
+            stage("pinball", "skipped").member("message", fmt::format("no {}", pinball.string())).end_object();
         } else if (auto* d = std::get_if<Diagnostic>(&parsed)) {
             fmt::print(stderr, "{}\n", d->str());
             failed = true;
             summary.push_back("pinball     unreadable");
+            stage("pinball", "failed").member("message", d->str()).end_object();
         } else if (const std::string over = work_over_budget(pinball.string(), std::get<Scene>(parsed),
                                                               std::get<Scene>(parsed).frames, opt->max_work);
                    !over.empty()) {
@@ -159,9 +180,13 @@ void register_check(CLI::App& app) {
             fmt::print(stderr, "ricochet: error: {}\n", over);
             failed = true;
             summary.push_back("pinball     not run (over --max-work)");
+            stage("pinball", "failed").member("message", over).end_object();
         } else {
             const Scene& scene = std::get<Scene>(parsed);
             std::string line = "pinball    ";
+            bool pinball_failed = false;
+            // Its status is known after the kernels: written after them.
+            json.key("pinball").begin_object().key("kernels").begin_object();
             CheckOptions quiet;
             quiet.keep_events = false;
             for (KernelId k : k_all_kernels) {
@@ -171,18 +196,23 @@ void register_check(CLI::App& app) {
                            ok ? "every check held"
                               : run.failure ? run.failure->str() : run.error->message());
                 line += fmt::format(" {}={}", k, ok ? "ok" : "broken");
+                json.member(fmt::format("{}", k), ok ? "ok" : "broken");
                 // The lecture kernels are expected to break; the robust and exact kernels may not.
-                if (!ok && (k == KernelId::robust || k == KernelId::exact)) failed = true;
+                if (!ok && (k == KernelId::robust || k == KernelId::exact)) pinball_failed = true;
             }
+            failed = failed || pinball_failed;
             summary.push_back(line);
+            json.end_object().member("status", pinball_failed ? "failed" : "passed").end_object();
         }
 
         // 3. The property suite, if this build has it.
         const std::string props = RICOCHET_PROPERTIES_EXE;
         if (opt->no_properties) {
             summary.push_back("properties  skipped (--no-properties)");
+            stage("properties", "skipped").end_object();
         } else if (props.empty() || !std::filesystem::exists(props)) {
             summary.push_back("properties  not built (build target ricochet_properties)");
+            stage("properties", "not-built").end_object();
         } else {
             fmt::print("== properties {}\n", props);
             int rc = 0;
@@ -190,13 +220,16 @@ void register_check(CLI::App& app) {
             const double t = timed([&] { rc = run_program({props}, {fmt::format("{}={}", k_replay_dir_env, replays_abs.string())}); });
             failed = failed || rc != 0;
             summary.push_back(fmt::format("properties  {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
+            stage("properties", rc == 0 ? "passed" : "failed").member("exit", rc).member("seconds", t).end_object();
         }
 
         // 4. A short fuzz campaign through `ricochet fuzz`, if the targets are built.
         if (by_time ? opt->fuzz_time == 0 : opt->fuzz_runs == 0) {
             summary.push_back(by_time ? "fuzz        skipped (--fuzz-time 0)" : "fuzz        skipped (--fuzz-runs 0)");
+            stage("fuzz", "skipped").end_object();
         } else if (!any_fuzz_target_built()) {
             summary.push_back("fuzz        not built (configure with clang-14 and RICOCHET_FUZZ=ON)");
+            stage("fuzz", "not-built").end_object();
         } else {
             std::vector<std::string> argv = {self_exe(), "fuzz", "--replay-dir", replays_abs.string()};
             if (by_time) {
@@ -210,6 +243,14 @@ void register_check(CLI::App& app) {
             const double t = timed([&] { rc = run_program(argv); });
             failed = failed || rc != 0;
             summary.push_back(fmt::format("fuzz        {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
+            stage("fuzz", rc == 0 ? "passed" : "failed").member("exit", rc).member("seconds", t).end_object();
+        }
+        json.end_object();
+        const int code = failed ? 1 : 0;
+        if (json_out.on()) {
+            json_out.restore();
+            write_stdout(json.member("stopped", false).member("passed", !failed).member("exit", code).end_object().str());
+            throw Exit{code};
         }
 
         fmt::print("== summary\n");

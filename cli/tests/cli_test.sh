@@ -57,6 +57,18 @@ no_project_here() {
 }
 # The tree this script is in (the source tree ricochet was built from, in a CTest run).
 src=$(cd "$(dirname "$0")/../.." && pwd)
+# json_is FILE PYTHON-EXPRESSION [ARG...]: FILE (out or err) is one JSON document and the expression, over it
+# as d (and the ARGs as a), holds; python3's json module parses it, so any syntax error fails.
+json_is() {
+  f=$1 e=$2; shift 2
+  python3 -c 'import json, sys
+d = json.load(open(sys.argv[1]))
+a = sys.argv[3:]
+sys.exit(0 if eval(sys.argv[2]) else 1)' "$dir/$f" "$e" "$@" 2>"$dir/py" || fail "std$f is not JSON where $e: $(cat "$dir/py")"
+}
+# A valid log whose expect hash is wrong: replay fails it (exit 1).
+badlog=$dir/bad.scene
+printf 'ricochet 1\nframes 10\nwall 0 -5 0 5\nball -1 0 0.5 0\nexpect hash 0123456789abcdef\n' >"$badlog"
 
 case "$case" in
   full-run)          run_full 1 run "$log"; first_line err "$enospc" ;;
@@ -171,6 +183,37 @@ case "$case" in
                      [ "$(git -C "$src" status --porcelain --ignored=no)" = "$before" ] || fail "the source tree changed: $(git -C "$src" status --porcelain)"
                      [ -z "$(ls -A "$proj/a/b")" ] || fail "something was written in the current folder"
                      run 0 replay "$proj/replays" ;;
+  # --- --json: one document on stdout (docs/cli-json.md), the human lines on stderr, the same exit status.
+  json-replay-pass)  run 0 replay --json "$log"
+                     json_is out 'd["schema"] == "ricochet-replay/1" and d["exit"] == 0 and d["passed"] == 1 and d["failed"] == 0'
+                     json_is out 'd["bad_input"] is False and d["errors"] == [] and len(d["logs"]) == 1'
+                     json_is out 'd["logs"][0] == {"path": a[0], "status": "passed", "message": a[1], "hash": a[2]}' "$log" \
+                       "10 frames, hash $("$ricochet" replay --hashes "$log" | cut -c1-16)" "$("$ricochet" replay --hashes "$log" | cut -c1-16)"
+                     has err "1 passed, 0 failed" ;;
+  json-replay-fail)  run 1 replay --json "$log" "$badlog"
+                     json_is out 'd["exit"] == 1 and d["passed"] == 1 and d["failed"] == 1 and [l["status"] for l in d["logs"]] == ["passed", "failed"]'
+                     json_is out 'd["logs"][1]["path"] == a[0] and d["logs"][1]["message"].startswith("hash expected 0123456789abcdef, got ")' "$badlog"
+                     grep -q "^FAIL $badlog: hash expected 0123456789abcdef, got " "$dir/err" || fail "the FAIL line is not on stderr" ;;
+  json-replay-missing) run 2 replay --json "$dir/nope.scene"
+                     json_is out 'd["exit"] == 2 and d["bad_input"] and d["logs"][0]["status"] == "missing" and d["logs"][0]["hash"] is None' ;;
+  json-replay-escape) q=$dir/$(printf 'q"a\\b\tc\377d'); mkdir "$q"; cp "$log" "$q/t.scene"; run 0 replay --json "$q"
+                     # A quote, a backslash, a tab and a byte that is not UTF-8 (written as U+FFFD).
+                     json_is out 'd["logs"][0]["path"].endswith("q\"a\\b\tc\ufffdd/t.scene")'
+                     grep -q 'q\\"a\\\\b\\tc\\ufffdd/t.scene' "$dir/out" || fail "not escaped as expected" ;;
+  json-check)        mkproj; cp "$badlog" "$proj/replays/"; cd "$proj"; run 1 check --json --no-properties --fuzz-runs 0
+                     json_is out 'd["schema"] == "ricochet-check/1" and d["passed"] is False and d["exit"] == 1 and d["replay_dir"] == "replays"'
+                     json_is out 'd["stages"]["replay"]["status"] == "failed" and d["stages"]["replay"]["passed"] == 1 and d["stages"]["replay"]["failed"] == 1'
+                     json_is out 'd["stages"]["pinball"]["status"] == "skipped" and d["stages"]["properties"]["status"] == "skipped" and d["stages"]["fuzz"]["status"] == "skipped"'
+                     grep -q '^== replay replays$' "$dir/err" || fail "the stage lines are not on stderr"
+                     rm "$proj/replays/bad.scene"; cp "$src/replays/pinball.scene" "$proj/replays/"
+                     run 0 check --json --no-properties --fuzz-runs 0
+                     json_is out 'd["passed"] is True and d["exit"] == 0 and d["stages"]["pinball"]["status"] == "passed" and d["stages"]["pinball"]["kernels"]["robust"] == "ok"' ;;
+  json-fuzz)         mkproj; bins=$(dirname "$ricochet")/../fuzz
+                     "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
+                     cd "$proj"; run 0 fuzz --json --target scene --runs 20 --seed 1 --cache-dir "$dir/cache"
+                     json_is out 'd["schema"] == "ricochet-fuzz/1" and d["exit"] == 0 and d["kernel"] == "robust" and d["runs_per_worker"] == 20 and d["time_s"] is None and d["seed"] == 1'
+                     json_is out 'd["replay_dir"] == "replays" and d["new_failures"] == 0 and [t["target"] for t in d["targets"]] == ["scene"] and d["targets"][0]["runs"] >= 20'
+                     grep -q '^target ' "$dir/err" || fail "the human summary is not on stderr" ;;
   *) echo "unknown case $case" >&2; exit 1 ;;
 esac
 echo "ok $case"

@@ -9,11 +9,60 @@
 #include "cache.hpp"
 #include "failure.hpp"
 #include "plan.hpp"
+#include "ricochet_cli/json.hpp"
+#include "ricochet_cli/json_stdout.hpp"
 #include "workers.hpp"
 
 namespace ricochet::fuzz {
 
+namespace {
+
+/// The campaign's --json document (docs/cli-json.md, ricochet-fuzz/1).
+std::string json_summary(const Plan& plan, const CampaignOptions& opt, double wall, int code) {
+    cli::JsonWriter json;
+    json.begin_object().member("schema", fmt::format("ricochet-fuzz/{}", cli::k_json_schema_version));
+    json.member("kernel", opt.kernel).key("runs_per_worker");
+    if (opt.runs > 0)
+        json.value(opt.runs);
+    else
+        json.null();
+    json.key("time_s");
+    if (opt.runs > 0)
+        json.null();
+    else
+        json.value(opt.time);
+    json.key("seed");
+    if (opt.seed > 0)
+        json.value(static_cast<std::uint64_t>(opt.seed));
+    else
+        json.null();
+    json.member("jobs", plan.jobs).member("seconds", wall);
+    json.member("replay_dir", plan.replay_dir.string()).member("cache_dir", plan.cache.string());
+    int new_failures = 0, known = 0;
+    json.key("targets").begin_array();
+    for (const TargetRun& r : plan.runs) {
+        new_failures += r.new_failures;
+        known += r.known_failures;
+        json.begin_object().member("target", r.target).member("workers", r.workers).member("runs", r.runs_done);
+        json.member("exec_per_s_per_worker", static_cast<double>(r.runs_done) / std::max(r.seconds, 1e-9) / r.workers);
+        json.member("cov", r.cov).member("corpus", r.corpus_size);
+        json.member("new_failures", r.new_failures).member("known_failures", r.known_failures);
+        json.key("logs").begin_array();
+        for (const auto& [path, is_new] : r.logs) json.begin_object().member("path", path).member("new", is_new).end_object();
+        json.end_array().key("stopped_early").begin_array();
+        for (const std::string& stop : r.stops) json.value(stop);
+        json.end_array().end_object();
+    }
+    json.end_array();
+    json.member("new_failures", new_failures).member("known_failures", known).member("stopped", false).member("exit", code);
+    return json.end_object().str();
+}
+
+}  // namespace
+
 int run_campaign(const CampaignOptions& opt) {
+    // Under --json everything the campaign prints goes to stderr; stdout gets the document at the end.
+    cli::JsonStdout json_out(opt.json);
     std::optional<Plan> plan = make_plan(opt);
     // Degenerate: bad usage or missing binaries (make_plan said which).
     if (!plan) return 2;
@@ -43,7 +92,12 @@ int run_campaign(const CampaignOptions& opt) {
     for (const TargetRun& r : plan->runs)
         for (const std::string& stop : r.stops) fmt::print("stopped early: {}\n", stop);
     fmt::print("kernel {}, {:.0f} s, exec/s per worker; {}\n", opt.kernel, wall, any_new ? "NEW FAILURES (exit 1)" : "no new failures");
-    return any_new ? 1 : 0;
+    const int code = any_new ? 1 : 0;
+    if (json_out.on()) {
+        json_out.restore();
+        fmt::print("{}", json_summary(*plan, opt, wall, code));
+    }
+    return code;
 }
 
 }  // namespace ricochet::fuzz

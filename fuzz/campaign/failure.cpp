@@ -130,10 +130,12 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, 
     }
     if (!saved->is_new) {
         fmt::print("    known: the same case is already there: {}\n", saved->path.string());
+        r.logs.emplace_back(saved->path.string(), false);
         ++r.known_failures;
         return;
     }
     fmt::print("    scene log: {}  (ricochet replay {})\n", saved->path.string(), saved->path.string());
+    r.logs.emplace_back(saved->path.string(), true);
     // The contract: replay shows the failure the target saw. A log that passes replay without expecting a
     // failure would guard against nothing: say so.
     const SceneOrDiagnostic parsed = read_scene_log(saved->path);

@@ -45,6 +45,7 @@ struct TargetRun {
     int new_failures = 0;                        ///< failures saved (or kept) as new
     int known_failures = 0;                      ///< failures whose log was already saved
     std::vector<std::string> notes;              ///< lines for the end of the report
+    std::vector<std::pair<std::string, bool>> logs;  ///< failure logs saved (path, true) or found known (path, false)
     std::vector<std::string> stops;              ///< why workers stopped before the campaign's end
 };
 
