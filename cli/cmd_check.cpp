@@ -2,7 +2,8 @@
 // $RICOCHET_REPLAY_DIR, else replays/ of the project folder: ricochet_cli/project.hpp), runs the lecture's
 // pinball example, then the property suite if it was built, then a short fuzz campaign if the fuzz targets
 // were built (both saving what they find into that same folder); one summary, non-zero exit if anything
-// failed, 2 if there is no project.
+// failed, 2 if there is no project. SIGINT or SIGTERM stops it between two stages (a stage's replay between
+// two logs, a child program gets the signal too): the summary of what ran, exit 128 + the signal.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,6 +23,7 @@
 #include "ricochet_cli/json.hpp"
 #include "ricochet_cli/json_stdout.hpp"
 #include "ricochet_cli/project.hpp"
+#include "ricochet_cli/stop_signal.hpp"
 
 extern char** environ;
 
@@ -52,10 +54,8 @@ int run_program(const std::vector<std::string>& argv, const std::vector<std::str
         ::execve(args[0], args.data(), env.data());
         std::_Exit(127);
     }
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) return 127;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    // A SIGINT or SIGTERM that reached check only (not its process group) is passed on.
+    return wait_passing_stop(pid);
 }
 
 std::string self_exe() {
@@ -131,6 +131,8 @@ void register_check(CLI::App& app) {
         std::error_code abs_ec;
         const std::filesystem::path replays_abs = std::filesystem::absolute(replays, abs_ec);
         const bool by_time = opt->fuzz_time >= 0;
+        std::vector<std::string> summary;
+        bool failed = false;
         // Under --json every stage's output, the children's too, goes to stderr; the document is built as
         // the stages run.
         JsonStdout json_out(opt->json);
@@ -141,8 +143,23 @@ void register_check(CLI::App& app) {
         const auto stage = [&](std::string_view name, std::string_view status) -> JsonWriter& {
             return json.key(name).begin_object().member("status", status);
         };
-        std::vector<std::string> summary;
-        bool failed = false;
+        // The end, after the last stage or at a SIGINT or SIGTERM between two: the summary (or the
+        // document) of the stages that ran, then the exit.
+        const StopOnSignal stop;
+        const auto finish = [&] {
+            json.end_object();
+            const bool stopped = stop_requested();
+            const int code = stopped ? stop_exit_code() : failed ? 1 : 0;
+            if (json_out.on()) {
+                json_out.restore();
+                write_stdout(json.member("stopped", stopped).member("passed", code == 0).member("exit", code).end_object().str());
+                throw Exit{code};
+            }
+            fmt::print("== summary\n");
+            for (const auto& s : summary) fmt::print("{}\n", s);
+            fmt::print("{}\n", stopped ? fmt::format("check stopped by {}", stop_signal_name()) : failed ? "check FAILED" : "check passed");
+            throw Exit{code};
+        };
         const auto timed = [](auto&& f) {
             const auto t0 = std::chrono::steady_clock::now();
             f();
@@ -158,6 +175,7 @@ void register_check(CLI::App& app) {
         stage("replay", r.failed > 0 || r.bad_input ? "failed" : "passed").member("seconds", t_replay);
         write_replay_members(json, r);
         json.end_object();
+        if (stop_requested()) finish();
 
         // 2. The lecture's pinball experiment, under every kernel: robust must keep its checks.
         const std::filesystem::path pinball = replays / "pinball.scene";
@@ -205,6 +223,8 @@ void register_check(CLI::App& app) {
             json.end_object().member("status", pinball_failed ? "failed" : "passed").end_object();
         }
 
+        if (stop_requested()) finish();
+
         // 3. The property suite, if this build has it.
         const std::string props = RICOCHET_PROPERTIES_EXE;
         if (opt->no_properties) {
@@ -222,6 +242,8 @@ void register_check(CLI::App& app) {
             summary.push_back(fmt::format("properties  {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
             stage("properties", rc == 0 ? "passed" : "failed").member("exit", rc).member("seconds", t).end_object();
         }
+
+        if (stop_requested()) finish();
 
         // 4. A short fuzz campaign through `ricochet fuzz`, if the targets are built.
         if (by_time ? opt->fuzz_time == 0 : opt->fuzz_runs == 0) {
@@ -245,18 +267,7 @@ void register_check(CLI::App& app) {
             summary.push_back(fmt::format("fuzz        {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
             stage("fuzz", rc == 0 ? "passed" : "failed").member("exit", rc).member("seconds", t).end_object();
         }
-        json.end_object();
-        const int code = failed ? 1 : 0;
-        if (json_out.on()) {
-            json_out.restore();
-            write_stdout(json.member("stopped", false).member("passed", !failed).member("exit", code).end_object().str());
-            throw Exit{code};
-        }
-
-        fmt::print("== summary\n");
-        for (const auto& s : summary) fmt::print("{}\n", s);
-        fmt::print("{}\n", failed ? "check FAILED" : "check passed");
-        throw Exit{failed ? 1 : 0};
+        finish();
     });
 }
 

@@ -1,6 +1,7 @@
 // `ricochet replay [PATH...] [--hashes] [--json] [--max-work N]`: every log's checks and expect lines; exit 0 all
 // passed, 1 some failed, 2 some path or log could not be read (a missing path, a folder without logs, a
-// malformed log), was over the work bound, or no PATH was given and no project folder was found.
+// malformed log), was over the work bound, or no PATH was given and no project folder was found; 128 + the
+// signal if SIGINT or SIGTERM stopped it (between two logs: the summary says how many ran).
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 #include "ricochet_cli/json.hpp"
 #include "ricochet_cli/json_stdout.hpp"
 #include "ricochet_cli/project.hpp"
+#include "ricochet_cli/stop_signal.hpp"
 
 namespace ricochet::cli {
 
@@ -40,8 +42,9 @@ void register_replay(CLI::App& app) {
             paths.push_back(project->replay_dir.string());
         }
         JsonStdout json_out(opt->json);
+        const StopOnSignal stop;
         const ReplaySummary s = replay_paths(paths, opt->hashes, opt->max_work);
-        const int code = s.bad_input ? 2 : s.failed > 0 ? 1 : 0;
+        const int code = s.stopped ? stop_exit_code() : s.bad_input ? 2 : s.failed > 0 ? 1 : 0;
         if (json_out.on()) {
             json_out.restore();
             JsonWriter json;

@@ -66,6 +66,7 @@ struct ReplaySummary {
 /// Replays every log under paths (folders recursively, *.scene), one line per log on stdout, then
 /// "N passed, N failed". With hashes_only, prints "HASH PATH" per log instead (and no summary). A path
 /// that does not exist, a folder without logs and a log over max_work (work_budget.hpp) are bad input.
+/// Under a StopOnSignal, a SIGINT or SIGTERM stops it before the next log (stopped set, summary printed).
 ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work);
 
 class JsonWriter;

@@ -11,6 +11,8 @@
 #include "ricochet/hash.hpp"
 #include "ricochet/scene_log.hpp"
 #include "ricochet_cli/json.hpp"
+#include "ricochet_cli/stop_signal.hpp"
+#include "progress.hpp"
 
 namespace ricochet::cli {
 
@@ -64,9 +66,20 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
         }
     }
     s.total = logs.size();
+    Progress progress("ricochet replay", Progress::Unit::log);
+    std::size_t done = 0;
     for (const auto& log : logs) {
+        // A log boundary: a SIGINT or SIGTERM (the caller holds a StopOnSignal) stops before the next log.
+        if (stop_requested()) {
+            s.stopped = true;
+            progress.clear();
+            fmt::print(stderr, "ricochet replay: stopped by {} after {} of {} logs\n", stop_signal_name(), done, logs.size());
+            break;
+        }
+        progress.update(static_cast<std::int64_t>(done++), static_cast<std::int64_t>(logs.size()));
         auto parsed = read_scene_log(log);
         if (auto* d = std::get_if<Diagnostic>(&parsed)) {
+            progress.clear();
             fmt::print(stderr, "{}\n", d->str());
             if (!hashes_only) write_stdout(fmt::format("FAIL {}: unreadable log\n", log.string()));
             s.logs.push_back({log.string(), "unreadable", d->str(), std::nullopt});
@@ -76,6 +89,7 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
         }
         const Scene& scene = std::get<Scene>(parsed);
         if (const std::string error = work_over_budget(log.string(), scene, scene.frames, max_work); !error.empty()) {
+            progress.clear();
             fmt::print(stderr, "ricochet: error: {}\n", error);
             if (!hashes_only) write_stdout(fmt::format("FAIL {}: not run (over --max-work)\n", log.string()));
             s.logs.push_back({log.string(), "over-budget", error, std::nullopt});

@@ -66,6 +66,26 @@ d = json.load(open(sys.argv[1]))
 a = sys.argv[3:]
 sys.exit(0 if eval(sys.argv[2]) else 1)' "$dir/$f" "$e" "$@" 2>"$dir/py" || fail "std$f is not JSON where $e: $(cat "$dir/py")"
 }
+# stop_after_first_line SIGNAL ARGS...: starts ricochet ARGS in the background (stdout in $dir/out, stderr in
+# $dir/err), waits until it has printed its first line (synchronised on its output, not on a delay), sends
+# SIGNAL, and leaves its exit status in rc. The commands given run for hours unless stopped, so the verdict
+# does not depend on timing.
+stop_after_first_line() {
+  sig=$1; shift
+  "$ricochet" "$@" >"$dir/out" 2>"$dir/err" &
+  pid=$!
+  while [ ! -s "$dir/out" ]; do
+    kill -0 "$pid" 2>/dev/null || { wait "$pid"; fail "ricochet $* ended (exit $?) before printing a line"; }
+    sleep 0.02
+  done
+  kill "-$sig" "$pid"
+  wait "$pid"
+  rc=$?
+}
+# A log that runs for hours (10^7 frames, 200 balls): a whole frame prints 200 state lines.
+long=$dir/long.scene
+{ printf 'ricochet 1\nframes 10000000\nwall 0 0 0 100\nwall 0 100 100 100\nwall 100 100 100 0\nwall 100 0 0 0\n'
+  i=0; while [ $i -lt 200 ]; do printf 'ball %d.5 50 0.25 0.125\n' $((i % 90 + 5)); i=$((i + 1)); done; } >"$long"
 # A valid log whose expect hash is wrong: replay fails it (exit 1).
 badlog=$dir/bad.scene
 printf 'ricochet 1\nframes 10\nwall 0 -5 0 5\nball -1 0 0.5 0\nexpect hash 0123456789abcdef\n' >"$badlog"
@@ -214,6 +234,60 @@ case "$case" in
                      json_is out 'd["schema"] == "ricochet-fuzz/1" and d["exit"] == 0 and d["kernel"] == "robust" and d["runs_per_worker"] == 20 and d["time_s"] is None and d["seed"] == 1'
                      json_is out 'd["replay_dir"] == "replays" and d["new_failures"] == 0 and [t["target"] for t in d["targets"]] == ["scene"] and d["targets"][0]["runs"] >= 20'
                      grep -q '^target ' "$dir/err" || fail "the human summary is not on stderr" ;;
+  # --- SIGINT and SIGTERM: stop at the next frame or log boundary, say what was done, exit 128 + signal.
+  stop-run)          stop_after_first_line INT run "$long" --max-work 0
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     frame=$(sed -n 's/^ricochet run: stopped by SIGINT after frame \([0-9]*\) of 10000000$/\1/p' "$dir/err")
+                     [ -n "$frame" ] || fail "no 'stopped by SIGINT after frame F' line"
+                     # Whole frames: frame 0 and 1..F, 200 state lines each (and hit lines), nothing after.
+                     [ "$(grep -c '^state ' "$dir/out")" = $(( (frame + 1) * 200 )) ] || fail "not $((frame + 1)) whole frames of output"
+                     [ "$(tail -n 1 "$dir/out" | cut -d' ' -f1-3)" = "state $frame 199" ] || fail "the last line is not frame $frame's last ball"
+                     [ "$(ls -A "$dir" | sort | tr '\n' ' ')" = "bad.scene big.scene err long.scene out tiny.scene " ] ||
+                       fail "files left: $(ls -A "$dir")" ;;
+  stop-run-term)     stop_after_first_line TERM run "$long" --max-work 0
+                     [ "$rc" = 143 ] || fail "exit $rc after SIGTERM, expected 143"
+                     grep -q '^ricochet run: stopped by SIGTERM after frame [0-9]* of 10000000$' "$dir/err" || fail "no stopped line" ;;
+  stop-replay)       mkdir "$dir/many"
+                     # 301 logs of 2 000 frames × 200 balls: minutes of work.
+                     sed 's/^frames 10000000$/frames 2000/' "$long" >"$dir/many/a.scene"
+                     i=0; while [ $i -lt 300 ]; do ln "$dir/many/a.scene" "$dir/many/l$i.scene"; i=$((i + 1)); done
+                     stop_after_first_line INT replay "$dir/many"
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     n=$(sed -n 's/^ricochet replay: stopped by SIGINT after \([0-9]*\) of 301 logs$/\1/p' "$dir/err")
+                     [ -n "$n" ] || fail "no 'stopped by SIGINT after N of 301 logs' line"
+                     [ "$(grep -c '^ok   ' "$dir/out")" = "$n" ] || fail "not $n verdict lines"
+                     [ "$(tail -n 1 "$dir/out")" = "$n passed, 0 failed" ] || fail "the summary is not '$n passed, 0 failed'" ;;
+  stop-replay-json)  mkdir "$dir/many"; sed 's/^frames 10000000$/frames 2000/' "$long" >"$dir/many/a.scene"
+                     i=0; while [ $i -lt 300 ]; do ln "$dir/many/a.scene" "$dir/many/l$i.scene"; i=$((i + 1)); done
+                     # Under --json the verdict lines go to stderr: wait on a copy of replay's stdout there.
+                     "$ricochet" replay --json "$dir/many" >"$dir/json" 2>"$dir/out" & pid=$!
+                     while ! grep -q '^ok ' "$dir/out"; do kill -0 "$pid" 2>/dev/null || fail "replay ended early"; sleep 0.02; done
+                     kill -INT "$pid"; wait "$pid"; rc=$?; mv "$dir/json" "$dir/out"
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     json_is out 'd["exit"] == 130 and d["stopped"] is True and d["total"] == 301 and 1 <= d["passed"] == len(d["logs"]) < 301' ;;
+  stop-record)       cp "$long" "$dir/r.scene"
+                     # record prints nothing before its write: wait until its run is under way (a tenth of a
+                     # second of its own CPU time, in /proc/PID/stat: reading a 200-line log takes microseconds),
+                     # then stop it; the log must be unchanged.
+                     [ -r /proc/$$/stat ] || { echo "skip $case: no /proc"; exit 77; }
+                     "$ricochet" record "$dir/r.scene" --max-work 0 >"$dir/out" 2>"$dir/err" & pid=$!
+                     while [ "$(awk '{print $14}' "/proc/$pid/stat" 2>/dev/null || echo 0)" -lt 10 ]; do
+                       kill -0 "$pid" 2>/dev/null || fail "record ended early"; sleep 0.02; done
+                     kill -INT "$pid"; wait "$pid"; rc=$?
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     has err "ricochet record: the log is unchanged; stopped by SIGINT"
+                     cmp -s "$long" "$dir/r.scene" || fail "record changed the log"
+                     [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left" ;;
+  stop-fuzz)         mkproj; bins=$(dirname "$ricochet")/../fuzz
+                     "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
+                     cd "$proj"
+                     # A campaign of a week, stopped once it has started: the header is its first line.
+                     stop_after_first_line INT fuzz --target scene --time 604800 --seed 1 --cache-dir "$dir/cache"
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     grep -q 'stopped by SIGINT (exit 130)$' "$dir/out" || fail "the summary does not say it was stopped"
+                     [ -d "$dir/cache/scene/robust/corpus" ] || fail "the corpus folder is gone"
+                     [ -z "$(ls -A "$dir/cache/runs")" ] || fail "the campaign's own folder is left: $(ls -A "$dir/cache/runs")"
+                     ! grep -q 'stopped early' "$dir/out" || fail "stopped workers reported as stopped early" ;;
   *) echo "unknown case $case" >&2; exit 1 ;;
 esac
 echo "ok $case"

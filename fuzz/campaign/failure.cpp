@@ -25,6 +25,7 @@
 #include "run_dir.hpp"
 #include "ricochet/checks.hpp"
 #include "ricochet/scene_log.hpp"
+#include "ricochet_cli/stop_signal.hpp"
 #include "sha1.hpp"
 
 namespace ricochet::fuzz {
@@ -155,6 +156,12 @@ void convert_failures(TargetRun& r, const CampaignOptions& opt, const Plan& plan
     std::set<std::string> signatures;
     int converted = 0;
     for (const std::string& a : fresh) {
+        // A stopped campaign minimizes nothing more: the artifacts are kept below, to convert another time.
+        if (cli::stop_requested()) {
+            r.notes.push_back(fmt::format("stopped by {}: {} failure artifact(s) kept unconverted in {}", cli::stop_signal_name(),
+                                          fresh.size() - static_cast<std::size_t>(converted), r.kept.string()));
+            break;
+        }
         if (converted++ == k_max_failures_converted) {
             r.notes.push_back(fmt::format("{} more failure artifact(s) left unconverted in {}", fresh.size() - k_max_failures_converted,
                                           r.kept.string()));
