@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "progress.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/hash.hpp"
 #include "ricochet/record.hpp"
@@ -67,7 +68,11 @@ void register_record(CLI::App& app) {
         // may end the process there and then.
         std::optional<ExitOnSignal> exit_on_signal;
         exit_on_signal.emplace("ricochet record: the log is unchanged; stopped by ");
-        const CheckedRun run = record_expectations(scene);
+        // frame 0 (the initial states) is the first call.
+        Progress progress(fmt::format("ricochet record {}", opt->log));
+        std::int64_t frame = -1;
+        const CheckedRun run = record_expectations(scene, [&](std::span<const Event>) { progress.update(++frame, scene.frames); });
+        progress.clear();
         if (run.error) {
             fmt::print(stderr, "{}: error: {}; the log is unchanged\n", opt->log, run.error->message());
             throw Exit{1};
