@@ -272,6 +272,13 @@ case "$case" in
                      kill -INT "$pid"; wait "$pid"; rc=$?; mv "$dir/json" "$dir/out"
                      [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
                      json_is out 'd["exit"] == 130 and d["stopped"] is True and d["total"] == 301 and 1 <= d["passed"] == len(d["logs"]) < 301' ;;
+  stop-check)        mkproj; sed 's/^frames 10000000$/frames 2000/' "$long" >"$proj/replays/a.scene"
+                     i=0; while [ $i -lt 300 ]; do ln "$proj/replays/a.scene" "$proj/replays/l$i.scene"; i=$((i + 1)); done
+                     cd "$proj"; stop_after_first_line INT check --no-properties --fuzz-runs 0
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     has out "check stopped by SIGINT"; has out "== summary"
+                     ! grep -q '^== lecture pinball' "$dir/out" || fail "check went on to the next stage"
+                     grep -q '^ricochet replay: stopped by SIGINT after [0-9]* of 302 logs$' "$dir/err" || fail "no stopped line" ;;
   stop-record)       cp "$long" "$dir/r.scene"
                      # record prints nothing before its write: wait until its run is under way (a tenth of a
                      # second of its own CPU time, in /proc/PID/stat: reading a 200-line log takes microseconds),
