@@ -1,6 +1,9 @@
-// `ricochet check`: the whole regression gate. Replays the corpus (replays/ of the source tree), runs
-// the lecture's pinball example, then the property suite if it was built, then a short fuzz campaign
-// if the fuzz targets were built; one summary, non-zero exit if anything failed.
+// `ricochet check`: the whole regression gate. Replays the project's corpus (--replay-dir, else
+// $RICOCHET_REPLAY_DIR, else replays/ of the project folder: ricochet_cli/project.hpp), runs the lecture's
+// pinball example, then the property suite if it was built, then a short fuzz campaign if the fuzz targets
+// were built (both saving what they find into that same folder); one summary, non-zero exit if anything
+// failed, 2 if there is no project. SIGINT or SIGTERM stops it between two stages (a stage's replay between
+// two logs, a child program gets the signal too): the summary of what ran, exit 128 + the signal.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,28 +20,42 @@
 #include "ricochet/checks.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/scene_log.hpp"
+#include "ricochet_cli/json.hpp"
+#include "ricochet_cli/json_stdout.hpp"
+#include "ricochet_cli/project.hpp"
+#include "ricochet_cli/stop_signal.hpp"
+
+extern char** environ;
 
 namespace ricochet::cli {
 
 namespace {
 
-/// Runs argv (no shell), inheriting stdout/stderr; returns its exit status (127 if it could not start).
-int run_program(const std::vector<std::string>& argv) {
+/// Runs argv (no shell), inheriting stdout/stderr, with env_extra ("NAME=VALUE") added to the environment
+/// (replacing a variable of the same name); returns its exit status (127 if it could not start).
+int run_program(const std::vector<std::string>& argv, const std::vector<std::string>& env_extra = {}) {
+    // Built before fork: the child only calls execve.
+    std::vector<char*> args, env;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    for (char** e = environ; *e != nullptr; ++e) {
+        const std::string_view var = *e;
+        bool replaced = false;
+        for (const std::string& x : env_extra) replaced = replaced || var.starts_with(x.substr(0, x.find('=') + 1));
+        if (!replaced) env.push_back(*e);
+    }
+    for (const std::string& x : env_extra) env.push_back(const_cast<char*>(x.c_str()));
+    env.push_back(nullptr);
     std::fflush(stdout);
     std::fflush(stderr);
     const pid_t pid = ::fork();
     if (pid < 0) return 127;
     if (pid == 0) {
-        std::vector<char*> args;
-        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        args.push_back(nullptr);
-        ::execv(args[0], args.data());
+        ::execve(args[0], args.data(), env.data());
         std::_Exit(127);
     }
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) return 127;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    // A SIGINT or SIGTERM that reached check only (not its process group) is passed on.
+    return wait_passing_stop(pid);
 }
 
 std::string self_exe() {
@@ -81,6 +98,8 @@ void register_check(CLI::App& app) {
         long fuzz_runs = 10000;
         long fuzz_seed = 1;
         bool no_properties = false;
+        std::string replay_dir;
+        bool json = false;
         std::uint64_t max_work = k_default_max_work;
     };
     auto opt = std::make_shared<Options>();
@@ -94,11 +113,53 @@ void register_check(CLI::App& app) {
         ->check(number_in(0, 86400, "a number of seconds"));
     add_max_work_option(*sub, opt->max_work);
     sub->add_flag("--no-properties", opt->no_properties, "skip the property suite");
+    sub->add_option("--replay-dir", opt->replay_dir,
+                    "the corpus to replay, and where the properties and the fuzz campaign save failures "
+                    "(default $RICOCHET_REPLAY_DIR, else the project folder's replays/)");
+    sub->add_flag("--json", opt->json,
+                  "print one JSON document (docs/cli-json.md, schema ricochet-check/1) on stdout instead of the summary; "
+                  "everything else goes to stderr");
     sub->callback([opt] {
         if (opt->fuzz_time < 0) opt->fuzz_time = env_fuzz_seconds();
+        const auto project = find_project(opt->replay_dir);
+        if (!project) {
+            fmt::print(stderr, "{}\n", no_project_message("check", "run it in a project folder or pass --replay-dir DIR"));
+            throw Exit{2};
+        }
+        const std::filesystem::path replays = project->replay_dir;
+        // The children (properties, fuzz) get it absolute: they may resolve it from elsewhere.
+        std::error_code abs_ec;
+        const std::filesystem::path replays_abs = std::filesystem::absolute(replays, abs_ec);
         const bool by_time = opt->fuzz_time >= 0;
         std::vector<std::string> summary;
         bool failed = false;
+        // Under --json every stage's output, the children's too, goes to stderr; the document is built as
+        // the stages run.
+        JsonStdout json_out(opt->json);
+        JsonWriter json;
+        json.begin_object().member("schema", fmt::format("ricochet-check/{}", k_json_schema_version));
+        json.member("replay_dir", replays.string()).key("stages").begin_object();
+        // stage(NAME, STATUS): opens the stage's object; the caller adds members and closes it.
+        const auto stage = [&](std::string_view name, std::string_view status) -> JsonWriter& {
+            return json.key(name).begin_object().member("status", status);
+        };
+        // The end, after the last stage or at a SIGINT or SIGTERM between two: the summary (or the
+        // document) of the stages that ran, then the exit.
+        const StopOnSignal stop;
+        const auto finish = [&] {
+            json.end_object();
+            const bool stopped = stop_requested();
+            const int code = stopped ? stop_exit_code() : failed ? 1 : 0;
+            if (json_out.on()) {
+                json_out.restore();
+                write_stdout(json.member("stopped", stopped).member("passed", code == 0).member("exit", code).end_object().str());
+                throw Exit{code};
+            }
+            fmt::print("== summary\n");
+            for (const auto& s : summary) fmt::print("{}\n", s);
+            fmt::print("{}\n", stopped ? fmt::format("check stopped by {}", stop_signal_name()) : failed ? "check FAILED" : "check passed");
+            throw Exit{code};
+        };
         const auto timed = [](auto&& f) {
             const auto t0 = std::chrono::steady_clock::now();
             f();
@@ -106,20 +167,30 @@ void register_check(CLI::App& app) {
         };
 
         // 1. The corpus.
-        fmt::print("== replay {}\n", source_replays_dir().string());
+        fmt::print("== replay {}\n", replays.string());
         ReplaySummary r;
-        const double t_replay = timed([&] { r = replay_paths({source_replays_dir().string()}, false, opt->max_work); });
+        const double t_replay = timed([&] { r = replay_paths({replays.string()}, false, opt->max_work); });
         failed = failed || r.failed > 0 || r.bad_input;
         summary.push_back(fmt::format("replay      {} passed, {} failed ({:.2f} s)", r.passed, r.failed, t_replay));
+        stage("replay", r.failed > 0 || r.bad_input ? "failed" : "passed").member("seconds", t_replay);
+        write_replay_members(json, r);
+        json.end_object();
+        if (stop_requested()) finish();
 
         // 2. The lecture's pinball experiment, under every kernel: robust must keep its checks.
-        const std::filesystem::path pinball = source_replays_dir() / "pinball.scene";
+        const std::filesystem::path pinball = replays / "pinball.scene";
         fmt::print("== lecture pinball example {}\n", pinball.string());
+        std::error_code pin_ec;
         auto parsed = read_scene_log(pinball);
-        if (auto* d = std::get_if<Diagnostic>(&parsed)) {
+        if (!std::filesystem::exists(pinball, pin_ec)) {
+            // A project of its own need not carry the lecture's example.
+            summary.push_back(fmt::format("pinball     skipped (no {})", pinball.string()));
+            stage("pinball", "skipped").member("message", fmt::format("no {}", pinball.string())).end_object();
+        } else if (auto* d = std::get_if<Diagnostic>(&parsed)) {
             fmt::print(stderr, "{}\n", d->str());
             failed = true;
             summary.push_back("pinball     unreadable");
+            stage("pinball", "failed").member("message", d->str()).end_object();
         } else if (const std::string over = work_over_budget(pinball.string(), std::get<Scene>(parsed),
                                                               std::get<Scene>(parsed).frames, opt->max_work);
                    !over.empty()) {
@@ -127,9 +198,13 @@ void register_check(CLI::App& app) {
             fmt::print(stderr, "ricochet: error: {}\n", over);
             failed = true;
             summary.push_back("pinball     not run (over --max-work)");
+            stage("pinball", "failed").member("message", over).end_object();
         } else {
             const Scene& scene = std::get<Scene>(parsed);
             std::string line = "pinball    ";
+            bool pinball_failed = false;
+            // Its status is known after the kernels: written after them.
+            json.key("pinball").begin_object().key("kernels").begin_object();
             CheckOptions quiet;
             quiet.keep_events = false;
             for (KernelId k : k_all_kernels) {
@@ -139,33 +214,46 @@ void register_check(CLI::App& app) {
                            ok ? "every check held"
                               : run.failure ? run.failure->str() : run.error->message());
                 line += fmt::format(" {}={}", k, ok ? "ok" : "broken");
+                json.member(fmt::format("{}", k), ok ? "ok" : "broken");
                 // The lecture kernels are expected to break; the robust and exact kernels may not.
-                if (!ok && (k == KernelId::robust || k == KernelId::exact)) failed = true;
+                if (!ok && (k == KernelId::robust || k == KernelId::exact)) pinball_failed = true;
             }
+            failed = failed || pinball_failed;
             summary.push_back(line);
+            json.end_object().member("status", pinball_failed ? "failed" : "passed").end_object();
         }
+
+        if (stop_requested()) finish();
 
         // 3. The property suite, if this build has it.
         const std::string props = RICOCHET_PROPERTIES_EXE;
         if (opt->no_properties) {
             summary.push_back("properties  skipped (--no-properties)");
+            stage("properties", "skipped").end_object();
         } else if (props.empty() || !std::filesystem::exists(props)) {
             summary.push_back("properties  not built (build target ricochet_properties)");
+            stage("properties", "not-built").end_object();
         } else {
             fmt::print("== properties {}\n", props);
             int rc = 0;
-            const double t = timed([&] { rc = run_program({props}); });
+            // The suite saves its failures into (and first replays the saved logs of) the same corpus.
+            const double t = timed([&] { rc = run_program({props}, {fmt::format("{}={}", k_replay_dir_env, replays_abs.string())}); });
             failed = failed || rc != 0;
             summary.push_back(fmt::format("properties  {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
+            stage("properties", rc == 0 ? "passed" : "failed").member("exit", rc).member("seconds", t).end_object();
         }
+
+        if (stop_requested()) finish();
 
         // 4. A short fuzz campaign through `ricochet fuzz`, if the targets are built.
         if (by_time ? opt->fuzz_time == 0 : opt->fuzz_runs == 0) {
             summary.push_back(by_time ? "fuzz        skipped (--fuzz-time 0)" : "fuzz        skipped (--fuzz-runs 0)");
+            stage("fuzz", "skipped").end_object();
         } else if (!any_fuzz_target_built()) {
             summary.push_back("fuzz        not built (configure with clang-14 and RICOCHET_FUZZ=ON)");
+            stage("fuzz", "not-built").end_object();
         } else {
-            std::vector<std::string> argv = {self_exe(), "fuzz"};
+            std::vector<std::string> argv = {self_exe(), "fuzz", "--replay-dir", replays_abs.string()};
             if (by_time) {
                 fmt::print("== fuzz for {} s\n", opt->fuzz_time);
                 argv.insert(argv.end(), {"--time", std::to_string(opt->fuzz_time)});
@@ -177,12 +265,9 @@ void register_check(CLI::App& app) {
             const double t = timed([&] { rc = run_program(argv); });
             failed = failed || rc != 0;
             summary.push_back(fmt::format("fuzz        {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
+            stage("fuzz", rc == 0 ? "passed" : "failed").member("exit", rc).member("seconds", t).end_object();
         }
-
-        fmt::print("== summary\n");
-        for (const auto& s : summary) fmt::print("{}\n", s);
-        fmt::print("{}\n", failed ? "check FAILED" : "check passed");
-        throw Exit{failed ? 1 : 0};
+        finish();
     });
 }
 

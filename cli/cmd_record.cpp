@@ -1,16 +1,19 @@
 // `ricochet record LOG [--max-work N]`: runs a log and writes its expect lines back, atomically. The log's other
 // lines (comments included) are kept as they are; old expect lines are replaced, even ones that no longer fit
-// the log. A symbolic link is written through (write_file_atomically).
+// the log. A symbolic link is written through (write_file_atomically). SIGINT or SIGTERM before the write
+// ends it at once, the log unchanged (exit 128 + the signal); one during the write waits for the rename.
 #include <sstream>
 #include <variant>
 
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "progress.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/hash.hpp"
 #include "ricochet/record.hpp"
 #include "ricochet/scene_log.hpp"
+#include "ricochet_cli/stop_signal.hpp"
 
 namespace ricochet::cli {
 
@@ -61,7 +64,15 @@ void register_record(CLI::App& app) {
         }
         Scene scene = std::get<Scene>(std::move(parsed));
         check_work_or_exit(opt->log, scene, scene.frames, opt->max_work);
-        const CheckedRun run = record_expectations(scene);
+        // The run is one call into the core, with no frame to stop at; nothing is written yet, so a signal
+        // may end the process there and then.
+        std::optional<ExitOnSignal> exit_on_signal;
+        exit_on_signal.emplace("ricochet record: the log is unchanged; stopped by ");
+        // frame 0 (the initial states) is the first call.
+        Progress progress(fmt::format("ricochet record {}", opt->log));
+        std::int64_t frame = -1;
+        const CheckedRun run = record_expectations(scene, [&](std::span<const Event>) { progress.update(++frame, scene.frames); });
+        progress.clear();
         if (run.error) {
             fmt::print(stderr, "{}: error: {}; the log is unchanged\n", opt->log, run.error->message());
             throw Exit{1};
@@ -76,7 +87,18 @@ void register_record(CLI::App& app) {
         const auto first_expect = canonical.find("expect ");
         if (first_expect != std::string::npos) text += canonical.substr(first_expect);
         std::string error;
-        if (!write_file_atomically(opt->log, text, &error)) {
+        bool written = false;
+        // Outlives the hold below: a signal held during the write is then only a request to stop.
+        std::optional<StopOnSignal> stop;
+        {
+            // The write is whole or not at all: a signal now waits until the rename is done (the report
+            // below still says what was written; the exit status says a signal came).
+            const HoldSignals hold;
+            exit_on_signal.reset();
+            stop.emplace();
+            written = write_file_atomically(opt->log, text, &error);
+        }
+        if (!written) {
             fmt::print(stderr, "ricochet: error: {}\n", error);
             throw Exit{1};
         }
@@ -85,6 +107,7 @@ void register_record(CLI::App& app) {
                                  run.failure ? fmt::format(", expect failure {} {} ({})", run.failure->check,
                                                            run.failure->frame, run.failure->message)
                                              : std::string()));
+        if (stop_requested()) throw Exit{stop_exit_code()};
     });
 }
 

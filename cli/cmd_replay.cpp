@@ -1,9 +1,16 @@
-// `ricochet replay [PATH...] [--hashes] [--max-work N]`: every log's checks and expect lines; exit 0 all
+// `ricochet replay [PATH...] [--hashes] [--json] [--max-work N]`: every log's checks and expect lines; exit 0 all
 // passed, 1 some failed, 2 some path or log could not be read (a missing path, a folder without logs, a
-// malformed log) or was over the work bound.
+// malformed log), was over the work bound, or no PATH was given and no project folder was found; 128 + the
+// signal if SIGINT or SIGTERM stopped it (between two logs: the summary says how many ran).
 #include <filesystem>
 
+#include <fmt/format.h>
+
 #include "commands.hpp"
+#include "ricochet_cli/json.hpp"
+#include "ricochet_cli/json_stdout.hpp"
+#include "ricochet_cli/project.hpp"
+#include "ricochet_cli/stop_signal.hpp"
 
 namespace ricochet::cli {
 
@@ -11,19 +18,41 @@ void register_replay(CLI::App& app) {
     struct Options {
         std::vector<std::string> paths;
         bool hashes = false;
+        bool json = false;
         std::uint64_t max_work = k_default_max_work;
     };
     auto opt = std::make_shared<Options>();
-    CLI::App* sub = app.add_subcommand("replay", "replay logs (default replays/; folders: every *.scene under them)");
+    CLI::App* sub = app.add_subcommand(
+        "replay", "replay logs (default: the project's replays/ or $RICOCHET_REPLAY_DIR; folders: every *.scene under them)");
     sub->add_option("PATH", opt->paths, "logs or folders (a missing path or a folder without *.scene is an error, exit 2)");
     sub->add_flag("--hashes", opt->hashes, "print 'HASH PATH' per log (for comparing builds) instead");
+    sub->add_flag("--json", opt->json,
+                  "print one JSON document (docs/cli-json.md, schema ricochet-replay/1) on stdout instead; "
+                  "the per-log lines go to stderr");
     add_max_work_option(*sub, opt->max_work);
     sub->callback([opt] {
         std::vector<std::string> paths = opt->paths;
-        if (paths.empty())
-            paths.push_back(std::filesystem::exists("replays") ? std::string("replays") : source_replays_dir().string());
+        if (paths.empty()) {
+            // The project's corpus, never the tree this binary was built from.
+            const auto project = find_project();
+            if (!project) {
+                fmt::print(stderr, "{}\n", no_project_message("replay", "name the logs or folders to replay (ricochet replay PATH...)"));
+                throw Exit{2};
+            }
+            paths.push_back(project->replay_dir.string());
+        }
+        JsonStdout json_out(opt->json);
+        const StopOnSignal stop;
         const ReplaySummary s = replay_paths(paths, opt->hashes, opt->max_work);
-        throw Exit{s.bad_input ? 2 : s.failed > 0 ? 1 : 0};
+        const int code = s.stopped ? stop_exit_code() : s.bad_input ? 2 : s.failed > 0 ? 1 : 0;
+        if (json_out.on()) {
+            json_out.restore();
+            JsonWriter json;
+            json.begin_object().member("schema", fmt::format("ricochet-replay/{}", k_json_schema_version)).member("exit", code);
+            write_replay_members(json, s);
+            write_stdout(json.end_object().str());
+        }
+        throw Exit{code};
     });
 }
 

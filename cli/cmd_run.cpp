@@ -1,5 +1,6 @@
 // `ricochet run LOG [--kernel K] [--frames N] [--max-work N]`: the run's events as docs/scene-log.md prints
-// them, stepped with the default WorldOptions (the broad phase on, one thread).
+// them, stepped with the default WorldOptions (the broad phase on, one thread). SIGINT or SIGTERM stops it
+// after a whole frame: every event up to it is printed, then "stopped" on stderr, exit 128 + the signal.
 #include <cstdio>
 
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 #include "progress.hpp"
 #include "ricochet/event.hpp"
 #include "ricochet/world.hpp"
+#include "ricochet_cli/stop_signal.hpp"
 
 namespace ricochet::cli {
 
@@ -43,8 +45,17 @@ void register_run(CLI::App& app) {
             out.clear();
         };
         Progress progress(fmt::format("ricochet run {}", opt->log));
+        const StopOnSignal stop;
         world.start(events);
         for (std::int64_t f = 1; f <= frames; ++f) {
+            // A frame boundary: the output so far is whole frames.
+            if (stop_requested()) {
+                flush();
+                std::fflush(stdout);
+                check_stdout();
+                fmt::print(stderr, "ricochet run: stopped by {} after frame {} of {}\n", stop_signal_name(), f - 1, frames);
+                throw Exit{stop_exit_code()};
+            }
             const auto error = world.step(events);
             if (error) {
                 flush();

@@ -24,11 +24,11 @@ struct Exit {
 void register_run(CLI::App& app);
 /// `ricochet record LOG`.
 void register_record(CLI::App& app);
-/// `ricochet replay [PATH...] [--hashes]`.
+/// `ricochet replay [PATH...] [--hashes]` (default: the project's replays/, ricochet_cli/project.hpp).
 void register_replay(CLI::App& app);
 /// `ricochet render LOG -o FILE.svg [--frames A:B]`.
 void register_render(CLI::App& app);
-/// `ricochet check`.
+/// `ricochet check [--replay-dir DIR]`: the project's corpus, properties and a short fuzz campaign.
 void register_check(CLI::App& app);
 /// `ricochet help [COMMAND]`: the program's help, or a command's, on stdout.
 void register_help(CLI::App& app);
@@ -46,17 +46,32 @@ void print_unknown_command(const CLI::App& app, const std::string& word);
 Scene load_scene_or_exit(const std::filesystem::path& path);
 /// The kernel called name, or a diagnostic on stderr and Exit{2}.
 KernelId kernel_or_exit(const std::string& name);
-/// The folder of the source tree's corpus (replays/ under the source dir baked in at configure time).
-std::filesystem::path source_replays_dir();
+/// One log's verdict in a replay.
+struct LogVerdict {
+    std::string path;                   ///< as given or found under a folder
+    std::string status;                 ///< passed, failed, unreadable, over-budget or missing
+    std::string message;                ///< the line's text: what it checked, or why it failed
+    std::optional<std::uint64_t> hash;  ///< the run hash, if it ran
+};
 /// Outcome of replaying some logs (counts, and whether a path or log could not be read or run).
 struct ReplaySummary {
     int passed = 0;
     int failed = 0;
     bool bad_input = false;
+    bool stopped = false;             ///< a SIGINT or SIGTERM stopped it before every log was run
+    std::size_t total = 0;            ///< logs found (run or not)
+    std::vector<LogVerdict> logs;     ///< every log run and path missing, in order (missing paths first)
+    std::vector<std::string> errors;  ///< paths that gave no log (a folder without logs, one that cannot be listed)
 };
 /// Replays every log under paths (folders recursively, *.scene), one line per log on stdout, then
 /// "N passed, N failed". With hashes_only, prints "HASH PATH" per log instead (and no summary). A path
 /// that does not exist, a folder without logs and a log over max_work (work_budget.hpp) are bad input.
+/// Under a StopOnSignal, a SIGINT or SIGTERM stops it before the next log (stopped set, summary printed).
 ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work);
+
+class JsonWriter;
+/// A replay's members of a --json document (docs/cli-json.md): passed, failed, bad_input, stopped, total,
+/// errors, logs.
+void write_replay_members(JsonWriter& json, const ReplaySummary& summary);
 
 }  // namespace ricochet::cli

@@ -1,4 +1,4 @@
-// Helpers shared by the subcommands: loading logs, kernels, the corpus location, replaying.
+// Helpers shared by the subcommands: loading logs, kernels, replaying.
 #include <algorithm>
 #include <chrono>
 #include <system_error>
@@ -10,6 +10,9 @@
 #include "ricochet/replay.hpp"
 #include "ricochet/hash.hpp"
 #include "ricochet/scene_log.hpp"
+#include "ricochet_cli/json.hpp"
+#include "ricochet_cli/stop_signal.hpp"
+#include "progress.hpp"
 
 namespace ricochet::cli {
 
@@ -31,8 +34,6 @@ KernelId kernel_or_exit(const std::string& name) {
     return *k;
 }
 
-std::filesystem::path source_replays_dir() { return std::filesystem::path(RICOCHET_SOURCE_DIR) / "replays"; }
-
 ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work) {
     ReplaySummary s;
     std::vector<std::filesystem::path> logs;
@@ -44,11 +45,13 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
                  !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
                 if (it->is_regular_file() && it->path().extension() == ".scene") found.push_back(it->path());
             if (ec) {
-                fmt::print(stderr, "{}:1:1: error: cannot list the folder: {}\n", p, ec.message());
+                s.errors.push_back(fmt::format("{}:1:1: error: cannot list the folder: {}", p, ec.message()));
+                fmt::print(stderr, "{}\n", s.errors.back());
                 s.bad_input = true;
             } else if (found.empty()) {
                 // An empty or mistyped folder checks nothing: a false green in CI if it passed.
-                fmt::print(stderr, "ricochet: error: no scene logs (*.scene) under {}\n", p);
+                s.errors.push_back(fmt::format("ricochet: error: no scene logs (*.scene) under {}", p));
+                fmt::print(stderr, "{}\n", s.errors.back());
                 s.bad_input = true;
             }
             std::sort(found.begin(), found.end());
@@ -57,23 +60,39 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             logs.emplace_back(p);
         } else {
             fmt::print(stderr, "{}:1:1: error: no such file or folder\n", p);
+            s.logs.push_back({p, "missing", "no such file or folder", std::nullopt});
             s.bad_input = true;
             ++s.failed;
         }
     }
+    s.total = logs.size();
+    Progress progress("ricochet replay", Progress::Unit::log);
+    std::size_t done = 0;
     for (const auto& log : logs) {
+        // A log boundary: a SIGINT or SIGTERM (the caller holds a StopOnSignal) stops before the next log.
+        if (stop_requested()) {
+            s.stopped = true;
+            progress.clear();
+            fmt::print(stderr, "ricochet replay: stopped by {} after {} of {} logs\n", stop_signal_name(), done, logs.size());
+            break;
+        }
+        progress.update(static_cast<std::int64_t>(done++), static_cast<std::int64_t>(logs.size()));
         auto parsed = read_scene_log(log);
         if (auto* d = std::get_if<Diagnostic>(&parsed)) {
+            progress.clear();
             fmt::print(stderr, "{}\n", d->str());
             if (!hashes_only) write_stdout(fmt::format("FAIL {}: unreadable log\n", log.string()));
+            s.logs.push_back({log.string(), "unreadable", d->str(), std::nullopt});
             s.bad_input = true;
             ++s.failed;
             continue;
         }
         const Scene& scene = std::get<Scene>(parsed);
         if (const std::string error = work_over_budget(log.string(), scene, scene.frames, max_work); !error.empty()) {
+            progress.clear();
             fmt::print(stderr, "ricochet: error: {}\n", error);
             if (!hashes_only) write_stdout(fmt::format("FAIL {}: not run (over --max-work)\n", log.string()));
+            s.logs.push_back({log.string(), "over-budget", error, std::nullopt});
             s.bad_input = true;
             ++s.failed;
             continue;
@@ -84,6 +103,7 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
         else
             write_stdout(fmt::format("{} {}: {}\n", r.passed ? "ok  " : "FAIL", log.string(), r.message));
         (r.passed ? s.passed : s.failed) += 1;
+        s.logs.push_back({log.string(), r.passed ? "passed" : "failed", r.message, r.run.hash});
         // Line by line, so a reader (and a failed write) sees each verdict as it comes.
         std::fflush(stdout);
         check_stdout();
@@ -92,6 +112,24 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
     std::fflush(stdout);
     check_stdout();
     return s;
+}
+
+void write_replay_members(JsonWriter& json, const ReplaySummary& s) {
+    json.member("passed", s.passed).member("failed", s.failed).member("bad_input", s.bad_input);
+    json.member("stopped", s.stopped).member("total", static_cast<std::uint64_t>(s.total));
+    json.key("errors").begin_array();
+    for (const std::string& e : s.errors) json.value(e);
+    json.end_array();
+    json.key("logs").begin_array();
+    for (const LogVerdict& v : s.logs) {
+        json.begin_object().member("path", v.path).member("status", v.status).member("message", v.message).key("hash");
+        if (v.hash)
+            json.value(format_hash(*v.hash));
+        else
+            json.null();
+        json.end_object();
+    }
+    json.end_array();
 }
 
 }  // namespace ricochet::cli

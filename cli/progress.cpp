@@ -18,23 +18,29 @@ constexpr std::chrono::milliseconds k_progress_period{250};
 
 }  // namespace
 
-Progress::Progress(std::string what)
-    : what_(std::move(what)), enabled_(::isatty(STDERR_FILENO) == 1 && ::isatty(STDOUT_FILENO) != 1),
+Progress::Progress(std::string what, Unit unit)
+    : what_(std::move(what)), unit_(unit), enabled_(::isatty(STDERR_FILENO) == 1 && ::isatty(STDOUT_FILENO) != 1),
       start_(Clock::now()), next_(start_ + k_progress_delay) {}
 
-Progress::~Progress() {
-    // Erase the line: carriage return, then clear to its end.
-    if (shown_) fmt::print(stderr, "\r\x1b[K");
+Progress::~Progress() { clear(); }
+
+void Progress::clear() {
+    // Degenerate: nothing shown (before k_progress_delay, or not a terminal).
+    if (!shown_) return;
+    // Erase the line: carriage return, then clear to its end; drawn again at the next update.
+    fmt::print(stderr, "\r\x1b[K");
+    shown_ = false;
+    next_ = Clock::now();
 }
 
 void Progress::update(std::int64_t done, std::int64_t total) {
-    // The clock is read once per 16 calls: a frame can take well under a microsecond.
-    if (!enabled_ || (calls_++ & 15u) != 0) return;
+    // The clock is read once per 16 frames: a frame can take well under a microsecond.
+    if (!enabled_ || (unit_ == Unit::frame && (calls_++ & 15u) != 0)) return;
     const auto now = Clock::now();
     if (now < next_) return;
     next_ = now + k_progress_period;
     const double pct = total > 0 ? 100.0 * static_cast<double>(done) / static_cast<double>(total) : 100.0;
-    fmt::print(stderr, "\r{}: frame {} of {} ({:.0f} %)\x1b[K", what_, done, total, pct);
+    fmt::print(stderr, "\r{}: {} {} of {} ({:.0f} %)\x1b[K", what_, unit_ == Unit::frame ? "frame" : "log", done, total, pct);
     std::fflush(stderr);
     shown_ = true;
 }

@@ -9,11 +9,13 @@
 
 namespace ricochet::cli {
 
-/// "WHAT: frame DONE of TOTAL (P %)", from k_progress_delay on, at most 4 times a second.
+/// "WHAT: frame DONE of TOTAL (P %)" (or "log DONE of TOTAL"), from k_progress_delay on, at most 4 times a second.
 class Progress {
 public:
+    /// What is counted: frames (cheap, many: the clock is read every 16th call) or logs (every call).
+    enum class Unit { frame, log };
     /// what: the line's prefix ("ricochet run LOG").
-    explicit Progress(std::string what);
+    explicit Progress(std::string what, Unit unit = Unit::frame);
     /// Clears the line if one was shown.
     ~Progress();
     Progress(const Progress&) = delete;
@@ -21,10 +23,14 @@ public:
 
     /// Reports done of total frames; cheap enough to call every frame.
     void update(std::int64_t done, std::int64_t total);
+    /// Erases the line, if one is shown, before something else is printed on stderr; the next update
+    /// draws it again.
+    void clear();
 
 private:
     using Clock = std::chrono::steady_clock;
     std::string what_;
+    Unit unit_;
     bool enabled_ = false;
     bool shown_ = false;
     std::uint32_t calls_ = 0;

@@ -40,6 +40,63 @@ big=$dir/big.scene
   i=0; while [ $i -lt 200 ]; do printf 'ball %d.5 50 0.25 0.125\n' $((i % 90 + 5)); i=$((i + 1)); done; } >"$big"
 enospc="ricochet: error: writing standard output: No space left on device"
 
+# The project folder (cli/include/ricochet_cli/project.hpp): a clone-like folder with replays/ and a log in
+# it, a subfolder two levels down, and a folder no project holds (mktemp's folder is under /tmp).
+proj=$dir/proj
+mkproj() {
+  unset RICOCHET_REPLAY_DIR
+  mkdir -p "$proj/replays" "$proj/a/b" "$dir/none"
+  cp "$log" "$proj/replays/t.scene"
+}
+# no_project_here: skip if some folder above $dir/none holds replays/ (then it is in a project after all).
+no_project_here() {
+  d=$dir
+  while [ "$d" != / ]; do [ -d "$d/replays" ] && { echo "skip $case: $d holds replays/"; exit 77; }; d=$(dirname "$d"); done
+  [ -d /replays ] && { echo "skip $case: /replays exists"; exit 77; }
+  return 0
+}
+# The tree this script is in (the source tree ricochet was built from, in a CTest run), and its git status
+# leaving out this script's own folder (TMPDIR may put it inside the tree).
+src=$(cd "$(dirname "$0")/../.." && pwd)
+src_status() {
+  case "$dir" in
+    "$src"/*) git -C "$src" status --porcelain -- . ":(exclude)${dir#"$src"/}" ;;
+    *) git -C "$src" status --porcelain ;;
+  esac
+}
+# json_is FILE PYTHON-EXPRESSION [ARG...]: FILE (out or err) is one JSON document and the expression, over it
+# as d (and the ARGs as a), holds; python3's json module parses it, so any syntax error fails.
+json_is() {
+  f=$1 e=$2; shift 2
+  python3 -c 'import json, sys
+d = json.load(open(sys.argv[1]))
+a = sys.argv[3:]
+sys.exit(0 if eval(sys.argv[2]) else 1)' "$dir/$f" "$e" "$@" 2>"$dir/py" || fail "std$f is not JSON where $e: $(cat "$dir/py")"
+}
+# stop_after_first_line SIGNAL ARGS...: starts ricochet ARGS in the background (stdout in $dir/out, stderr in
+# $dir/err), waits until it has printed its first line (synchronised on its output, not on a delay), sends
+# SIGNAL, and leaves its exit status in rc. The commands given run for hours unless stopped, so the verdict
+# does not depend on timing.
+stop_after_first_line() {
+  sig=$1; shift
+  "$ricochet" "$@" >"$dir/out" 2>"$dir/err" &
+  pid=$!
+  while [ ! -s "$dir/out" ]; do
+    kill -0 "$pid" 2>/dev/null || { wait "$pid"; fail "ricochet $* ended (exit $?) before printing a line"; }
+    sleep 0.02
+  done
+  kill "-$sig" "$pid"
+  wait "$pid"
+  rc=$?
+}
+# A log that runs for hours (10^7 frames, 200 balls): a whole frame prints 200 state lines.
+long=$dir/long.scene
+{ printf 'ricochet 1\nframes 10000000\nwall 0 0 0 100\nwall 0 100 100 100\nwall 100 100 100 0\nwall 100 0 0 0\n'
+  i=0; while [ $i -lt 200 ]; do printf 'ball %d.5 50 0.25 0.125\n' $((i % 90 + 5)); i=$((i + 1)); done; } >"$long"
+# A valid log whose expect hash is wrong: replay fails it (exit 1).
+badlog=$dir/bad.scene
+printf 'ricochet 1\nframes 10\nwall 0 -5 0 5\nball -1 0 0.5 0\nexpect hash 0123456789abcdef\n' >"$badlog"
+
 case "$case" in
   full-run)          run_full 1 run "$log"; first_line err "$enospc" ;;
   full-replay)       run_full 1 replay "$log"; first_line err "$enospc" ;;
@@ -137,6 +194,136 @@ case "$case" in
                      run 0 render "$dir/t.scene" -o "$dir/all.svg" --view all
                      ! grep -q 'view: the failing frame' "$dir/all.svg" || fail "--view all framed the failure"
                      grep -q 'data-x="0" data-y="8"' "$dir/all.svg" || fail "--view all lost the mark" ;;
+  # --- The project folder: defaults from the nearest folder holding replays/, never the source tree.
+  project-here)      mkproj; cd "$proj"; run 0 replay
+                     grep -q '^ok   replays/t\.scene: ' "$dir/out" || fail "replay did not read the project's replays/"
+                     has out "1 passed, 0 failed" ;;
+  project-subfolder) mkproj; cd "$proj/a/b"; run 0 replay
+                     grep -q '^ok   \.\./\.\./replays/t\.scene: ' "$dir/out" || fail "replay did not find the project above"
+                     has out "1 passed, 0 failed" ;;
+  project-build-folder) mkproj; mkdir -p "$proj/build/replays"; : >"$proj/build/CMakeCache.txt"; cd "$proj/build"
+                     run 0 replay; grep -q '^ok   \.\./replays/t\.scene: ' "$dir/out" || fail "a build folder was taken for the project" ;;
+  project-none)      mkproj; no_project_here; cd "$dir/none"
+                     run 2 replay
+                     first_line err "ricochet replay: error: no project folder: neither $dir/none nor any folder above it holds replays/; name the logs or folders to replay (ricochet replay PATH...), or set RICOCHET_REPLAY_DIR"
+                     [ ! -s "$dir/out" ] || fail "replay printed on stdout"
+                     run 2 check --no-properties --fuzz-runs 0
+                     first_line err "ricochet check: error: no project folder: neither $dir/none nor any folder above it holds replays/; run it in a project folder or pass --replay-dir DIR, or set RICOCHET_REPLAY_DIR"
+                     run 2 fuzz --runs 1 --cache-dir "$dir/cache"
+                     first_line err "ricochet fuzz: error: no project folder: neither $dir/none nor any folder above it holds replays/; run it in a project folder or pass --replay-dir DIR, or set RICOCHET_REPLAY_DIR"
+                     [ -z "$(ls -A "$dir/none")" ] || fail "something was written in the folder" ;;
+  project-env)       mkproj; no_project_here; cd "$dir/none"
+                     export RICOCHET_REPLAY_DIR="$proj/replays"; run 0 replay; unset RICOCHET_REPLAY_DIR
+                     grep -q "^ok   $proj/replays/t\.scene: " "$dir/out" || fail "RICOCHET_REPLAY_DIR was not read"
+                     run 0 check --no-properties --fuzz-runs 0 --replay-dir "$proj/replays"
+                     has out "check passed"; grep -q "^pinball     skipped (no $proj/replays/pinball.scene)" "$dir/out" || fail "no pinball line" ;;
+  project-check)     mkproj; cd "$proj/a"; run 0 check --no-properties --fuzz-runs 0
+                     has out "== replay ../replays"
+                     grep -q '^replay      1 passed, 0 failed' "$dir/out" || fail "check did not replay the project's corpus" ;;
+  project-fuzz)      mkproj; bins=$(dirname "$ricochet")/../fuzz
+                     "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
+                     git -C "$src" rev-parse 2>/dev/null || { echo "skip $case: $src is not a git checkout"; exit 77; }
+                     before=$(src_status)
+                     cd "$proj/a/b"
+                     # Fixed seed and count, no clock: seeds 1-12 fail lecture-double after 413 to 2 351 inputs
+                     # (fuzz/lecture_proof_test.sh); the minimization gets as many runs.
+                     run 1 fuzz --target scene --kernel lecture-double --runs 5000 --seed 1 --cache-dir "$dir/cache"
+                     ls "$proj"/replays/fuzz-scene-*.scene >/dev/null 2>&1 || fail "no failure log saved in the project's replays/"
+                     [ "$(src_status)" = "$before" ] || fail "the source tree changed: $(src_status)"
+                     [ -z "$(ls -A "$proj/a/b")" ] || fail "something was written in the current folder"
+                     run 0 replay "$proj/replays" ;;
+  # --- --json: one document on stdout (docs/cli-json.md), the human lines on stderr, the same exit status.
+  json-replay-pass)  run 0 replay --json "$log"
+                     json_is out 'd["schema"] == "ricochet-replay/1" and d["exit"] == 0 and d["passed"] == 1 and d["failed"] == 0'
+                     json_is out 'd["bad_input"] is False and d["errors"] == [] and len(d["logs"]) == 1'
+                     json_is out 'd["logs"][0] == {"path": a[0], "status": "passed", "message": a[1], "hash": a[2]}' "$log" \
+                       "10 frames, hash $("$ricochet" replay --hashes "$log" | cut -c1-16)" "$("$ricochet" replay --hashes "$log" | cut -c1-16)"
+                     has err "1 passed, 0 failed" ;;
+  json-replay-fail)  run 1 replay --json "$log" "$badlog"
+                     json_is out 'd["exit"] == 1 and d["passed"] == 1 and d["failed"] == 1 and [l["status"] for l in d["logs"]] == ["passed", "failed"]'
+                     json_is out 'd["logs"][1]["path"] == a[0] and d["logs"][1]["message"].startswith("hash expected 0123456789abcdef, got ")' "$badlog"
+                     grep -q "^FAIL $badlog: hash expected 0123456789abcdef, got " "$dir/err" || fail "the FAIL line is not on stderr" ;;
+  json-replay-missing) run 2 replay --json "$dir/nope.scene"
+                     json_is out 'd["exit"] == 2 and d["bad_input"] and d["logs"][0]["status"] == "missing" and d["logs"][0]["hash"] is None' ;;
+  json-replay-escape) q=$dir/$(printf 'q"a\\b\tc\377d'); mkdir "$q"; cp "$log" "$q/t.scene"; run 0 replay --json "$q"
+                     # A quote, a backslash, a tab and a byte that is not UTF-8 (written as U+FFFD).
+                     json_is out 'd["logs"][0]["path"].endswith("q\"a\\b\tc\ufffdd/t.scene")'
+                     grep -q 'q\\"a\\\\b\\tc\\ufffdd/t.scene' "$dir/out" || fail "not escaped as expected" ;;
+  json-check)        mkproj; cp "$badlog" "$proj/replays/"; cd "$proj"; run 1 check --json --no-properties --fuzz-runs 0
+                     json_is out 'd["schema"] == "ricochet-check/1" and d["passed"] is False and d["exit"] == 1 and d["replay_dir"] == "replays"'
+                     json_is out 'd["stages"]["replay"]["status"] == "failed" and d["stages"]["replay"]["passed"] == 1 and d["stages"]["replay"]["failed"] == 1'
+                     json_is out 'd["stages"]["pinball"]["status"] == "skipped" and d["stages"]["properties"]["status"] == "skipped" and d["stages"]["fuzz"]["status"] == "skipped"'
+                     grep -q '^== replay replays$' "$dir/err" || fail "the stage lines are not on stderr"
+                     rm "$proj/replays/bad.scene"; cp "$src/replays/pinball.scene" "$proj/replays/"
+                     run 0 check --json --no-properties --fuzz-runs 0
+                     json_is out 'd["passed"] is True and d["exit"] == 0 and d["stages"]["pinball"]["status"] == "passed" and d["stages"]["pinball"]["kernels"]["robust"] == "ok"' ;;
+  json-fuzz)         mkproj; bins=$(dirname "$ricochet")/../fuzz
+                     "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
+                     cd "$proj"; run 0 fuzz --json --target scene --runs 20 --seed 1 --cache-dir "$dir/cache"
+                     json_is out 'd["schema"] == "ricochet-fuzz/1" and d["exit"] == 0 and d["kernel"] == "robust" and d["runs_per_worker"] == 20 and d["time_s"] is None and d["seed"] == 1'
+                     json_is out 'd["replay_dir"] == "replays" and d["new_failures"] == 0 and [t["target"] for t in d["targets"]] == ["scene"] and d["targets"][0]["runs"] >= 20'
+                     grep -q '^target ' "$dir/err" || fail "the human summary is not on stderr" ;;
+  # --- SIGINT and SIGTERM: stop at the next frame or log boundary, say what was done, exit 128 + signal.
+  stop-run)          stop_after_first_line INT run "$long" --max-work 0
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     frame=$(sed -n 's/^ricochet run: stopped by SIGINT after frame \([0-9]*\) of 10000000$/\1/p' "$dir/err")
+                     [ -n "$frame" ] || fail "no 'stopped by SIGINT after frame F' line"
+                     # Whole frames: frame 0 and 1..F, 200 state lines each (and hit lines), nothing after.
+                     [ "$(grep -c '^state ' "$dir/out")" = $(( (frame + 1) * 200 )) ] || fail "not $((frame + 1)) whole frames of output"
+                     [ "$(tail -n 1 "$dir/out" | cut -d' ' -f1-3)" = "state $frame 199" ] || fail "the last line is not frame $frame's last ball"
+                     [ "$(ls -A "$dir" | sort | tr '\n' ' ')" = "bad.scene big.scene err long.scene out tiny.scene " ] ||
+                       fail "files left: $(ls -A "$dir")" ;;
+  stop-run-term)     stop_after_first_line TERM run "$long" --max-work 0
+                     [ "$rc" = 143 ] || fail "exit $rc after SIGTERM, expected 143"
+                     grep -q '^ricochet run: stopped by SIGTERM after frame [0-9]* of 10000000$' "$dir/err" || fail "no stopped line" ;;
+  stop-replay)       mkdir "$dir/many"
+                     # 301 logs of 2 000 frames × 200 balls: minutes of work.
+                     sed 's/^frames 10000000$/frames 2000/' "$long" >"$dir/many/a.scene"
+                     i=0; while [ $i -lt 300 ]; do ln "$dir/many/a.scene" "$dir/many/l$i.scene"; i=$((i + 1)); done
+                     stop_after_first_line INT replay "$dir/many"
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     n=$(sed -n 's/^ricochet replay: stopped by SIGINT after \([0-9]*\) of 301 logs$/\1/p' "$dir/err")
+                     [ -n "$n" ] || fail "no 'stopped by SIGINT after N of 301 logs' line"
+                     [ "$(grep -c '^ok   ' "$dir/out")" = "$n" ] || fail "not $n verdict lines"
+                     [ "$(tail -n 1 "$dir/out")" = "$n passed, 0 failed" ] || fail "the summary is not '$n passed, 0 failed'" ;;
+  stop-replay-json)  mkdir "$dir/many"; sed 's/^frames 10000000$/frames 2000/' "$long" >"$dir/many/a.scene"
+                     i=0; while [ $i -lt 300 ]; do ln "$dir/many/a.scene" "$dir/many/l$i.scene"; i=$((i + 1)); done
+                     # Under --json the verdict lines go to stderr: wait on a copy of replay's stdout there.
+                     "$ricochet" replay --json "$dir/many" >"$dir/json" 2>"$dir/out" & pid=$!
+                     while ! grep -q '^ok ' "$dir/out"; do kill -0 "$pid" 2>/dev/null || fail "replay ended early"; sleep 0.02; done
+                     kill -INT "$pid"; wait "$pid"; rc=$?; mv "$dir/json" "$dir/out"
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     json_is out 'd["exit"] == 130 and d["stopped"] is True and d["total"] == 301 and 1 <= d["passed"] == len(d["logs"]) < 301' ;;
+  stop-check)        mkproj; sed 's/^frames 10000000$/frames 2000/' "$long" >"$proj/replays/a.scene"
+                     i=0; while [ $i -lt 300 ]; do ln "$proj/replays/a.scene" "$proj/replays/l$i.scene"; i=$((i + 1)); done
+                     cd "$proj"; stop_after_first_line INT check --no-properties --fuzz-runs 0
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     has out "check stopped by SIGINT"; has out "== summary"
+                     ! grep -q '^== lecture pinball' "$dir/out" || fail "check went on to the next stage"
+                     grep -q '^ricochet replay: stopped by SIGINT after [0-9]* of 302 logs$' "$dir/err" || fail "no stopped line" ;;
+  stop-record)       cp "$long" "$dir/r.scene"
+                     # record prints nothing before its write: wait until its run is under way (a tenth of a
+                     # second of its own CPU time, in /proc/PID/stat: reading a 200-line log takes microseconds),
+                     # then stop it; the log must be unchanged.
+                     [ -r /proc/$$/stat ] || { echo "skip $case: no /proc"; exit 77; }
+                     "$ricochet" record "$dir/r.scene" --max-work 0 >"$dir/out" 2>"$dir/err" & pid=$!
+                     while [ "$(awk '{print $14}' "/proc/$pid/stat" 2>/dev/null || echo 0)" -lt 10 ]; do
+                       kill -0 "$pid" 2>/dev/null || fail "record ended early"; sleep 0.02; done
+                     kill -INT "$pid"; wait "$pid"; rc=$?
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     has err "ricochet record: the log is unchanged; stopped by SIGINT"
+                     cmp -s "$long" "$dir/r.scene" || fail "record changed the log"
+                     [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left" ;;
+  stop-fuzz)         mkproj; bins=$(dirname "$ricochet")/../fuzz
+                     "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
+                     cd "$proj"
+                     # A campaign of a week, stopped once it has started: the header is its first line.
+                     stop_after_first_line INT fuzz --target scene --time 604800 --seed 1 --cache-dir "$dir/cache"
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     grep -q 'stopped by SIGINT (exit 130)$' "$dir/out" || fail "the summary does not say it was stopped"
+                     [ -d "$dir/cache/scene/robust/corpus" ] || fail "the corpus folder is gone"
+                     [ -z "$(ls -A "$dir/cache/runs")" ] || fail "the campaign's own folder is left: $(ls -A "$dir/cache/runs")"
+                     ! grep -q 'stopped early' "$dir/out" || fail "stopped workers reported as stopped early" ;;
   *) echo "unknown case $case" >&2; exit 1 ;;
 esac
 echo "ok $case"

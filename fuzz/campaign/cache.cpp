@@ -17,7 +17,8 @@ fs::path default_cache_dir() {
     if (const char* d = std::getenv("RICOCHET_FUZZ_CACHE"); d != nullptr && *d != '\0') return d;
     if (const char* x = std::getenv("XDG_CACHE_HOME"); x != nullptr && *x != '\0') return fs::path(x) / "ricochet" / "fuzz";
     if (const char* h = std::getenv("HOME"); h != nullptr && *h != '\0') return fs::path(h) / ".cache" / "ricochet" / "fuzz";
-    return fs::path(RICOCHET_BINARY_DIR) / ".cache" / "ricochet-fuzz";
+    // Degenerate: no home to keep a cache in; the caller asks for --cache-dir.
+    return {};
 }
 
 std::set<std::string> list_artifacts(const fs::path& dir) {

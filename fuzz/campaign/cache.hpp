@@ -11,8 +11,8 @@
 
 namespace ricochet::fuzz {
 
-/// $RICOCHET_FUZZ_CACHE, else $XDG_CACHE_HOME/ricochet/fuzz, else ~/.cache/ricochet/fuzz, else a folder
-/// in the build tree: never the source tree.
+/// $RICOCHET_FUZZ_CACHE, else $XDG_CACHE_HOME/ricochet/fuzz, else ~/.cache/ricochet/fuzz; empty if none
+/// of them is set (never a folder in the source or build tree).
 std::filesystem::path default_cache_dir();
 
 /// The names of libFuzzer's artifacts in dir (crash-, timeout-, oom-, leak-, slow-unit- files).

@@ -52,8 +52,11 @@ void register_fuzz(CLI::App& app) {
     sub->add_option("--bin-dir", opt->bin_dir, "folder of the fuzz_* binaries (default: this build's fuzz/, or $RICOCHET_FUZZ_BIN_DIR)");
     sub->add_option("--cache-dir", opt->cache_dir,
                     "working corpus and artifacts (default $RICOCHET_FUZZ_CACHE, $XDG_CACHE_HOME/ricochet/fuzz or ~/.cache/ricochet/fuzz)");
-    sub->add_option("--replay-dir", opt->replay_dir, "where failure logs go (default $RICOCHET_REPLAY_DIR or the source tree's replays/)");
+    sub->add_option("--replay-dir", opt->replay_dir, "where failure logs go (default $RICOCHET_REPLAY_DIR, else the project folder's replays/)");
     sub->add_flag("--no-merge", opt->no_merge, "skip the corpus merge at the end");
+    sub->add_flag("--json", opt->json,
+                  "print one JSON document (docs/cli-json.md, schema ricochet-fuzz/1) on stdout instead of the summary; "
+                  "progress goes to stderr");
     // After `--`, everything is positional: libFuzzer's own -flag=value arguments.
     sub->add_option("libfuzzer_flags", opt->libfuzzer_flags,
                     "after --: flags passed to every libFuzzer worker after the campaign's own (e.g. -- -max_len=256 -use_cmp=0)");

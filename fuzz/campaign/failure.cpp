@@ -5,6 +5,7 @@
 // in the folder under any name.
 #include "failure.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -24,6 +25,7 @@
 #include "run_dir.hpp"
 #include "ricochet/checks.hpp"
 #include "ricochet/scene_log.hpp"
+#include "ricochet_cli/stop_signal.hpp"
 #include "sha1.hpp"
 
 namespace ricochet::fuzz {
@@ -67,8 +69,10 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, 
     // Everything else is written in this campaign's own folder first.
     const fs::path minimized = r.work / ("minimized-" + artifact);
     const fs::path scratch = r.work / "scratch.log";
-    // Minimize: libFuzzer keeps the input failing while it shrinks it; capped in runs (and time).
-    std::vector<std::string> argv = {r.bin.string(), "-minimize_crash=1", fmt::format("-runs={}", k_minimize_runs)};
+    // Minimize: libFuzzer keeps the input failing while it shrinks it; capped in runs (and time). A campaign
+    // of fewer --runs per worker minimizes with as many: N bounds every libFuzzer process it starts.
+    const std::uint64_t minimize_runs = opt.runs > 0 ? std::min<std::uint64_t>(opt.runs, k_minimize_runs) : k_minimize_runs;
+    std::vector<std::string> argv = {r.bin.string(), "-minimize_crash=1", fmt::format("-runs={}", minimize_runs)};
     if (opt.runs == 0) argv.push_back(fmt::format("-max_total_time={}", k_minimize_seconds));
     if (opt.seed > 0) argv.push_back(fmt::format("-seed={}", opt.seed));
     argv.insert(argv.end(), {"-exact_artifact_path=" + minimized.string(), raw.string()});
@@ -127,10 +131,12 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, 
     }
     if (!saved->is_new) {
         fmt::print("    known: the same case is already there: {}\n", saved->path.string());
+        r.logs.emplace_back(saved->path.string(), false);
         ++r.known_failures;
         return;
     }
     fmt::print("    scene log: {}  (ricochet replay {})\n", saved->path.string(), saved->path.string());
+    r.logs.emplace_back(saved->path.string(), true);
     // The contract: replay shows the failure the target saw. A log that passes replay without expecting a
     // failure would guard against nothing: say so.
     const SceneOrDiagnostic parsed = read_scene_log(saved->path);
@@ -150,6 +156,12 @@ void convert_failures(TargetRun& r, const CampaignOptions& opt, const Plan& plan
     std::set<std::string> signatures;
     int converted = 0;
     for (const std::string& a : fresh) {
+        // A stopped campaign minimizes nothing more: the artifacts are kept below, to convert another time.
+        if (cli::stop_requested()) {
+            r.notes.push_back(fmt::format("stopped by {}: {} failure artifact(s) kept unconverted in {}", cli::stop_signal_name(),
+                                          fresh.size() - static_cast<std::size_t>(converted), r.kept.string()));
+            break;
+        }
         if (converted++ == k_max_failures_converted) {
             r.notes.push_back(fmt::format("{} more failure artifact(s) left unconverted in {}", fresh.size() - k_max_failures_converted,
                                           r.kept.string()));

@@ -11,6 +11,7 @@
 #include "process.hpp"
 #include "run_dir.hpp"
 #include "ricochet/kernel.hpp"
+#include "ricochet_cli/project.hpp"
 
 namespace ricochet::fuzz {
 namespace {
@@ -28,12 +29,6 @@ fs::path default_bin_dir() {
     return ec ? baked : self.parent_path().parent_path() / "fuzz";
 }
 
-/// Where failure logs go: $RICOCHET_REPLAY_DIR, else the source tree's regression corpus.
-fs::path default_replay_dir() {
-    if (const char* d = std::getenv("RICOCHET_REPLAY_DIR"); d != nullptr && *d != '\0') return d;
-    return fs::path(RICOCHET_SOURCE_DIR) / "replays";
-}
-
 bool known_target(const std::string& t) {
     return std::find(k_campaign_targets.begin(), k_campaign_targets.end(), t) != k_campaign_targets.end();
 }
@@ -48,7 +43,20 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
     Plan plan;
     plan.bin_dir = opt.bin_dir.empty() ? default_bin_dir() : fs::path(opt.bin_dir);
     plan.cache = opt.cache_dir.empty() ? default_cache_dir() : fs::path(opt.cache_dir);
-    plan.replay_dir = opt.replay_dir.empty() ? default_replay_dir() : fs::path(opt.replay_dir);
+    if (plan.cache.empty()) {
+        fmt::print(stderr, "ricochet fuzz: error: no cache folder (HOME, XDG_CACHE_HOME and RICOCHET_FUZZ_CACHE are unset); "
+                           "pass --cache-dir DIR\n");
+        return std::nullopt;
+    }
+    // Failures are saved into the project's corpus (--replay-dir, $RICOCHET_REPLAY_DIR, or the project
+    // folder's replays/), never into the tree this binary was built from.
+    const auto project = cli::find_project(opt.replay_dir);
+    if (!project) {
+        fmt::print(stderr, "{}\n", cli::no_project_message("fuzz", "run it in a project folder or pass --replay-dir DIR"));
+        return std::nullopt;
+    }
+    plan.replay_dir = project->replay_dir;
+    plan.project = project->root;
     plan.source = RICOCHET_SOURCE_DIR;
     std::vector<std::string> targets = opt.targets;
     if (targets.empty())
@@ -114,11 +122,17 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
             }
         }
         r.dict = plan.source / "fuzz" / fmt::format("{}.dict", t);
-        // Seeds: the committed regression inputs (and the replays for the parser). A lecture kernel starts
-        // from its own corpus only: committed inputs may be known failures of it.
+        // Seeds, read only: the project's committed regression inputs (PROJECT/fuzz/corpus/TARGET, else the
+        // target's own, committed with the tool), and the project's replays for the parser. A lecture kernel
+        // starts from its own corpus only: committed inputs may be known failures of it.
         if (!opt.kernel.starts_with("lecture")) {
-            if (fs::exists(plan.source / "fuzz" / "corpus" / t)) r.seeds.push_back(plan.source / "fuzz" / "corpus" / t);
-            if (t == "parser" && fs::exists(plan.source / "replays")) r.seeds.push_back(plan.source / "replays");
+            const fs::path mine = plan.project.empty() ? fs::path() : plan.project / "fuzz" / "corpus" / t;
+            const fs::path tools = plan.source / "fuzz" / "corpus" / t;
+            if (!mine.empty() && fs::is_directory(mine, ec))
+                r.seeds.push_back(mine);
+            else if (fs::is_directory(tools, ec))
+                r.seeds.push_back(tools);
+            if (t == "parser" && fs::is_directory(plan.replay_dir, ec)) r.seeds.push_back(plan.replay_dir);
         }
         plan.runs.push_back(std::move(r));
     }

@@ -45,6 +45,7 @@ struct TargetRun {
     int new_failures = 0;                        ///< failures saved (or kept) as new
     int known_failures = 0;                      ///< failures whose log was already saved
     std::vector<std::string> notes;              ///< lines for the end of the report
+    std::vector<std::pair<std::string, bool>> logs;  ///< failure logs saved (path, true) or found known (path, false)
     std::vector<std::string> stops;              ///< why workers stopped before the campaign's end
 };
 
@@ -53,8 +54,9 @@ struct Plan {
     std::filesystem::path bin_dir;     ///< folder of the fuzz_* binaries
     std::filesystem::path cache;       ///< the cache folder (working corpora, artifacts, logs)
     std::filesystem::path run_dir;     ///< CACHE/runs/PID-XXXXXX: this campaign's own files (run_dir.hpp)
-    std::filesystem::path replay_dir;  ///< where failure logs are saved
-    std::filesystem::path source;      ///< the source tree (dictionaries, committed inputs)
+    std::filesystem::path replay_dir;  ///< where failure logs are saved (the project's, ricochet_cli/project.hpp)
+    std::filesystem::path project;     ///< the project folder (its fuzz/corpus/ seeds); empty if none was found
+    std::filesystem::path source;      ///< the tool's source tree, read only (dictionaries, the targets' own inputs)
     int jobs = 1;                      ///< worker processes in all
     std::vector<TargetRun> runs;       ///< one per target, in the order asked for
 };

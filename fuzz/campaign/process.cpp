@@ -1,6 +1,8 @@
 // Child processes of a campaign (process.hpp): posix_spawn, so that nothing runs between fork and exec.
 #include "process.hpp"
 
+#include "ricochet_cli/stop_signal.hpp"
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -55,9 +57,8 @@ std::pair<int, std::string> run_capture(const std::vector<std::string>& argv, co
     const pid_t pid = spawn(argv, env_extra, scratch);
     // Degenerate: the program could not be started.
     if (pid < 0) return {127, "cannot start " + argv[0]};
-    int status = 0;
-    waitpid(pid, &status, 0);
-    const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    // A stop asked of the campaign (SIGINT, SIGTERM) is passed on to a minimization or merge under way.
+    const int rc = cli::wait_passing_stop(pid);
     return {rc, read_all(scratch)};
 }
 

@@ -20,6 +20,7 @@
 #include "cache.hpp"
 #include "fuzz_common.hpp"
 #include "process.hpp"
+#include "ricochet_cli/stop_signal.hpp"
 
 namespace ricochet::fuzz {
 namespace {
@@ -98,6 +99,13 @@ std::string last_words(const TargetRun& r) {
     return last.empty() ? "no output" : last;
 }
 
+/// True the first time it is called after a stop was requested (passed records that it was).
+bool stop_requested_once(bool& passed) {
+    if (passed || !cli::stop_requested()) return false;
+    passed = true;
+    return true;
+}
+
 /// How a process ended, in words.
 std::string how_it_ended(int status) {
     if (WIFEXITED(status)) return fmt::format("exited with status {}", WEXITSTATUS(status));
@@ -144,7 +152,14 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
         for (std::size_t w = 0; w < r.pids.size(); ++w) start_worker(r, w, static_cast<int>(w));
     }
     double last_print = 0;
+    bool passed_stop = false;
     for (;;) {
+        // A SIGINT or SIGTERM (run_campaign holds a StopOnSignal): every worker gets it once and exits
+        // (libFuzzer's interrupt handler); their corpus and artifacts stay.
+        if (stop_requested_once(passed_stop))
+            for (TargetRun& r : plan.runs)
+                for (pid_t pid : r.pids)
+                    if (pid > 0) kill(pid, cli::stop_signal());
         bool any = false;
         for (TargetRun& r : plan.runs) {
             for (std::size_t w = 0; w < r.pids.size(); ++w) {
@@ -162,7 +177,8 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                 if (!clean && std::chrono::duration<double>(Clock::now() - r.started[w]).count() < 1) ++r.quick_crashes;
                 // A worker stops at its first failure; restart it while time is left, unless it keeps failing
                 // at start-up (a corpus input that fails). A campaign by runs does not restart: each worker
-                // runs its inputs once.
+                // runs its inputs once. A stopped campaign restarts nothing and says nothing: it was asked to.
+                if (cli::stop_requested()) continue;
                 const bool time_left = !by_runs && elapsed() < opt.time - 1;
                 if (!clean && time_left && r.restarts < k_max_restarts && r.quick_crashes < k_max_quick_crashes) {
                     ++r.restarts;

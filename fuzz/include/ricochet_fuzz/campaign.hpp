@@ -25,6 +25,7 @@ struct CampaignOptions {
     std::string cache_dir;             ///< working corpus and artifacts
     std::string replay_dir;            ///< where failure logs are saved
     bool no_merge = false;             ///< skip the corpus merge at the end
+    bool json = false;                 ///< the summary as one JSON document on stdout (docs/cli-json.md); the rest on stderr
     std::vector<std::string> libfuzzer_flags;  ///< passed to every worker after the campaign's own flags
 };
 
