@@ -28,7 +28,10 @@ std::optional<fs::path> find_project_root(const fs::path& start) {
 
 std::optional<Project> find_project(const std::string& flag) {
     Project p;
-    if (const auto root = find_project_root(fs::current_path())) p.root = *root;
+    std::error_code ec;
+    // Degenerate: a current folder that no longer exists has no project (the flag or variable may still name one).
+    if (const fs::path here = fs::current_path(ec); !ec)
+        if (const auto root = find_project_root(here)) p.root = *root;
     if (!flag.empty())
         p.replay_dir = flag;
     else if (const char* env = std::getenv(k_replay_dir_env); env != nullptr && *env != '\0')
