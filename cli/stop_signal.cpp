@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <optional>
 #include <thread>
 
 namespace ricochet::cli {
@@ -90,7 +91,9 @@ const char* stop_signal_name() { return g_stop_signal == SIGTERM ? "SIGTERM" : "
 int stop_exit_code() { return 128 + (g_stop_signal != 0 ? static_cast<int>(g_stop_signal) : SIGINT); }
 
 int wait_passing_stop(pid_t pid) {
-    bool passed = false;
+    using Clock = std::chrono::steady_clock;
+    std::optional<Clock::time_point> passed;
+    bool killed = false;
     for (;;) {
         int status = 0;
         const pid_t got = ::waitpid(pid, &status, WNOHANG);
@@ -98,7 +101,11 @@ int wait_passing_stop(pid_t pid) {
         if (got < 0 && errno != EINTR) return 127;
         if (!passed && stop_requested()) {
             ::kill(pid, stop_signal());
-            passed = true;
+            passed = Clock::now();
+        }
+        if (passed && !killed && std::chrono::duration<double>(Clock::now() - *passed).count() > k_stop_grace_s) {
+            ::kill(pid, SIGKILL);
+            killed = true;
         }
         std::this_thread::sleep_for(k_wait_poll);
     }

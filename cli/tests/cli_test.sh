@@ -314,6 +314,16 @@ case "$case" in
                      has err "ricochet record: the log is unchanged; stopped by SIGINT"
                      cmp -s "$long" "$dir/r.scene" || fail "record changed the log"
                      [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left" ;;
+  stop-fuzz-stuck)   mkproj; mkdir "$dir/bin"
+                     # A worker that never ends on SIGINT or SIGTERM (as a libFuzzer deadlocked in its
+                     # interrupt handler would): the campaign kills it k_stop_grace_s (10 s) after passing the
+                     # signal on, and still ends as a stopped campaign.
+                     printf '#!/bin/sh\ncase "$1" in -help=1) echo "Usage: fake"; exit 0;; esac\ntrap "" INT TERM\nwhile :; do sleep 1; done\n' >"$dir/bin/fuzz_scene"
+                     chmod +x "$dir/bin/fuzz_scene"; cd "$proj"
+                     stop_after_first_line INT fuzz --target scene --time 604800 --seed 1 --cache-dir "$dir/cache" --bin-dir "$dir/bin"
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     grep -q 'scene worker 0 did not stop within 10 s of SIGINT: killed' "$dir/out" || fail "the stuck worker was not killed"
+                     grep -q 'stopped by SIGINT (exit 130)$' "$dir/out" || fail "the summary does not say it was stopped" ;;
   stop-fuzz)         mkproj; bins=$(dirname "$ricochet")/../fuzz
                      "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
                      cd "$proj"

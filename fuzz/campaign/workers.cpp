@@ -152,14 +152,28 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
         for (std::size_t w = 0; w < r.pids.size(); ++w) start_worker(r, w, static_cast<int>(w));
     }
     double last_print = 0;
-    bool passed_stop = false;
+    bool passed_stop = false, killed = false;
+    double stop_at = 0;
     for (;;) {
         // A SIGINT or SIGTERM (run_campaign holds a StopOnSignal): every worker gets it once and exits
         // (libFuzzer's interrupt handler); their corpus and artifacts stay.
-        if (stop_requested_once(passed_stop))
+        if (stop_requested_once(passed_stop)) {
+            stop_at = elapsed();
             for (TargetRun& r : plan.runs)
                 for (pid_t pid : r.pids)
                     if (pid > 0) kill(pid, cli::stop_signal());
+        }
+        // One still there k_stop_grace_s later is stuck in that handler (it is not async-signal-safe): killed.
+        if (passed_stop && !killed && elapsed() - stop_at > cli::k_stop_grace_s) {
+            killed = true;
+            for (TargetRun& r : plan.runs)
+                for (std::size_t w = 0; w < r.pids.size(); ++w)
+                    if (r.pids[w] > 0) {
+                        fmt::print("  {} worker {} did not stop within {:.0f} s of {}: killed\n", r.target, w,
+                                   cli::k_stop_grace_s, cli::stop_signal_name());
+                        kill(r.pids[w], SIGKILL);
+                    }
+        }
         bool any = false;
         for (TargetRun& r : plan.runs) {
             for (std::size_t w = 0; w < r.pids.size(); ++w) {

@@ -63,8 +63,15 @@ const char* stop_signal_name();
 /// 128 + stop_signal(): the exit status of a stopped command.
 int stop_exit_code();
 
+/// Seconds a child is given to exit after a stop was passed on to it before it is killed (SIGKILL). A
+/// libFuzzer worker's interrupt handler is not async-signal-safe (it builds a std::string and prints): a
+/// signal that lands inside malloc can deadlock it, and a stopped command must still end. A worker that
+/// does exit takes milliseconds.
+inline constexpr double k_stop_grace_s = 10;
+
 /// Waits for the child pid and returns its exit status (128 + signal if a signal ended it, 127 if it
-/// cannot be waited for). A stop requested meanwhile is passed on to the child, once, as the same signal.
+/// cannot be waited for). A stop requested meanwhile is passed on to the child, once, as the same signal,
+/// and a child still there k_stop_grace_s later is killed.
 int wait_passing_stop(pid_t pid);
 
 }  // namespace ricochet::cli
