@@ -7,17 +7,13 @@
 #include <string>
 
 #include "ricochet/render.hpp"
+#include "text_search.hpp"
 
 namespace ricochet {
 namespace {
 
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-}
-
-bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+using test::count;
+using test::has;
 
 Event state(std::int64_t frame, std::uint32_t ball, Vec2 pos, Vec2 vel = {}) {
     return {Event::Kind::state, frame, ball, Event::Shape::none, 0, pos, vel};

@@ -9,17 +9,13 @@
 
 #include "mutant_kernel.hpp"
 #include "ricochet/render.hpp"
+#include "text_search.hpp"
 
 namespace ricochet {
 namespace {
 
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-}
-
-bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
+using test::count;
+using test::has;
 
 /// The points of the first polyline after `after` in svg, in picture coordinates.
 std::vector<std::pair<double, double>> polyline_after(const std::string& svg, const std::string& after) {
