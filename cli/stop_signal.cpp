@@ -41,36 +41,37 @@ extern "C" void exit_now(int sig) {
     ::_exit(128 + sig);
 }
 
+/// Installs handler for SIGINT and SIGTERM with flags, keeping the dispositions they replace.
+void handle_both(void (*handler)(int), int flags, struct sigaction& old_int, struct sigaction& old_term) {
+    struct sigaction sa {};
+    sa.sa_handler = handler;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = flags;
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+}
+
+/// Puts back the dispositions handle_both replaced.
+void restore_both(const struct sigaction& old_int, const struct sigaction& old_term) {
+    sigaction(SIGINT, &old_int, nullptr);
+    sigaction(SIGTERM, &old_term, nullptr);
+}
+
 }  // namespace
 
 StopOnSignal::StopOnSignal() {
-    struct sigaction sa {};
-    sa.sa_handler = record_stop;
-    sigemptyset(&sa.sa_mask);
     // Restarted, not failed: a write or a wait interrupted half-way would look like an I/O error.
-    sa.sa_flags = SA_RESTART;
-    sigaction(SIGINT, &sa, &old_int_);
-    sigaction(SIGTERM, &sa, &old_term_);
+    handle_both(record_stop, SA_RESTART, old_int_, old_term_);
 }
 
-StopOnSignal::~StopOnSignal() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-}
+StopOnSignal::~StopOnSignal() { restore_both(old_int_, old_term_); }
 
 ExitOnSignal::ExitOnSignal(const char* message) {
     g_exit_message = message;
-    struct sigaction sa {};
-    sa.sa_handler = exit_now;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int_);
-    sigaction(SIGTERM, &sa, &old_term_);
+    handle_both(exit_now, 0, old_int_, old_term_);
 }
 
-ExitOnSignal::~ExitOnSignal() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-}
+ExitOnSignal::~ExitOnSignal() { restore_both(old_int_, old_term_); }
 
 HoldSignals::HoldSignals() {
     sigset_t both;
