@@ -10,9 +10,11 @@ namespace ricochet::cli {
 
 namespace {
 
+/// The commands a user is shown: not the hidden ones (no group), such as `__complete`.
 std::vector<std::string> command_names(const CLI::App& app) {
     std::vector<std::string> names;
-    for (const CLI::App* s : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(s->get_name());
+    for (const CLI::App* s : app.get_subcommands([](const CLI::App* c) { return !c->get_group().empty(); }))
+        names.push_back(s->get_name());
     return names;
 }
 
@@ -24,8 +26,9 @@ std::string program_help(const CLI::App& app) {
 }
 
 bool is_command(const CLI::App& app, const std::string& word) {
-    const auto names = command_names(app);
-    return std::find(names.begin(), names.end(), word) != names.end();
+    // Hidden commands too: `__complete` is called by the completion scripts.
+    const auto all = app.get_subcommands([](const CLI::App*) { return true; });
+    return std::any_of(all.begin(), all.end(), [&](const CLI::App* s) { return s->get_name() == word; });
 }
 
 void print_unknown_command(const CLI::App& app, const std::string& word) {

@@ -32,6 +32,8 @@ void register_render(CLI::App& app);
 void register_check(CLI::App& app);
 /// `ricochet help [COMMAND]`: the program's help, or a command's, on stdout.
 void register_help(CLI::App& app);
+/// `ricochet completion bash|zsh` (a shell's completion script) and the hidden `ricochet __complete` it calls.
+void register_completion(CLI::App& app);
 /// `ricochet bench` in a build without bench/ (RICOCHET_BENCH=OFF): says how to get it, exits 1.
 void register_bench_not_built(CLI::App& app);
 

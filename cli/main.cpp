@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
 #endif
     ricochet::fuzz::register_fuzz(app);
     ricochet::cli::register_help(app);
+    ricochet::cli::register_completion(app);
 
     // Degenerate: no arguments at all is a usage error; the help says what to type.
     if (argc < 2) {

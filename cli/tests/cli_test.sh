@@ -113,7 +113,7 @@ case "$case" in
                      has out "1 passed, 1 failed" ;;
   unknown-command)   run 2 replya replays; first_line err "ricochet: error: unknown command 'replya'; did you mean 'replay'?" ;;
   unknown-far)       run 2 xyzzy
-                     first_line err "ricochet: error: unknown command 'xyzzy' (commands: run, record, replay, render, check, bench, fuzz, help)" ;;
+                     first_line err "ricochet: error: unknown command 'xyzzy' (commands: run, record, replay, render, check, bench, fuzz, help, completion)" ;;
   version)           run 0 --version; [ "$(cat "$dir/out")" = "ricochet $version" ] || fail "stdout is not 'ricochet $version'" ;;
   help)              run 0 help; first_line out "ricochet: the 2D collision core's scene logs, replay and checks"
                      has out "Subcommands:"; grep -q '^  replay ' "$dir/out" || fail "help lists no replay" ;;
