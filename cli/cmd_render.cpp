@@ -1,6 +1,9 @@
 // `ricochet render LOG -o FILE.svg [--frames A:B] [--view failure|all] [--max-balls N] [--max-points N]
 // [--width PX] [--kernel K] [--max-work N]`: a picture of the scene and its run, drawn as the run streams by.
+// SIGINT or SIGTERM during the run ends it at once with nothing written (exit 128 + the signal); one during
+// the write waits for the rename, so the picture is whole or absent.
 #include <charconv>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -9,6 +12,7 @@
 #include "progress.hpp"
 #include "ricochet/render.hpp"
 #include "ricochet/scene_log.hpp"
+#include "ricochet_cli/stop_signal.hpp"
 
 namespace ricochet::cli {
 
@@ -77,18 +81,31 @@ void register_render(CLI::App& app) {
         }
         check_work_or_exit(opt->log, scene, scene.frames, opt->max_work);
         RenderResult result;
+        // Nothing is written before the run ends, so a signal during it may end the process there and then.
+        std::optional<ExitOnSignal> exit_on_signal;
+        exit_on_signal.emplace("ricochet render: nothing written; stopped by ");
         {
             Progress progress(fmt::format("ricochet render {}", opt->log));
             result = render_run(scene, scene.kernel, r,
                                 [&](std::int64_t done, std::int64_t total) { progress.update(done, total); });
         }
         std::string error;
-        if (!write_file_atomically(opt->out, result.svg, &error)) {
+        bool written = false;
+        // Outlives the hold below: a signal held during the write is then only a request to stop.
+        std::optional<StopOnSignal> stop;
+        {
+            const HoldSignals hold;
+            exit_on_signal.reset();
+            stop.emplace();
+            written = write_file_atomically(opt->out, result.svg, &error);
+        }
+        if (!written) {
             fmt::print(stderr, "ricochet: error: {}\n", error);
             throw Exit{1};
         }
         write_stdout(fmt::format("wrote {}{}\n", opt->out,
                                  result.failure ? fmt::format(" (marked: {})", result.failure->str()) : ""));
+        if (stop_requested()) throw Exit{stop_exit_code()};
     });
 }
 

@@ -301,6 +301,17 @@ case "$case" in
                      has out "check stopped by SIGINT"; has out "== summary"
                      ! grep -q '^== lecture pinball' "$dir/out" || fail "check went on to the next stage"
                      grep -q '^ricochet replay: stopped by SIGINT after [0-9]* of 302 logs$' "$dir/err" || fail "no stopped line" ;;
+  stop-render)       # render draws nothing before its run ends: stop it once the run is under way (a tenth of a second
+                     # of its own CPU time, as for stop-record); no picture and no temporary may be left.
+                     [ -r /proc/$$/stat ] || { echo "skip $case: no /proc"; exit 77; }
+                     "$ricochet" render "$long" -o "$dir/x.svg" --max-work 0 >"$dir/out" 2>"$dir/err" & pid=$!
+                     while [ "$(awk '{print $14}' "/proc/$pid/stat" 2>/dev/null || echo 0)" -lt 10 ]; do
+                       kill -0 "$pid" 2>/dev/null || fail "render ended early"; sleep 0.02; done
+                     kill -INT "$pid"; wait "$pid"; rc=$?
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     has err "ricochet render: nothing written; stopped by SIGINT"
+                     [ -z "$(ls -A "$dir" | grep -v -e '^out$' -e '^err$' -e '\.scene$')" ] ||
+                       fail "render left: $(ls -A "$dir")" ;;
   stop-record)       cp "$long" "$dir/r.scene"
                      # record prints nothing before its write: wait until its run is under way (a tenth of a
                      # second of its own CPU time, in /proc/PID/stat: reading a 200-line log takes microseconds),
