@@ -2,7 +2,6 @@
 #include "scale_bench.hpp"
 
 #include <fmt/format.h>
-#include <fmt/os.h>
 
 #include <algorithm>
 #include <chrono>
@@ -16,6 +15,7 @@
 #include <time.h>
 
 #include "box2d_peer.hpp"
+#include "ricochet_bench/result_file.hpp"
 #include "ricochet/predicates.hpp"
 #include "ricochet/wall_grid.hpp"
 #include "ricochet/world.hpp"
@@ -313,17 +313,18 @@ int run_scale_bench(bool quick, unsigned threads, const std::string& out_dir) {
     std::filesystem::create_directories(out_dir);
     const std::string csv_path = out_dir + "/scale.csv";
     {
-        auto csv = fmt::output_file(csv_path);
+        bench::ResultFile csv(csv_path);
         csv.print("sweep,method,walls,balls,threads,ms_per_frame,ns_per_ball_frame,cpu_ns_per_ball_frame,"
                   "hits_per_ball_frame,tunnels,checked_ball_frames\n");
         for (const Row& r : rows)
             csv.print("{},{},{},{},{},{},{},{},{},{},{}\n", r.sweep, r.method, r.walls, r.balls, r.threads, r.ms_per_frame,
                       r.ns_per_ball_frame, r.cpu_ns_per_ball_frame, r.hits_per_ball_frame, r.tunnels,
                       r.checked_ball_frames);
+        csv.close();
     }
     const std::vector<std::string> methods{"robust+grid", "robust+bvh", "robust-brute", "box2d-2.4.1"};
     {
-        auto dat = fmt::output_file(out_dir + "/scale.dat");
+        bench::ResultFile dat(out_dir + "/scale.dat");
         for (const char* sweep : {"walls", "balls"})
             for (const std::string& m : methods) {
                 dat.print("# {} {}\n", sweep, m);
@@ -336,9 +337,10 @@ int run_scale_bench(bool quick, unsigned threads, const std::string& out_dir) {
                 if (!any) dat.print("nan nan\n");
                 dat.print("\n\n");
             }
+        dat.close();
     }
     {
-        auto gp = fmt::output_file(out_dir + "/scale.gp");
+        bench::ResultFile gp(out_dir + "/scale.gp");
         gp.print("set terminal pngcairo size 1400,560 font ',11'\nset output '{}/scale.png'\n", out_dir);
         gp.print("set multiplot layout 1,2 title 'ricochet bench scale{}: ns per ball-frame (one thread, shared "
                  "machine)'\nset logscale xy\nset grid\nset ylabel 'ns per ball-frame'\nset key top left\n",
@@ -352,6 +354,7 @@ int run_scale_bench(bool quick, unsigned threads, const std::string& out_dir) {
             gp.print("\n");
         }
         gp.print("unset multiplot\n");
+        gp.close();
     }
     const std::string cmd = fmt::format("gnuplot '{}/scale.gp'", out_dir);
     if (std::system(cmd.c_str()) != 0) fmt::print("gnuplot failed; the data is in {}\n", csv_path);

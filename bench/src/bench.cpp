@@ -15,9 +15,9 @@
 #include <optional>
 
 #include <fmt/format.h>
-#include <fmt/os.h>
 
 #include "methods.hpp"
+#include "ricochet_bench/result_file.hpp"
 #include "ricochet/batch.hpp"
 #include "ricochet/predicates.hpp"
 #include "ricochet/tunnel.hpp"
@@ -105,7 +105,7 @@ void print_table(const std::vector<Row>& rows) {
 }
 
 void write_csv(const std::vector<Row>& rows, const std::string& path) {
-    auto f = fmt::output_file(path);
+    ResultFile f(path);
     f.print("kind,workload,method,n,ns_per_query,ratio_lecture_double,false_negatives,false_positives,convention,"
             "max_t_err_ulps,max_t_err_abs,max_point_err_ulps,max_point_err_abs,tunnels,escaped,speed_drift\n");
     auto num = [](double v) { return std::isnan(v) ? std::string() : fmt::format("{}", v); };
@@ -114,6 +114,7 @@ void write_csv(const std::vector<Row>& rows, const std::string& path) {
         f.print("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.kind, r.workload, r.method, r.n, num(r.ns),
                 num(r.ratio), cnt(r.fn), cnt(r.fp), cnt(r.conv), num(r.t_ulps), num(r.t_abs), num(r.p_ulps),
                 num(r.p_abs), cnt(r.tunnels), cnt(r.escaped), num(r.drift));
+    f.close();
 }
 
 /// Runs gnuplot on a script; a missing gnuplot is reported, not fatal.
@@ -455,7 +456,7 @@ void chart(const std::vector<Row>& rows, const Methods& ms, const Options& opt, 
     const std::string dat = opt.out_dir + "/runtime_vs_error.dat";
     const std::string gp = opt.out_dir + "/runtime_vs_error.gp";
     {
-        auto f = fmt::output_file(dat);
+        ResultFile f(dat);
         f.print("# method  geomean_ns_per_sweep  wrong_per_million(0 drawn at 0.1)  max_point_err_ulps(0 drawn at 0.1)  wrong\n");
         for (const auto& m : ms) {
             std::vector<double> ns;
@@ -476,10 +477,11 @@ void chart(const std::vector<Row>& rows, const Methods& ms, const Options& opt, 
             // One block per method (gnuplot's index), so that each gets its own colour and key entry.
             f.print("{} {} {} {} {}\n\n\n", m->name(), geomean(ns), per_m > 0 ? per_m : 0.1, pu > 0 ? pu : 0.1, wrong);
         }
+        f.close();
     }
     std::string names;
     for (const auto& m : ms) names += (names.empty() ? "" : " ") + m->name();
-    auto f = fmt::output_file(gp);
+    ResultFile f(gp);
     f.print(R"GP(set terminal pngcairo size 1200,520 font ",11"
 set output '{0}/runtime_vs_error.png'
 set multiplot layout 1,2 title "ricochet bench{1}: run time against error, {2} sweep workloads, median of {3} runs (shared 2-core machine)"
@@ -516,11 +518,24 @@ int run_bench(const Options& opt) {
                "lecture-double timed in the same, interleaved runs\n");
 
     std::vector<Row> rows;
-    for (const SweepWorkload& wl : sweep_workloads(sz.queries, opt.seed))
+    const std::vector<SweepWorkload> sweeps = sweep_workloads(sz.queries, opt.seed);
+    const std::vector<StaticWorkload> statics = static_workloads(sz.queries, opt.seed + 1);
+    // Progress on stderr, a line as each workload starts: the table comes only at the end.
+    const std::size_t steps = sweeps.size() + statics.size() + boxes().size() + 1;
+    std::size_t step = 0;
+    auto starting = [&](std::string_view what, const std::string& name) {
+        fmt::print(stderr, "bench: [{}/{}] {} {}\n", ++step, steps, what, name);
+    };
+    for (const SweepWorkload& wl : sweeps) {
+        starting("sweep", wl.name);
         for (Row& r : bench_sweeps(ms, wl, sz.reps)) rows.push_back(std::move(r));
-    for (const StaticWorkload& wl : static_workloads(sz.queries, opt.seed + 1))
+    }
+    for (const StaticWorkload& wl : statics) {
+        starting("static", wl.name);
         for (Row& r : bench_statics(ms, wl, sz.reps)) rows.push_back(std::move(r));
+    }
     for (const Box& b : boxes()) {
+        starting("closed box", b.name);
         std::vector<Row> group;
         for (const auto& m : ms) {
             // The exact kernel is slow by design: a tenth of the frames keeps --quick quick.
@@ -532,6 +547,7 @@ int run_bench(const Options& opt) {
         for (Row& r : group) r.ratio = r.ns / ld;
         for (Row& r : group) rows.push_back(std::move(r));
     }
+    starting("batch and maze", "rows");
     for (Row& r : extras(sz, opt.seed, sz.reps)) rows.push_back(std::move(r));
 
     print_table(rows);
@@ -573,7 +589,7 @@ int run_stability(const Options& opt) {
     for (const std::string& s : skipped) fmt::print("{}\n", s);
     const std::size_t ex = find_method(ms, "exact");
     const std::string csv = opt.out_dir + "/stability.csv";
-    auto f = fmt::output_file(csv);
+    ResultFile f(csv);
     f.print("axis,value,method,wrong_decisions,queries,max_point_err_ulps,tunnels,ball_frames\n");
     std::vector<SweepAnswer> ref(n), got(n);
     auto score = [&](const SweepWorkload& wl, std::size_t m, Row& row) {
@@ -615,7 +631,7 @@ int run_stability(const Options& opt) {
     fmt::print("wrote {}\n", csv);
     if (opt.chart && !opt.smoke) {
         const std::string gp = opt.out_dir + "/stability.gp";
-        auto g = fmt::output_file(gp);
+        ResultFile g(gp);
         std::string plots_mag_wrong, plots_mag_tun, plots_ang_wrong, plots_ang_err;
         for (std::size_t m = 0; m < ms.size(); ++m) {
             auto one = [&](const char* axis, int col, bool plus_floor) {
