@@ -10,6 +10,7 @@
 //   dirs       the shell completes a folder name itself
 // `__complete` is hidden from the help and from "did you mean". CLI11 2.1 has no completion of its own.
 #include <algorithm>
+#include <cctype>
 #include <memory>
 #include <string>
 #include <string_view>
