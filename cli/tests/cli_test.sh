@@ -128,6 +128,19 @@ case "$case" in
   render-frames-abc) run 2 render "$log" -o "$dir/x.svg" --frames abc
                      first_line err "ricochet: error: --frames: 'abc' is not a frame range (expected A:B, integers with 0 <= A <= B)"
                      [ ! -e "$dir/x.svg" ] || fail "render wrote the picture" ;;
+  run-unknown-kernel) run 2 run "$log" --kernel nope
+                     first_line err "ricochet: error: unknown kernel 'nope' (lecture-float, lecture-double, robust, exact)" ;;
+  replay-unreadable) mkdir "$dir/logs"; cp "$log" "$dir/logs/a.scene"; printf 'ricochet 1\nbogus 1\n' >"$dir/logs/b.scene"
+                     run 2 replay "$dir/logs"
+                     has out "FAIL $dir/logs/b.scene: unreadable log"; has out "1 passed, 1 failed"
+                     grep -q "^$dir/logs/b.scene:2:1: error: " "$dir/err" || fail "no diagnostic naming b.scene:2:1" ;;
+  check-fuzz-seconds-env) mkproj; cd "$proj"; RICOCHET_CHECK_FUZZ_SECONDS=soon run 2 check --no-properties
+                     first_line err "ricochet check: error: RICOCHET_CHECK_FUZZ_SECONDS='soon' is not a number of seconds (0 to 86400)" ;;
+  check-properties)  # The property suite as check runs it, with a fixed RapidCheck seed (no luck in the verdict).
+                     mkproj; cd "$proj"; RC_PARAMS="seed=1" run 0 check --fuzz-runs 0
+                     grep -q '^properties  not built' "$dir/out" && { echo "skip $case: no property suite in this build"; exit 77; }
+                     grep -q '^properties  passed ([0-9.]* s)$' "$dir/out" || fail "no passed properties line"
+                     has out "check passed" ;;
   check-fuzz-runs)   run 2 check --fuzz-runs many
                      first_line err "ricochet: error: --fuzz-runs: 'many' is not a count of inputs (expected 0 to 9223372036854775807)" ;;
   fuzz-time-0)       run 2 fuzz --time 0
