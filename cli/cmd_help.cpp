@@ -8,17 +8,12 @@
 
 namespace ricochet::cli {
 
-namespace {
-
-/// The commands a user is shown: not the hidden ones (no group), such as `__complete`.
 std::vector<std::string> command_names(const CLI::App& app) {
     std::vector<std::string> names;
     for (const CLI::App* s : app.get_subcommands([](const CLI::App* c) { return !c->get_group().empty(); }))
         names.push_back(s->get_name());
     return names;
 }
-
-}  // namespace
 
 std::string program_help(const CLI::App& app) {
     // The formatter directly: app.help() would show the help of the command being run (`help` itself).

@@ -39,6 +39,9 @@ void register_bench_not_built(CLI::App& app);
 
 /// The program's help (its usage and the list of commands).
 std::string program_help(const CLI::App& app);
+/// The commands of app (or of a command: its subcommands) a user is shown, in order; not the hidden ones
+/// (no group), such as `__complete`.
+std::vector<std::string> command_names(const CLI::App& app);
 /// True if word names one of app's commands.
 bool is_command(const CLI::App& app, const std::string& word);
 /// "ricochet: error: unknown command 'WORD'; did you mean 'NAME'?" (or the list of commands) on stderr.

@@ -32,8 +32,6 @@ struct Reply {
     std::vector<std::string> words;  ///< with mode words: the candidates
 };
 
-bool is_visible(const CLI::App* sub) { return !sub->get_group().empty(); }
-
 /// The value set a validator spells in an option's type name: "TEXT:{bash,zsh}" (CLI::IsMember) or
 /// "TEXT:failure|all" (our own validators); empty if it spells none.
 std::vector<std::string> value_set(const CLI::Option* opt) {
@@ -61,28 +59,10 @@ std::vector<std::string> value_set(const CLI::Option* opt) {
 
 bool takes_value(const CLI::Option* opt) { return opt->get_type_size_max() > 0; }
 
-const CLI::Option* find_option(const CLI::App* cmd, const std::string& name) {
-    for (const CLI::Option* opt : cmd->get_options()) {
-        const auto& l = opt->get_lnames();
-        const auto& s = opt->get_snames();
-        if ((name.starts_with("--") && std::find(l.begin(), l.end(), name.substr(2)) != l.end()) ||
-            (name.size() == 2 && name[0] == '-' && std::find(s.begin(), s.end(), name.substr(1)) != s.end()))
-            return opt;
-    }
-    return nullptr;
-}
-
+/// The shown subcommand called name (not a hidden one), or null.
 const CLI::App* find_subcommand(const CLI::App* cmd, const std::string& name) {
-    for (const CLI::App* sub : cmd->get_subcommands([](const CLI::App*) { return true; }))
-        if (is_visible(sub) && sub->get_name() == name) return sub;
-    return nullptr;
-}
-
-std::vector<std::string> command_words(const CLI::App* cmd) {
-    std::vector<std::string> names;
-    for (const CLI::App* sub : cmd->get_subcommands([](const CLI::App*) { return true; }))
-        if (is_visible(sub)) names.push_back(sub->get_name());
-    return names;
+    const auto names = command_names(*cmd);
+    return std::find(names.begin(), names.end(), name) != names.end() ? cmd->get_subcommand(name) : nullptr;
 }
 
 /// What may be an option's value: a set of words, a file, a folder, or nothing to offer (a number, A:B).
@@ -112,7 +92,7 @@ Reply positional_of(const CLI::App* root, const CLI::App* cmd, std::size_t index
     if (positionals.empty()) return {};
     const CLI::Option* opt = positionals[std::min(index, positionals.size() - 1)];
     if (index >= positionals.size() && opt->get_items_expected_max() == 1) return {};
-    if (opt->get_name(true) == "COMMAND") return {"words", command_words(root)};
+    if (opt->get_name(true) == "COMMAND") return {"words", command_names(*root)};
     if (auto set = value_set(opt); !set.empty()) return {"words", std::move(set)};
     if (opt->get_name(true) == "libfuzzer_flags") return {};
     return {"files", {}};
@@ -157,7 +137,7 @@ Reply complete(const CLI::App* root, std::vector<std::string> w) {
         } else if (word == "--") {
             after_dashdash = true;
         } else if (word.starts_with('-') && word.size() > 1) {
-            const CLI::Option* opt = find_option(cmd, word.substr(0, word.find('=')));
+            const CLI::Option* opt = cmd->get_option_no_throw(word.substr(0, word.find('=')));
             if (opt && takes_value(opt) && word.find('=') == std::string::npos) pending = opt;
         } else if (const CLI::App* sub = positionals == 0 ? find_subcommand(cmd, word) : nullptr) {
             cmd = sub;
@@ -170,15 +150,15 @@ Reply complete(const CLI::App* root, std::vector<std::string> w) {
     if (pending) {
         r = value_of(pending);
     } else if (!prefix.empty()) {
-        const CLI::Option* opt = find_option(cmd, prefix.substr(0, prefix.size() - 1));
+        const CLI::Option* opt = cmd->get_option_no_throw(prefix.substr(0, prefix.size() - 1));
         if (opt && takes_value(opt)) r = value_of(opt);
     } else if (cur.starts_with('-') && !after_dashdash) {
         for (const CLI::Option* opt : cmd->get_options()) {
             for (const std::string& l : opt->get_lnames()) r.words.push_back("--" + l);
             for (const std::string& s : opt->get_snames()) r.words.push_back("-" + s);
         }
-    } else if (positionals == 0 && !command_words(cmd).empty()) {
-        r.words = command_words(cmd);
+    } else if (const auto subs = command_names(*cmd); positionals == 0 && !subs.empty()) {
+        r.words = subs;
     } else {
         r = positional_of(root, cmd, positionals);
     }
