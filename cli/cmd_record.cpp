@@ -86,22 +86,10 @@ void register_record(CLI::App& app) {
         const std::string canonical = write_scene_log(expects_only);
         const auto first_expect = canonical.find("expect ");
         if (first_expect != std::string::npos) text += canonical.substr(first_expect);
-        std::string error;
-        bool written = false;
-        // Outlives the hold below: a signal held during the write is then only a request to stop.
+        // The write is whole or not at all: a signal now waits until the rename is done (the report below
+        // still says what was written; the exit status says a signal came).
         std::optional<StopOnSignal> stop;
-        {
-            // The write is whole or not at all: a signal now waits until the rename is done (the report
-            // below still says what was written; the exit status says a signal came).
-            const HoldSignals hold;
-            exit_on_signal.reset();
-            stop.emplace();
-            written = write_file_atomically(opt->log, text, &error);
-        }
-        if (!written) {
-            fmt::print(stderr, "ricochet: error: {}\n", error);
-            throw Exit{1};
-        }
+        write_file_holding_signals(opt->log, text, exit_on_signal, stop);
         write_stdout(fmt::format("recorded {}: hash {}, {} expect state line(s){}\n", opt->log, format_hash(run.hash),
                                  scene.expect_states.size(),
                                  run.failure ? fmt::format(", expect failure {} {} ({})", run.failure->check,

@@ -89,20 +89,8 @@ void register_render(CLI::App& app) {
             result = render_run(scene, scene.kernel, r,
                                 [&](std::int64_t done, std::int64_t total) { progress.update(done, total); });
         }
-        std::string error;
-        bool written = false;
-        // Outlives the hold below: a signal held during the write is then only a request to stop.
         std::optional<StopOnSignal> stop;
-        {
-            const HoldSignals hold;
-            exit_on_signal.reset();
-            stop.emplace();
-            written = write_file_atomically(opt->out, result.svg, &error);
-        }
-        if (!written) {
-            fmt::print(stderr, "ricochet: error: {}\n", error);
-            throw Exit{1};
-        }
+        write_file_holding_signals(opt->out, result.svg, exit_on_signal, stop);
         write_stdout(fmt::format("wrote {}{}\n", opt->out,
                                  result.failure ? fmt::format(" (marked: {})", result.failure->str()) : ""));
         if (stop_requested()) throw Exit{stop_exit_code()};

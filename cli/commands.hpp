@@ -7,9 +7,11 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "output.hpp"
+#include "ricochet_cli/stop_signal.hpp"
 #include "ricochet/scene.hpp"
 #include "work_budget.hpp"
 
@@ -47,6 +49,12 @@ bool is_command(const CLI::App& app, const std::string& word);
 /// "ricochet: error: unknown command 'WORD'; did you mean 'NAME'?" (or the list of commands) on stderr.
 void print_unknown_command(const CLI::App& app, const std::string& word);
 
+/// The one write of a command whose run ends in a file (record, render): text into path atomically, with
+/// SIGINT and SIGTERM held so that the file is whole or untouched. It ends running's phase (ExitOnSignal) and
+/// puts stop in scope: a signal held during the write, or one after it, is then a request to stop, which the
+/// caller answers (stop_requested()) once it has said what it wrote. A failed write is printed, Exit{1}.
+void write_file_holding_signals(const std::string& path, std::string_view text, std::optional<ExitOnSignal>& running,
+                                std::optional<StopOnSignal>& stop);
 /// Reads a log, or prints its diagnostic on stderr and throws Exit{2}.
 Scene load_scene_or_exit(const std::filesystem::path& path);
 /// The kernel called name, or a diagnostic on stderr and Exit{2}.

@@ -25,6 +25,22 @@ Scene load_scene_or_exit(const std::filesystem::path& path) {
     return std::get<Scene>(std::move(result));
 }
 
+void write_file_holding_signals(const std::string& path, std::string_view text, std::optional<ExitOnSignal>& running,
+                                std::optional<StopOnSignal>& stop) {
+    std::string error;
+    bool written = false;
+    {
+        const HoldSignals hold;
+        running.reset();
+        stop.emplace();
+        written = write_file_atomically(path, text, &error);
+    }
+    if (!written) {
+        fmt::print(stderr, "ricochet: error: {}\n", error);
+        throw Exit{1};
+    }
+}
+
 KernelId kernel_or_exit(const std::string& name) {
     const auto k = parse_kernel(name);
     if (!k) {
