@@ -89,6 +89,22 @@ stop_after_first_line() {
   wait "$pid"
   rc=$?
 }
+# stop_when_running SIGNAL ARGS...: as stop_after_first_line, for a command that prints nothing before its end
+# (record, render): SIGNAL goes once its run is under way, a tenth of a second of its own CPU time in
+# /proc/PID/stat (reading a 200-line log takes microseconds). Skips the case where there is no /proc.
+stop_when_running() {
+  [ -r /proc/$$/stat ] || { echo "skip $case: no /proc"; exit 77; }
+  sig=$1; shift
+  "$ricochet" "$@" >"$dir/out" 2>"$dir/err" &
+  pid=$!
+  while [ "$(awk '{print $14}' "/proc/$pid/stat" 2>/dev/null || echo 0)" -lt 10 ]; do
+    kill -0 "$pid" 2>/dev/null || { wait "$pid"; fail "ricochet $* ended (exit $?) before its run was under way"; }
+    sleep 0.02
+  done
+  kill "-$sig" "$pid"
+  wait "$pid"
+  rc=$?
+}
 # A log that runs for hours (10^7 frames, 200 balls): a whole frame prints 200 state lines.
 long=$dir/long.scene
 { printf 'ricochet 1\nframes 10000000\nwall 0 0 0 100\nwall 0 100 100 100\nwall 100 100 100 0\nwall 100 0 0 0\n'
@@ -314,26 +330,15 @@ case "$case" in
                      has out "check stopped by SIGINT"; has out "== summary"
                      ! grep -q '^== lecture pinball' "$dir/out" || fail "check went on to the next stage"
                      grep -q '^ricochet replay: stopped by SIGINT after [0-9]* of 302 logs$' "$dir/err" || fail "no stopped line" ;;
-  stop-render)       # render draws nothing before its run ends: stop it once the run is under way (a tenth of a second
-                     # of its own CPU time, as for stop-record); no picture and no temporary may be left.
-                     [ -r /proc/$$/stat ] || { echo "skip $case: no /proc"; exit 77; }
-                     "$ricochet" render "$long" -o "$dir/x.svg" --max-work 0 >"$dir/out" 2>"$dir/err" & pid=$!
-                     while [ "$(awk '{print $14}' "/proc/$pid/stat" 2>/dev/null || echo 0)" -lt 10 ]; do
-                       kill -0 "$pid" 2>/dev/null || fail "render ended early"; sleep 0.02; done
-                     kill -INT "$pid"; wait "$pid"; rc=$?
+  stop-render)       # render draws nothing before its run ends: no picture and no temporary may be left.
+                     stop_when_running INT render "$long" -o "$dir/x.svg" --max-work 0
                      [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
                      has err "ricochet render: nothing written; stopped by SIGINT"
                      [ -z "$(ls -A "$dir" | grep -v -e '^out$' -e '^err$' -e '\.scene$')" ] ||
                        fail "render left: $(ls -A "$dir")" ;;
   stop-record)       cp "$long" "$dir/r.scene"
-                     # record prints nothing before its write: wait until its run is under way (a tenth of a
-                     # second of its own CPU time, in /proc/PID/stat: reading a 200-line log takes microseconds),
-                     # then stop it; the log must be unchanged.
-                     [ -r /proc/$$/stat ] || { echo "skip $case: no /proc"; exit 77; }
-                     "$ricochet" record "$dir/r.scene" --max-work 0 >"$dir/out" 2>"$dir/err" & pid=$!
-                     while [ "$(awk '{print $14}' "/proc/$pid/stat" 2>/dev/null || echo 0)" -lt 10 ]; do
-                       kill -0 "$pid" 2>/dev/null || fail "record ended early"; sleep 0.02; done
-                     kill -INT "$pid"; wait "$pid"; rc=$?
+                     # record prints nothing before its write: stopped during its run, the log must be unchanged.
+                     stop_when_running INT record "$dir/r.scene" --max-work 0
                      [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
                      has err "ricochet record: the log is unchanged; stopped by SIGINT"
                      cmp -s "$long" "$dir/r.scene" || fail "record changed the log"
