@@ -34,10 +34,11 @@ constexpr double k_char_px = 7;
 /// Balls drawn beyond this many get no label (the failing ball always does): 64 labels hide the paths.
 constexpr std::size_t k_max_labels = 16;
 
-/// An axis-aligned box in the world; empty until a point is added.
+/// An axis-aligned box in the world; empty until a point is added (add() sets x and y together, and a box
+/// written out is never inverted, so x alone tells).
 struct Box {
     double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
-    bool empty() const { return !(x0 <= x1 && y0 <= y1); }
+    bool empty() const { return !(x0 <= x1); }
     void add(Vec2 p) {
         // Degenerate: a non-finite point (a lecture kernel's NaN or overflow) bounds nothing.
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
@@ -47,7 +48,8 @@ struct Box {
         if (!b.empty()) add(Vec2{b.x0, b.y0}), add(Vec2{b.x1, b.y1});
     }
     bool holds(Vec2 p) const { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; }
-    bool meets(const Box& b) const { return !b.empty() && b.x0 <= x1 && b.x1 >= x0 && b.y0 <= y1 && b.y1 >= y0; }
+    /// Whether b (not empty) shares a point with this box.
+    bool meets(const Box& b) const { return b.x0 <= x1 && b.x1 >= x0 && b.y0 <= y1 && b.y1 >= y0; }
     double span() const { return std::max(x1 - x0, y1 - y0); }
 };
 
@@ -165,9 +167,10 @@ public:
         }
     }
 
-    /// The failure found in the frame last added (nothing is kept when that frame was not added).
+    /// The failure found in the frame last added (nothing is kept when that frame had no events, as in a
+    /// scene without balls).
     void note_failure(const CheckFailure& failure) {
-        if (!current_frame_ || *current_frame_ != failure.frame) return;
+        if (current_frame_ != failure.frame) return;
         FailingFrame ff;
         if (failure.frame > 0 && failure.ball < before_.size()) ff.points.push_back(before_[failure.ball]);
         for (const Event& e : current_) {
@@ -187,18 +190,16 @@ public:
     /// Path i, moved out.
     Path take_path(std::size_t i) { return std::move(paths_[i]); }
 
-    /// Draws path (ball b's) in place of the last ball drawn.
+    /// Draws path (ball b's) in place of the last ball drawn (there is one: the scene has a ball b).
     void replace_last(Path path, std::uint32_t b) {
-        // Degenerate: with no ball drawn there is no place to give.
-        if (paths_.empty()) return;
         slot_[paths_.back().ball] = -1;
         path.ball = b;
         paths_.back() = std::move(path);
         slot_[b] = static_cast<std::int32_t>(paths_.size() - 1);
     }
 
-    /// Whether ball b's path is drawn.
-    bool draws(std::uint32_t b) const { return b < slot_.size() && slot_[b] >= 0; }
+    /// Whether ball b (a ball of the scene) has its path drawn.
+    bool draws(std::uint32_t b) const { return slot_[b] >= 0; }
 
     const std::vector<Path>& paths() const { return paths_; }
     const std::optional<FailingFrame>& failing() const { return failing_; }
@@ -454,6 +455,7 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
         std::string second;
         if (text.size() > per_line) {
             std::size_t at = text.rfind(' ', per_line);
+            // (No input finds no space: str() starts "CHECK broke at", within the 20 a line holds at least.)
             if (at == std::string::npos || at < per_line / 2) at = per_line;
             second = text.substr(at + (text[at] == ' ' ? 1 : 0));
             text.resize(at);
@@ -517,7 +519,9 @@ RenderResult render_run(const Scene& scene, KernelId kernel, const RenderOptions
     result.frames_run = run.frames_run;
     result.failure = run.failure;
     result.error = run.error;
-    if (run.failure && !rec.draws(run.failure->ball)) {
+    // A failure of the scene's statics (oracle at frame 0, round-trip) names ball 0 even with no balls.
+    const bool of_a_ball = run.failure && run.failure->ball < scene.balls.size();
+    if (of_a_ball && !rec.draws(run.failure->ball)) {
         // The failing ball was not known while its path went by: step it again alone, without checks and
         // as run_checked's World did (CheckOptions' default WorldOptions), and draw it in place of the
         // last ball drawn. The same bits: balls are independent and options change no event (world.hpp).
@@ -532,6 +536,7 @@ RenderResult render_run(const Scene& scene, KernelId kernel, const RenderOptions
         const std::int64_t to = std::min(last, run.frames_run);
         for (std::int64_t f = 1; f <= to; ++f) {
             events.clear();
+            // (A guard no input reaches: these frames stepped without error in the run, the same bits alone.)
             if (world.step(events)) break;
             solo.add_frame(events);
         }

@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "render_events.hpp"
 #include "ricochet/render.hpp"
 #include "text_search.hpp"
 
@@ -14,14 +15,8 @@ namespace {
 
 using test::count;
 using test::has;
-
-Event state(std::int64_t frame, std::uint32_t ball, Vec2 pos, Vec2 vel = {}) {
-    return {Event::Kind::state, frame, ball, Event::Shape::none, 0, pos, vel};
-}
-
-Event hit(std::int64_t frame, std::uint32_t ball, std::uint32_t wall, Vec2 pos) {
-    return {Event::Kind::hit, frame, ball, Event::Shape::none, wall, pos, {}};
-}
+using test::hit;
+using test::state;
 
 TEST(Render, AnEmptySceneIsTheUnitSquarePictureAndNothingElse) {
     // Nothing to bound: [0, 1]², padded by 0.05 to a span of 1.1, 720 px across: 800 × (800 + 30).
@@ -117,7 +112,7 @@ CheckedRun path_run() {
     CheckedRun run;
     run.frames_run = 3;
     run.events = {state(0, 0, {0, 0}, {5, 0}),
-                  {Event::Kind::overlap, 0, 0, Event::Shape::circle, 0, {}, {}},
+                  test::overlap(0, 0, 0),
                   hit(1, 0, 0, {5, 0}),
                   state(1, 0, {5, 5}),
                   state(2, 0, {10, 5}),
