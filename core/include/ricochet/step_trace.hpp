@@ -38,7 +38,7 @@ struct TracedLeg {
     double hit_t = 0.0;
     /// The velocity the ball moved with on this leg (the leg is the rest of the frame at this velocity); the
     /// next leg's, or the frame's end state's, is the one it left a hit with.
-    Vec2 vel;
+    Vec2 vel{};
 };
 
 /// One ball's frame as its kernel stepped it.
