@@ -10,9 +10,12 @@ int main(int argc, char** argv) {
     ricochet::bench::register_bench(app);
     try {
         app.parse(argc, argv);
+    } catch (const CLI::RuntimeError& e) {
+        // The command's own exit status (1: robust was wrong; 2: a result could not be written).
+        return e.get_exit_code();
     } catch (const CLI::ParseError& e) {
-        // Usage errors, and the command's own exit status (CLI::RuntimeError, printed as nothing).
-        return app.exit(e);
+        // --help is not an error; every other usage error is bad input: exit 2, as `ricochet bench` does.
+        return app.exit(e) == 0 ? 0 : 2;
     }
     return 0;
 }

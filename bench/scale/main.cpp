@@ -1,4 +1,4 @@
-// ricochet_scale_bench [--quick] [--threads N] [--out DIR]: the scale benchmark on its own.
+// ricochet_scale_bench [--quick | --smoke] [--threads N] [--out DIR]: the scale benchmark on its own.
 #include <fmt/format.h>
 
 #include <cstdlib>
@@ -8,21 +8,23 @@
 #include "scale_bench.hpp"
 
 int main(int argc, char** argv) {
-    bool quick = false;
+    ricochet::ScaleSize size = ricochet::ScaleSize::full;
     unsigned threads = 0;
     std::string out = "bench-results";
     for (int i = 1; i < argc; ++i) {
         const std::string_view a = argv[i];
         if (a == "--quick") {
-            quick = true;
+            size = ricochet::ScaleSize::quick;
+        } else if (a == "--smoke") {
+            size = ricochet::ScaleSize::smoke;
         } else if (a == "--threads" && i + 1 < argc) {
             threads = static_cast<unsigned>(std::strtoul(argv[++i], nullptr, 10));
         } else if (a == "--out" && i + 1 < argc) {
             out = argv[++i];
         } else {
-            fmt::print(stderr, "usage: ricochet_scale_bench [--quick] [--threads N] [--out DIR]\n");
+            fmt::print(stderr, "usage: ricochet_scale_bench [--quick | --smoke] [--threads N] [--out DIR]\n");
             return 2;
         }
     }
-    return ricochet::run_scale_bench(quick, threads, out);
+    return ricochet::run_scale_bench(size, threads, out);
 }

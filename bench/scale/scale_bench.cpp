@@ -133,12 +133,32 @@ struct Row {
 };
 
 struct Config {
-    bool quick;
-    double budget;
+    bool quick;          // leave out the BVH in the balls sweep
+    double budget;       // seconds of timing per point
     double brute_limit;  // brute force only when walls·balls ≤ this
     std::size_t check_balls;
     int check_frames;
+    std::vector<std::size_t> wall_sizes;  // the walls sweep, with sweep_balls balls
+    std::size_t sweep_balls;
+    std::vector<std::size_t> ball_sizes;  // the balls sweep, in a maze of about maze_walls walls
+    std::size_t maze_walls;
+    std::size_t thread_balls;  // the threads sweep: thread_balls balls in that maze
 };
+
+Config config(ScaleSize size) {
+    switch (size) {
+        case ScaleSize::smoke: return {true, 0.002, 4e6, 100, 5, {10, 100}, 100, {1, 100}, 100, 1000};
+        case ScaleSize::quick:
+            return {true, 0.15, 4e6, 4000, 20, {10, 100, 1000, 10000, 100000}, 2000, {1, 100, 10000, 100000}, 10000, 100000};
+        case ScaleSize::full: break;
+    }
+    return {false, 0.6, 2e7, 20000, 50, {10, 100, 1000, 10000, 100000, 1000000}, 10000,
+            {1, 10, 100, 1000, 10000, 100000, 1000000}, 10000, 100000};
+}
+
+const char* size_flag(ScaleSize size) {
+    return size == ScaleSize::smoke ? " --smoke" : size == ScaleSize::quick ? " --quick" : "";
+}
 
 /// Measures one (walls, balls) point for every method and appends the rows.
 void measure(const Config& cfg, const std::string& sweep, int n, std::size_t ball_count, std::vector<Row>& rows) {
@@ -256,27 +276,23 @@ int lattice_for(std::size_t walls) { return std::max(2, static_cast<int>(std::lr
 
 }  // namespace
 
-int run_scale_bench(bool quick, unsigned threads, const std::string& out_dir) {
-    const Config cfg = quick ? Config{true, 0.15, 4e6, 4000, 20} : Config{false, 0.6, 2e7, 20000, 50};
+int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir) {
+    const Config cfg = config(size);
     const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
     const unsigned max_threads = threads == 0 ? hw : threads;
     fmt::print("ricochet bench scale{}: robust kernel, maze of unit cells, balls at 0.05-0.5 cells/frame; one thread "
                "unless stated; {} hardware threads{}\n",
-               quick ? " --quick" : "", hw, scale::box2d_available() ? "" : "; Box2D not found, its column skipped");
+               size_flag(size), hw, scale::box2d_available() ? "" : "; Box2D not found, its column skipped");
     std::vector<Row> rows;
-    const std::vector<std::size_t> wall_sizes =
-        quick ? std::vector<std::size_t>{10, 100, 1000, 10000, 100000} : std::vector<std::size_t>{10, 100, 1000, 10000, 100000, 1000000};
-    const std::size_t sweep_balls = quick ? 2000 : 10000;
-    for (std::size_t w : wall_sizes) measure(cfg, "walls", lattice_for(w), sweep_balls, rows);
-    const std::vector<std::size_t> ball_sizes = quick ? std::vector<std::size_t>{1, 100, 10000, 100000}
-                                                      : std::vector<std::size_t>{1, 10, 100, 1000, 10000, 100000, 1000000};
-    for (std::size_t b : ball_sizes) measure(cfg, "balls", lattice_for(10000), b, rows);
+    const std::size_t sweep_balls = cfg.sweep_balls;
+    for (std::size_t w : cfg.wall_sizes) measure(cfg, "walls", lattice_for(w), sweep_balls, rows);
+    for (std::size_t b : cfg.ball_sizes) measure(cfg, "balls", lattice_for(cfg.maze_walls), b, rows);
 
-    // Threads: the headline scene (10^4 walls, 10^5 balls) on 1 .. max_threads threads.
+    // Threads: the headline scene (10^4 walls, 10^5 balls; smaller with --smoke) on 1 .. max_threads threads.
     {
-        const int n = lattice_for(10000);
+        const int n = lattice_for(cfg.maze_walls);
         const std::vector<Wall> walls = make_maze(n, 1000 + static_cast<std::uint64_t>(n));
-        const std::size_t nb = 100000;
+        const std::size_t nb = cfg.thread_balls;
         Scene scene;
         scene.walls = walls;
         scene.balls = make_balls(nb, n, 2000 + nb);
@@ -344,9 +360,9 @@ int run_scale_bench(bool quick, unsigned threads, const std::string& out_dir) {
         gp.print("set terminal pngcairo size 1400,560 font ',11'\nset output '{}/scale.png'\n", out_dir);
         gp.print("set multiplot layout 1,2 title 'ricochet bench scale{}: ns per ball-frame (one thread, shared "
                  "machine)'\nset logscale xy\nset grid\nset ylabel 'ns per ball-frame'\nset key top left\n",
-                 quick ? " --quick" : "");
+                 size_flag(size));
         for (int s = 0; s < 2; ++s) {
-            gp.print("set xlabel '{}'\n", s == 0 ? fmt::format("walls ({} balls)", sweep_balls) : std::string("balls (10^4-wall maze)"));
+            gp.print("set xlabel '{}'\n", s == 0 ? fmt::format("walls ({} balls)", sweep_balls) : fmt::format("balls ({}-wall maze)", cfg.maze_walls));
             gp.print("plot ");
             for (std::size_t m = 0; m < methods.size(); ++m)
                 gp.print("{}'{}/scale.dat' index {} with linespoints lw 2 title '{}'", m ? ", " : "", out_dir,

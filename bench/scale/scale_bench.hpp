@@ -7,9 +7,13 @@
 
 namespace ricochet {
 
-/// Runs the scale benchmark: prints the table, writes OUT_DIR/scale.csv, scale.gp and scale.png.
-/// quick: smaller sizes (about a minute); threads: the most threads for the thread sweep (0: all
-/// cores). Returns 0, or 1 if the robust kernel tunnelled (never expected).
-int run_scale_bench(bool quick, unsigned threads = 0, const std::string& out_dir = "bench-results");
+/// How big the scenes are: full (to 10^6 walls and balls), quick (to 10^5, about a minute), smoke (to 100
+/// walls and 1 000 balls, a second: a correctness check of every column, not a measurement).
+enum class ScaleSize { full, quick, smoke };
+
+/// Runs the scale benchmark: prints the table, writes OUT_DIR/scale.csv, scale.dat, scale.gp and (with
+/// gnuplot) scale.png. threads: the most threads for the thread sweep (0: all cores). Returns 0, or 1 if
+/// the robust kernel tunnelled (never expected).
+int run_scale_bench(ScaleSize size, unsigned threads = 0, const std::string& out_dir = "bench-results");
 
 }  // namespace ricochet

@@ -512,8 +512,8 @@ int run_bench(const Options& opt) {
     std::vector<std::string> skipped;
     for (auto& p : peer_methods(skipped)) ms.push_back(std::move(p));
     for (const std::string& s : skipped) fmt::print("{}\n", s);
-    fmt::print("ricochet bench{}: {} queries per workload, median of {} runs; ball runs {} balls x {} frames\n",
-               opt.smoke ? " --smoke" : opt.quick ? " --quick" : "", sz.queries, sz.reps, sz.balls, sz.frames);
+    fmt::print("ricochet bench{}: {} queries per workload, median of {} runs; ball runs {} balls x {} frames; seed {}\n",
+               opt.smoke ? " --smoke" : opt.quick ? " --quick" : "", sz.queries, sz.reps, sz.balls, sz.frames, opt.seed);
     fmt::print("note: times are this thread's CPU time (the machine may be shared), medians of the runs; ratios are against\n"
                "lecture-double timed in the same, interleaved runs\n");
 
@@ -587,6 +587,8 @@ int run_stability(const Options& opt) {
     std::vector<std::string> skipped;
     for (auto& p : peer_methods(skipped)) ms.push_back(std::move(p));
     for (const std::string& s : skipped) fmt::print("{}\n", s);
+    fmt::print("ricochet bench stability{}: {} queries per magnitude and angle; seed {}\n",
+               opt.smoke ? " --smoke" : opt.quick ? " --quick" : "", n, opt.seed);
     const std::size_t ex = find_method(ms, "exact");
     const std::string csv = opt.out_dir + "/stability.csv";
     ResultFile f(csv);

@@ -18,14 +18,15 @@ void register_bench(CLI::App& app) {
     auto frames = std::make_shared<long>(20'000'000);
     CLI::App* cmd = app.add_subcommand("bench", "Benchmark run time against error: every kernel and peer on the same workloads");
     cmd->add_flag("--quick", opt->quick, "Smaller query sets (under 2 minutes)");
-    cmd->add_flag("--smoke", opt->smoke, "Tiny sets, one repetition: a correctness check (exit 1 if robust is ever wrong)");
+    CLI::Option* smoke = cmd->add_flag("--smoke", opt->smoke, "Tiny sets, one repetition: a correctness check (exit 1 if robust is ever wrong)");
+    cmd->get_option("--quick")->excludes(smoke);
     cmd->add_option("--out", opt->out_dir, "Folder for the CSV and the charts")->capture_default_str();
     cmd->add_option("--seed", opt->seed, "Seed of every workload")->capture_default_str();
     cmd->add_flag("!--no-chart", opt->chart, "Do not run gnuplot");
 
     CLI::App* stab = cmd->add_subcommand("stability", "Error and tunnelling against coordinate magnitude and angle to the wall");
     stab->add_flag("--quick", opt->quick, "Smaller query sets");
-    stab->add_flag("--smoke", opt->smoke, "Tiny sets");
+    stab->add_flag("--smoke", opt->smoke, "Tiny sets")->excludes("--quick");
     stab->add_option("--out", opt->out_dir, "Folder for the CSV and the charts")->capture_default_str();
     stab->add_option("--seed", opt->seed, "Seed of every workload")->capture_default_str();
     stab->add_flag("!--no-chart", opt->chart, "Do not run gnuplot");
@@ -35,7 +36,9 @@ void register_bench(CLI::App& app) {
     // The scaling benchmark (bench/scale, ricochet_scale): walls and balls from 10 to 10^6.
     auto threads = std::make_shared<unsigned>(0);
     CLI::App* sc = cmd->add_subcommand("scale", "Per-frame cost as walls and balls grow: brute force, grid, BVH, Box2D");
-    sc->add_flag("--quick", opt->quick, "Smaller scenes");
+    sc->add_flag("--quick", opt->quick, "Smaller scenes (about a minute)");
+    sc->add_flag("--smoke", opt->smoke, "Tiny scenes, a second: a correctness check (exit 1 if robust tunnelled)")
+        ->excludes("--quick");
     sc->add_option("--threads", *threads, "Worker threads (0: all cores)")->capture_default_str();
     sc->add_option("--out", opt->out_dir, "Folder for the CSV and the chart")->capture_default_str();
 
@@ -44,7 +47,10 @@ void register_bench(CLI::App& app) {
         try {
             if (stab->parsed()) rc = run_stability(*opt);
             else if (fr->parsed()) rc = run_frames(*opt, *frames);
-            else if (sc->parsed()) rc = ricochet::run_scale_bench(opt->quick, *threads, opt->out_dir);
+            else if (sc->parsed()) rc = ricochet::run_scale_bench(opt->smoke   ? ScaleSize::smoke
+                                                          : opt->quick ? ScaleSize::quick
+                                                                       : ScaleSize::full,
+                                                          *threads, opt->out_dir);
             else rc = run_bench(*opt);
         } catch (const std::exception& e) {
             // An output folder or file that cannot be written (the only failure a run can meet).

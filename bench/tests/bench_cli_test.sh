@@ -1,6 +1,7 @@
 #!/bin/sh
-# `bench`'s edges (bench/src/bench.cpp, ricochet_bench/result_file.hpp), one case per call: progress while
-# it runs, result files whole or absent after Ctrl-C, a clear error when one cannot be written.
+# `bench`'s flags and edges (bench/src/bench.cpp, ricochet_bench/result_file.hpp, scale/), one case per call:
+# progress while it runs, result files whole or absent after Ctrl-C, a clear error when one cannot be written,
+# what --seed, --quick, --smoke and the frames and scale subcommands print and write.
 #   bench_cli_test.sh BENCH CASE      BENCH: a program with the `bench` command (ricochet-bench or ricochet)
 #   bench_cli_test.sh --cases         prints every case (the case labels below)
 set -u
@@ -33,6 +34,48 @@ case "$case" in
                    "$bench" bench --smoke --no-chart --out "$dir/res" >"$dir/out" 2>"$dir/err"; rc=$?
                    [ "$rc" = 2 ] || fail "exit $rc, expected 2"
                    grep -q "bench.csv" "$dir/err" || fail "the error does not name bench.csv" ;;
+  seed)            # --seed picks the workloads: the same seed gives the same errors (every column but the two
+                   # timings), another seed other ones; the header says which.
+                   for s in 7 7 8; do
+                     "$bench" bench --smoke --no-chart --seed $s --out "$dir/$s" >"$dir/out" 2>"$dir/err" || fail "--seed $s: exit $?"
+                     head -n 1 "$dir/out" | grep -q "; seed $s\$" || fail "the header does not say seed $s"
+                     cut -d, -f1-4,7- "$dir/$s/bench.csv" >"$dir/errors-$s.$(ls "$dir" | grep -c '^errors-')"
+                   done
+                   cmp -s "$dir/errors-7.0" "$dir/errors-7.1" || fail "seed 7 twice gives different errors"
+                   ! cmp -s "$dir/errors-7.0" "$dir/errors-8.2" || fail "seeds 7 and 8 give the same errors" ;;
+  quick-smoke)     # --quick and --smoke are one or the other, for bench, stability and scale.
+                   for sub in "" stability scale; do
+                     "$bench" bench $sub --quick --smoke --out "$dir/res" >"$dir/out" 2>"$dir/err"; rc=$?
+                     [ "$rc" = 2 ] || fail "bench $sub --quick --smoke: exit $rc, expected 2"
+                     grep -q -- "--quick excludes --smoke\|--smoke excludes --quick" "$dir/err" || fail "bench $sub: no excludes error"
+                   done
+                   [ ! -e "$dir/res" ] || fail "a usage error left --out behind" ;;
+  stability-quick) # The smaller sets of --quick (about 10 s) from seed 3: its header, and a row per magnitude and angle
+                   # for robust with no wrong decision and no tunnel.
+                   "$bench" bench stability --quick --seed 3 --no-chart --out "$dir/res" >"$dir/out" 2>"$dir/err" || fail "exit $?"
+                   first_line="ricochet bench stability --quick: 4000 queries per magnitude and angle; seed 3"
+                   grep -qxF "$first_line" "$dir/out" || fail "no line: $first_line"
+                   rows=$(grep -c ',robust,' "$dir/res/stability.csv")
+                   [ "$rows" -ge 10 ] || fail "$rows robust rows in stability.csv"
+                   bad=$(grep ',robust,' "$dir/res/stability.csv" | awk -F, '$4 != 0 || ($7 != "" && $7 != 0)' | head -n 1)
+                   [ -z "$bad" ] || fail "robust is wrong or tunnels: $bad" ;;
+  frames)          # bench frames --smoke: one run of each ball for --frames frames, ending in the robust box.
+                   "$bench" bench frames --smoke --frames 1000 >"$dir/out" 2>"$dir/err" || fail "exit $?"
+                   [ "$(grep -c ': 1000 frames x 1 runs, ' "$dir/out")" = 2 ] || fail "not two runs of 1000 frames"
+                   grep -q '^target >= 1e7 ball-frames/s on one core (slow ball): ' "$dir/out" || fail "no target line" ;;
+  scale)           # bench scale --smoke --threads 2: every column of the walls and balls sweeps, the thread sweep on 1
+                   # and 2 threads, no robust tunnel; scale.csv in --out.
+                   "$bench" bench scale --smoke --threads 2 --out "$dir/res" >"$dir/out" 2>"$dir/err" || fail "exit $?"
+                   head -n 1 "$dir/out" | grep -q '^ricochet bench scale --smoke: ' || fail "no --smoke header"
+                   csv=$dir/res/scale.csv
+                   [ "$(grep -c '^walls,robust+grid,[0-9]*,100,1,' "$csv")" = 2 ] || fail "not two rows in the walls sweep"
+                   grep -q '^balls,robust+grid,[0-9]*,100,1,' "$csv" || fail "no balls row for 100 balls"
+                   grep -q '^threads,robust+grid,[0-9]*,1000,1,' "$csv" || fail "no 1-thread row"
+                   grep -q '^threads,robust+grid,[0-9]*,1000,2,' "$csv" || fail "no 2-thread row"
+                   bad=$(grep '^[a-z]*,robust+grid,' "$csv" | awk -F, '$10 > 0' | head -n 1)
+                   [ -z "$bad" ] || fail "robust tunnelled: $bad"
+                   grep -q '^walls,robust+grid,[0-9]*,100,1,[^,]*,[^,]*,[^,]*,[^,]*,0,500$' "$csv" ||
+                     fail "the walls sweep checked not 100 balls x 5 frames with 0 tunnels" ;;
   *) echo "unknown case $case" >&2; exit 1 ;;
 esac
 echo "ok $case"
