@@ -157,6 +157,21 @@ case "$case" in
                      grep -q '^properties  not built' "$dir/out" && { echo "skip $case: no property suite in this build"; exit 77; }
                      grep -q '^properties  passed ([0-9.]* s)$' "$dir/out" || fail "no passed properties line"
                      has out "check passed" ;;
+  check-fuzz-seed)   # The campaign check ends with: its count and seed, in a cache of its own.
+                     mkproj; bins=$(dirname "$ricochet")/../fuzz
+                     "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
+                     cd "$proj"; XDG_CACHE_HOME=$dir/cache run 0 check --no-properties --fuzz-runs 20 --fuzz-seed 3
+                     has out "== fuzz: 20 inputs per target, seed 3"
+                     grep -q '^fuzz        passed (' "$dir/out" || fail "no fuzz passed line"
+                     [ -d "$dir/cache/ricochet/fuzz/scene" ] || fail "the campaign did not use \$XDG_CACHE_HOME" ;;
+  check-fuzz-time)   run 2 check --fuzz-time soon
+                     first_line err "ricochet: error: --fuzz-time: 'soon' is not a number of seconds (expected 0 to 86400)" ;;
+  check-max-work)    # The bound on work reaches every stage: the corpus log is refused, pinball is not run.
+                     mkproj; cp "$src/replays/pinball.scene" "$proj/replays/"; cd "$proj"
+                     run 1 check --no-properties --fuzz-runs 0 --max-work 1000
+                     grep -q '^FAIL replays/pinball.scene: not run (over --max-work)$' "$dir/out" || fail "pinball.scene was run"
+                     has out "pinball     not run (over --max-work)"
+                     has out "check FAILED" ;;
   check-fuzz-runs)   run 2 check --fuzz-runs many
                      first_line err "ricochet: error: --fuzz-runs: 'many' is not a count of inputs (expected 0 to 9223372036854775807)" ;;
   fuzz-time-0)       run 2 fuzz --time 0
@@ -222,7 +237,11 @@ case "$case" in
                      grep -q 'view: the failing frame 4 of ball 0' "$dir/x.svg" || fail "not framed on the failure"
                      run 0 render "$dir/t.scene" -o "$dir/all.svg" --view all
                      ! grep -q 'view: the failing frame' "$dir/all.svg" || fail "--view all framed the failure"
-                     grep -q 'data-x="0" data-y="8"' "$dir/all.svg" || fail "--view all lost the mark" ;;
+                     grep -q 'data-x="0" data-y="8"' "$dir/all.svg" || fail "--view all lost the mark"
+                     # --kernel robust: the same table holds, nothing is marked, the caption names the kernel.
+                     run 0 render "$dir/t.scene" -o "$dir/robust.svg" --kernel robust
+                     grep -q '^wrote [^(]*$' "$dir/out" || fail "render --kernel robust marked a failure"
+                     grep -q '>kernel robust, frames 0\.\.10, ' "$dir/robust.svg" || fail "the caption does not say kernel robust" ;;
   # --- The project folder: defaults from the nearest folder holding replays/, never the source tree.
   project-here)      mkproj; cd "$proj"; run 0 replay
                      grep -q '^ok   replays/t\.scene: ' "$dir/out" || fail "replay did not read the project's replays/"
@@ -292,6 +311,28 @@ case "$case" in
                      json_is out 'd["schema"] == "ricochet-fuzz/1" and d["exit"] == 0 and d["kernel"] == "robust" and d["runs_per_worker"] == 20 and d["time_s"] is None and d["seed"] == 1'
                      json_is out 'd["replay_dir"] == "replays" and d["new_failures"] == 0 and [t["target"] for t in d["targets"]] == ["scene"] and d["targets"][0]["runs"] >= 20'
                      grep -q '^target ' "$dir/err" || fail "the human summary is not on stderr" ;;
+  fuzz-jobs)         # --jobs: the workers in all, here two for one target.
+                     mkproj; bins=$(dirname "$ricochet")/../fuzz
+                     "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
+                     cd "$proj"; run 0 fuzz --target scene --runs 20 --seed 1 --jobs 2 --cache-dir "$dir/cache"
+                     first_line out "ricochet fuzz: kernel robust, 20 runs per worker, 1 target(s), 2 worker(s)" ;;
+  fuzz-no-merge)     # Two names for the same bytes in the working corpus: the merge keeps one input under its SHA-1
+                     # name, --no-merge leaves both as they were.
+                     mkproj; bins=$(dirname "$ricochet")/../fuzz
+                     "$bins/fuzz_parser" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_parser"; exit 77; }
+                     cd "$proj"
+                     for m in no-merge merge; do
+                       c=$dir/cache-$m/parser/robust/corpus; mkdir -p "$c"
+                       printf 'ricochet 1\nframes 1\n' >"$c/dup-a"; cp "$c/dup-a" "$c/dup-b"
+                     done
+                     run 0 fuzz --target parser --runs 1 --seed 1 --jobs 1 --cache-dir "$dir/cache-no-merge" --no-merge
+                     run 0 fuzz --target parser --runs 1 --seed 1 --jobs 1 --cache-dir "$dir/cache-merge"
+                     [ -f "$dir/cache-no-merge/parser/robust/corpus/dup-a" ] && [ -f "$dir/cache-no-merge/parser/robust/corpus/dup-b" ] ||
+                       fail "--no-merge changed the corpus"
+                     [ ! -e "$dir/cache-merge/parser/robust/corpus/dup-a" ] && [ ! -e "$dir/cache-merge/parser/robust/corpus/dup-b" ] ||
+                       fail "the merge kept the duplicate names"
+                     sha=$(printf 'ricochet 1\nframes 1\n' | sha1sum | cut -d' ' -f1)
+                     [ -f "$dir/cache-merge/parser/robust/corpus/$sha" ] || fail "the merge did not keep the input as $sha" ;;
   # --- SIGINT and SIGTERM: stop at the next frame or log boundary, say what was done, exit 128 + signal.
   stop-run)          stop_after_first_line INT run "$long" --max-work 0
                      [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
