@@ -1,4 +1,5 @@
-// Exact predicates: floating-point filter, then expansion arithmetic, then GMP.
+// Exact predicates: floating-point filter, then expansion arithmetic (first on the differences, when they
+// are exact), then GMP.
 #include "ricochet/predicates.hpp"
 
 #include <atomic>
@@ -74,10 +75,49 @@ struct Expansion {
 
 mpq_class q(double x) { return mpq_class(x); }
 
+// The first stage of every expansion path: when the differences a predicate is made of are exact, its
+// polynomial has two or three products instead of six to nine, and the exact sign costs a fraction.
+
+/// a − b rounded, and whether that is exact (Shewchuk's two-diff: its rounding error is zero).
+struct Diff {
+    double d;
+    bool exact;
+};
+Diff diff(double a, double b) {
+    const double x = a - b;
+    const double bv = a - x;
+    const double av = x + bv;
+    return {x, (a - av) + (bv - b) == 0.0};
+}
+
+/// sign(a·b − c·d) exactly, for factors in the expansion range or exact differences of such numbers
+/// (multiples of 2^−502 of magnitude at most 2^451: every product and its rounding error is a double).
+/// Rounding is monotonic, so fl(a·b) ≠ fl(c·d) already orders the exact products; when they are equal,
+/// a·b − c·d is the difference of the two rounding errors (each exact by fma), and a rounded difference
+/// of two doubles keeps its sign.
+int sign_of_product_difference(double a, double b, double c, double d) {
+    const double l = a * b;
+    const double r = c * d;
+    if (l != r) return l > r ? 1 : -1;
+    return sign(std::fma(a, b, -l) - std::fma(c, d, -r));
+}
+
+/// sign(dx² + dy² − r²) exactly, for exact differences dx, dy and r of the same kind.
+int sign_of_squares(double dx, double dy, double r) {
+    Expansion s;
+    s.add_product(dx, dx);
+    s.add_product(dy, dy);
+    s.add_product(r, r, -1.0);
+    return s.sign();
+}
+
 int orient_exact(Vec2 a, Vec2 b, Vec2 c) {
     if (expansion_safe({a.x, a.y, b.x, b.y, c.x, c.y})) {
         g_expansion.fetch_add(1, std::memory_order_relaxed);
-        // (a − c) × (b − c) = ax·by − ax·cy − cx·by − ay·bx + ay·cx + cy·bx  (the cx·cy terms cancel)
+        // (a − c) × (b − c) = (ax − cx)·(by − cy) − (ay − cy)·(bx − cx), when the four differences are exact
+        const Diff d1 = diff(a.x, c.x), d2 = diff(b.y, c.y), d3 = diff(a.y, c.y), d4 = diff(b.x, c.x);
+        if (d1.exact && d2.exact && d3.exact && d4.exact) return sign_of_product_difference(d1.d, d2.d, d3.d, d4.d);
+        // = ax·by − ax·cy − cx·by − ay·bx + ay·cx + cy·bx  (the cx·cy terms cancel)
         Expansion s;
         s.add_product(a.x, b.y);
         s.add_product(a.x, c.y, -1.0);
@@ -133,7 +173,10 @@ int direction_side(Vec2 d, const Wall& w) {
     if (sum >= k_tiny && std::isfinite(sum) && std::fabs(l - r) > k_ccw * sum) return -sign(l - r);
     if (expansion_safe({w.p0.x, w.p0.y, w.p1.x, w.p1.y, d.x, d.y})) {
         g_expansion.fetch_add(1, std::memory_order_relaxed);
-        // e × d = x1·dy − x0·dy − y1·dx + y0·dx
+        // e × d = (x1 − x0)·dy − (y1 − y0)·dx, when e's two differences are exact
+        const Diff ex_ = diff(w.p1.x, w.p0.x), ey_ = diff(w.p1.y, w.p0.y);
+        if (ex_.exact && ey_.exact) return -sign_of_product_difference(ex_.d, d.y, ey_.d, d.x);
+        // = x1·dy − x0·dy − y1·dx + y0·dx
         Expansion s;
         s.add_product(w.p1.x, d.y);
         s.add_product(w.p0.x, d.y, -1.0);
@@ -155,7 +198,10 @@ int point_circle(Vec2 p, const Circle& c) {
     if (sum >= k_tiny && std::isfinite(sum) && std::fabs(d2 - r2) > k_sq * sum) return sign(d2 - r2);
     if (expansion_safe({p.x, p.y, c.c.x, c.c.y, c.r})) {
         g_expansion.fetch_add(1, std::memory_order_relaxed);
-        // px² − 2·px·cx + cx² + py² − 2·py·cy + cy² − r²
+        // (px − cx)² + (py − cy)² − r², when the two differences are exact
+        const Diff ddx = diff(p.x, c.c.x), ddy = diff(p.y, c.c.y);
+        if (ddx.exact && ddy.exact) return sign_of_squares(ddx.d, ddy.d, c.r);
+        // = px² − 2·px·cx + cx² + py² − 2·py·cy + cy² − r²
         Expansion s;
         s.add_product(p.x, p.x);
         s.add_product(p.x, c.c.x, -2.0);
@@ -182,7 +228,10 @@ int circle_circle(const Circle& a, const Circle& b) {
     if (sum >= k_tiny && std::isfinite(sum) && std::fabs(d2 - r2) > k_sq * sum) return sign(d2 - r2);
     if (expansion_safe({a.c.x, a.c.y, b.c.x, b.c.y, a.r, b.r})) {
         g_expansion.fetch_add(1, std::memory_order_relaxed);
-        // ax² − 2·ax·bx + bx² + ay² − 2·ay·by + by² − rA² − 2·rA·rB − rB²
+        // (ax − bx)² + (ay − by)² − (rA + rB)², when the two differences and the sum are exact
+        const Diff ddx = diff(a.c.x, b.c.x), ddy = diff(a.c.y, b.c.y), rsum = diff(a.r, -b.r);
+        if (ddx.exact && ddy.exact && rsum.exact) return sign_of_squares(ddx.d, ddy.d, rsum.d);
+        // = ax² − 2·ax·bx + bx² + ay² − 2·ay·by + by² − rA² − 2·rA·rB − rB²
         Expansion s;
         s.add_product(a.c.x, a.c.x);
         s.add_product(a.c.x, b.c.x, -2.0);

@@ -99,6 +99,22 @@ TEST(Predicates, CirclesMatchGmp) {
         const mpq_class ex = q(c.x) - q(b.c.x), ey = q(c.y) - q(b.c.y), rs = q(r) + q(r2);
         ASSERT_EQ(exact::circle_circle({c, r}, b), sign(ex * ex + ey * ey - rs * rs)) << i;
     }
+    // Inexact differences on the expansion path: 0.1 − (−0.2) and 0.1 + 0.2 both round, to the same double,
+    // and are the same exact number, so the circles touch; a centre one ulp further apart or closer is apart
+    // or overlapping (the sum of the radii is inexact too). GMP agrees on all three.
+    for (int k = -1; k <= 1; ++k) {
+        const Circle a{{0.1, 0}, 0.1}, b{{g.ulps(-0.2, -k), 0}, 0.2};
+        const mpq_class ex = q(a.c.x) - q(b.c.x), rs = q(a.r) + q(b.r);
+        ASSERT_EQ(exact::circle_circle(a, b), sign(ex * ex - rs * rs)) << k;
+        ASSERT_EQ(exact::circle_circle(a, b), k) << k;
+        // Along y: the x difference is exact, the y one is not.
+        ASSERT_EQ(exact::circle_circle({{0, 0.1}, 0.1}, {{0, g.ulps(-0.2, -k)}, 0.2}), k) << k;
+        // The same for a point on the circle of radius 0.3 around (−0.2, 0): 0.1 − (−0.2) rounds.
+        const Vec2 pnt{0.1, 0};
+        const Circle c{{g.ulps(-0.2, -k), 0}, 0.1 + 0.2};
+        const mpq_class px = q(pnt.x) - q(c.c.x);
+        ASSERT_EQ(exact::point_circle(pnt, c), sign(px * px - q(c.r) * q(c.r))) << k;
+    }
     // Exact touching: a 3-4-5 triangle scaled by a power of two.
     EXPECT_EQ(exact::point_circle({3 * 0x1p-500, 4 * 0x1p-500}, {{0, 0}, 5 * 0x1p-500}), 0);
     EXPECT_EQ(exact::circle_circle({{0, 0}, 2}, {{3e150, 4e150}, 5e150 - 2}), sign(q(3e150) * q(3e150) + q(4e150) * q(4e150) - (q(2) + q(5e150 - 2)) * (q(2) + q(5e150 - 2))));
