@@ -455,7 +455,7 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
         std::string second;
         if (text.size() > per_line) {
             std::size_t at = text.rfind(' ', per_line);
-            // (No input finds no space: str() starts "CHECK broke at", within the 20 a line holds at least.)
+            // (Never npos: str() starts "CHECK broke at", and a line holds at least 20 characters.)
             if (at == std::string::npos || at < per_line / 2) at = per_line;
             second = text.substr(at + (text[at] == ' ' ? 1 : 0));
             text.resize(at);
