@@ -284,8 +284,7 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
                "unless stated; {} hardware threads{}\n",
                size_flag(size), hw, scale::box2d_available() ? "" : "; Box2D not found, its column skipped");
     std::vector<Row> rows;
-    const std::size_t sweep_balls = cfg.sweep_balls;
-    for (std::size_t w : cfg.wall_sizes) measure(cfg, "walls", lattice_for(w), sweep_balls, rows);
+    for (std::size_t w : cfg.wall_sizes) measure(cfg, "walls", lattice_for(w), cfg.sweep_balls, rows);
     for (std::size_t b : cfg.ball_sizes) measure(cfg, "balls", lattice_for(cfg.maze_walls), b, rows);
 
     // Threads: the headline scene (10^4 walls, 10^5 balls; smaller with --smoke) on 1 .. max_threads threads.
@@ -362,7 +361,7 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
                  "machine)'\nset logscale xy\nset grid\nset ylabel 'ns per ball-frame'\nset key top left\n",
                  size_flag(size));
         for (int s = 0; s < 2; ++s) {
-            gp.print("set xlabel '{}'\n", s == 0 ? fmt::format("walls ({} balls)", sweep_balls) : fmt::format("balls ({}-wall maze)", cfg.maze_walls));
+            gp.print("set xlabel '{}'\n", s == 0 ? fmt::format("walls ({} balls)", cfg.sweep_balls) : fmt::format("balls ({}-wall maze)", cfg.maze_walls));
             gp.print("plot ");
             for (std::size_t m = 0; m < methods.size(); ++m)
                 gp.print("{}'{}/scale.dat' index {} with linespoints lw 2 title '{}'", m ? ", " : "", out_dir,

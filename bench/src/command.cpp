@@ -18,8 +18,8 @@ void register_bench(CLI::App& app) {
     auto frames = std::make_shared<long>(20'000'000);
     CLI::App* cmd = app.add_subcommand("bench", "Benchmark run time against error: every kernel and peer on the same workloads");
     cmd->add_flag("--quick", opt->quick, "Smaller query sets (under 2 minutes)");
-    CLI::Option* smoke = cmd->add_flag("--smoke", opt->smoke, "Tiny sets, one repetition: a correctness check (exit 1 if robust is ever wrong)");
-    cmd->get_option("--quick")->excludes(smoke);
+    cmd->add_flag("--smoke", opt->smoke, "Tiny sets, one repetition: a correctness check (exit 1 if robust is ever wrong)")
+        ->excludes("--quick");
     cmd->add_option("--out", opt->out_dir, "Folder for the CSV and the charts")->capture_default_str();
     cmd->add_option("--seed", opt->seed, "Seed of every workload")->capture_default_str();
     cmd->add_flag("!--no-chart", opt->chart, "Do not run gnuplot");

@@ -48,6 +48,10 @@ mkproj() {
   mkdir -p "$proj/replays" "$proj/a/b" "$dir/none"
   cp "$log" "$proj/replays/t.scene"
 }
+# need_fuzzer TARGET: skip unless the build has the libFuzzer binary fuzz_TARGET (clang, RICOCHET_FUZZ on).
+need_fuzzer() {
+  "$(dirname "$ricochet")/../fuzz/fuzz_$1" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_$1"; exit 77; }
+}
 # no_project_here: skip if some folder above $dir/none holds replays/ (then it is in a project after all).
 no_project_here() {
   d=$dir
@@ -158,8 +162,7 @@ case "$case" in
                      grep -q '^properties  passed ([0-9.]* s)$' "$dir/out" || fail "no passed properties line"
                      has out "check passed" ;;
   check-fuzz-seed)   # The campaign check ends with: its count and seed, in a cache of its own.
-                     mkproj; bins=$(dirname "$ricochet")/../fuzz
-                     "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
+                     mkproj; need_fuzzer scene
                      cd "$proj"; XDG_CACHE_HOME=$dir/cache run 0 check --no-properties --fuzz-runs 20 --fuzz-seed 3
                      has out "== fuzz: 20 inputs per target, seed 3"
                      grep -q '^fuzz        passed (' "$dir/out" || fail "no fuzz passed line"
@@ -268,8 +271,7 @@ case "$case" in
   project-check)     mkproj; cd "$proj/a"; run 0 check --no-properties --fuzz-runs 0
                      has out "== replay ../replays"
                      grep -q '^replay      1 passed, 0 failed' "$dir/out" || fail "check did not replay the project's corpus" ;;
-  project-fuzz)      mkproj; bins=$(dirname "$ricochet")/../fuzz
-                     "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
+  project-fuzz)      mkproj; need_fuzzer scene
                      git -C "$src" rev-parse 2>/dev/null || { echo "skip $case: $src is not a git checkout"; exit 77; }
                      before=$(src_status)
                      cd "$proj/a/b"
@@ -305,21 +307,18 @@ case "$case" in
                      rm "$proj/replays/bad.scene"; cp "$src/replays/pinball.scene" "$proj/replays/"
                      run 0 check --json --no-properties --fuzz-runs 0
                      json_is out 'd["passed"] is True and d["exit"] == 0 and d["stages"]["pinball"]["status"] == "passed" and d["stages"]["pinball"]["kernels"]["robust"] == "ok"' ;;
-  json-fuzz)         mkproj; bins=$(dirname "$ricochet")/../fuzz
-                     "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
+  json-fuzz)         mkproj; need_fuzzer scene
                      cd "$proj"; run 0 fuzz --json --target scene --runs 20 --seed 1 --cache-dir "$dir/cache"
                      json_is out 'd["schema"] == "ricochet-fuzz/1" and d["exit"] == 0 and d["kernel"] == "robust" and d["runs_per_worker"] == 20 and d["time_s"] is None and d["seed"] == 1'
                      json_is out 'd["replay_dir"] == "replays" and d["new_failures"] == 0 and [t["target"] for t in d["targets"]] == ["scene"] and d["targets"][0]["runs"] >= 20'
                      grep -q '^target ' "$dir/err" || fail "the human summary is not on stderr" ;;
   fuzz-jobs)         # --jobs: the workers in all, here two for one target.
-                     mkproj; bins=$(dirname "$ricochet")/../fuzz
-                     "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
+                     mkproj; need_fuzzer scene
                      cd "$proj"; run 0 fuzz --target scene --runs 20 --seed 1 --jobs 2 --cache-dir "$dir/cache"
                      first_line out "ricochet fuzz: kernel robust, 20 runs per worker, 1 target(s), 2 worker(s)" ;;
   fuzz-no-merge)     # Two names for the same bytes in the working corpus: the merge keeps one input under its SHA-1
                      # name, --no-merge leaves both as they were.
-                     mkproj; bins=$(dirname "$ricochet")/../fuzz
-                     "$bins/fuzz_parser" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_parser"; exit 77; }
+                     mkproj; need_fuzzer parser
                      cd "$proj"
                      for m in no-merge merge; do
                        c=$dir/cache-$m/parser/robust/corpus; mkdir -p "$c"
@@ -394,8 +393,7 @@ case "$case" in
                      [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
                      grep -q 'scene worker 0 did not stop within 10 s of SIGINT: killed' "$dir/out" || fail "the stuck worker was not killed"
                      grep -q 'stopped by SIGINT (exit 130)$' "$dir/out" || fail "the summary does not say it was stopped" ;;
-  stop-fuzz)         mkproj; bins=$(dirname "$ricochet")/../fuzz
-                     "$bins/fuzz_scene" -help=1 2>&1 | grep -q '^Usage:' || { echo "skip $case: no libFuzzer fuzz_scene"; exit 77; }
+  stop-fuzz)         mkproj; need_fuzzer scene
                      cd "$proj"
                      # A campaign of a week, stopped once it has started: the header is its first line.
                      stop_after_first_line INT fuzz --target scene --time 604800 --seed 1 --cache-dir "$dir/cache"

@@ -33,9 +33,9 @@ while read -r c; do
   cut -d'|' -f1 "$dir/forms" | cut -d' ' -f1 | grep -qxF "$c" || fail "command '$c' (ricochet help) has no row in the README's table"
 done <"$dir/commands"
 
-# The files where a test may use a flag: the test scripts and the CMake files that add tests.
-tests=$(find "$src/cli" "$src/bench" "$src/fuzz" "$src/core" "$src/properties" "$src/replays" "$src/examples" \
-          -name '*_test.sh' -o -name '*test.sh' -o -name CMakeLists.txt 2>/dev/null | grep -v readme_table_test.sh)
+# Where a test may use a flag: the test scripts and the CMake files that add tests, read once.
+find "$src/cli" "$src/bench" "$src/fuzz" "$src/core" "$src/properties" "$src/replays" "$src/examples" \
+  \( -name '*test.sh' -o -name CMakeLists.txt \) ! -name readme_table_test.sh -exec cat {} + >"$dir/tests" 2>/dev/null
 
 while IFS='|' read -r cmd flags; do
   # A build without benchmarks (RICOCHET_BENCH=OFF) has a `bench` that only says so.
@@ -48,11 +48,10 @@ while IFS='|' read -r cmd flags; do
   # first blank line) that start, after spaces, with a flag.
   sed -n '/^Options:$/,/^$/p' "$dir/cmdhelp" | grep -E '^ +-' | sed 's/^ *//; s/ .*//; s/{[^}]*}//g; s/^/,/; s/$/,/' |
     grep -vxF ',-h,--help,' >"$dir/have"
+  last=${cmd##* }
   for f in $flags; do
     grep -qF -- ",$f," "$dir/have" || fail "README row '$cmd' lists $f, which ricochet $cmd --help does not"
-    last=${cmd##* }
-    # shellcheck disable=SC2086
-    grep -hF -- "$f" $tests | grep -qwF -- "$last" || fail "README row '$cmd': no test uses $last with $f"
+    grep -F -- "$f" "$dir/tests" | grep -qwF -- "$last" || fail "README row '$cmd': no test uses $last with $f"
   done
   while read -r names; do
     listed=no
