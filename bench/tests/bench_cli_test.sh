@@ -52,8 +52,8 @@ case "$case" in
                      grep -q -- "--quick excludes --smoke\|--smoke excludes --quick" "$dir/err" || fail "bench $sub: no excludes error"
                    done
                    [ ! -e "$dir/res" ] || fail "a usage error left --out behind" ;;
-  stability-quick) # The smaller sets of --quick (about 10 s) from seed 3: its header, and a row per magnitude and angle
-                   # for robust with no wrong decision and no tunnel.
+  stability-quick) # The smaller sets of --quick from seed 3 (0.8 s without the chart on the 2-core dev box): its header,
+                   # and a row per magnitude and angle for robust with no wrong decision and no tunnel.
                    "$bench" bench stability --quick --seed 3 --no-chart --out "$dir/res" >"$dir/out" 2>"$dir/err" || fail "exit $?"
                    first_line="ricochet bench stability --quick: 4000 queries per magnitude and angle; seed 3"
                    grep -qxF "$first_line" "$dir/out" || fail "no line: $first_line"
