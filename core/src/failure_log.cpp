@@ -9,9 +9,7 @@
 
 namespace ricochet {
 
-bool documents_weakness(KernelId kernel) {
-    return kernel == KernelId::lecture_float || kernel == KernelId::lecture_double;
-}
+bool documents_weakness(KernelId kernel) { return kernel_ops(kernel).failures_documented; }
 
 bool FailureLog::reproduces() const {
     return replayed && scene.found && replayed->check == scene.found->check && replayed->frame == scene.found->frame &&

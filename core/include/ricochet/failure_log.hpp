@@ -19,8 +19,9 @@ inline constexpr std::uint32_t k_failure_log_balls = 8;
 /// at most this; past it, at 8 spread frames (the `ricochet record` rule, applied to frames 0..F−1).
 inline constexpr double k_failure_log_all_frames = 64.0;
 
-/// True for the kernels whose failures are documented weaknesses, not bugs (lecture-float and
-/// lecture-double): their failure logs carry `expect failure`, so replay passes while they reproduce.
+/// True for the kernels whose failures are documented weaknesses, not bugs (KernelOps::failures_documented:
+/// lecture-float, lecture-double, and code put under the harness from outside): their failure logs carry
+/// `expect failure`, so replay passes while they reproduce.
 bool documents_weakness(KernelId kernel);
 
 /// A failure log, ready to save.

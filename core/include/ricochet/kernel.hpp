@@ -80,6 +80,11 @@ struct KernelOps {
     /// K::k_speed_abs_bound; one that states none is held to robust's (limits.hpp).
     double speed_rel_bound = k_speed_rel_bound;
     double speed_abs_bound = k_speed_abs_bound;
+    /// True for a kernel whose failures are documented weaknesses rather than bugs to fix here: the lecture
+    /// baselines, and code put under the harness from outside (peers, plug-ins). Their failure logs carry
+    /// `expect failure` (failure_log.hpp), so replay passes while the failure reproduces. A kernel type says
+    /// so with K::k_failures_documented = true; the default, false, is for kernels held to the guarantees.
+    bool failures_documented = false;
 };
 
 /// A kernel type: static member functions with exactly KernelOps's signatures (one of each, no overloads).
@@ -98,6 +103,7 @@ constexpr KernelOps make_kernel_ops(std::string_view name) {
         ops.speed_rel_bound = K::k_speed_rel_bound;
         ops.speed_abs_bound = K::k_speed_abs_bound;
     }
+    if constexpr (requires { K::k_failures_documented; }) ops.failures_documented = K::k_failures_documented;
     return ops;
 }
 
