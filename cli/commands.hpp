@@ -30,6 +30,8 @@ void register_record(CLI::App& app);
 void register_replay(CLI::App& app);
 /// `ricochet render LOG -o FILE.svg [--frames A:B]`.
 void register_render(CLI::App& app);
+/// `ricochet reduce LOG [-o OUT]`: the smallest log found that fails as LOG does (reduce.hpp).
+void register_reduce(CLI::App& app);
 /// `ricochet check [--replay-dir DIR]`: the project's corpus, properties and a short fuzz campaign.
 void register_check(CLI::App& app);
 /// `ricochet help [COMMAND]`: the program's help, or a command's, on stdout.
@@ -49,7 +51,7 @@ bool is_command(const CLI::App& app, const std::string& word);
 /// "ricochet: error: unknown command 'WORD'; did you mean 'NAME'?" (or the list of commands) on stderr.
 void print_unknown_command(const CLI::App& app, const std::string& word);
 
-/// The one write of a command whose run ends in a file (record, render): text into path atomically, with
+/// The one write of a command whose run ends in a file (record, render, reduce): text into path atomically, with
 /// SIGINT and SIGTERM held so that the file is whole or untouched. It ends running's phase (ExitOnSignal) and
 /// puts stop in scope: a signal held during the write, or one after it, is then a request to stop, which the
 /// caller answers (stop_requested()) once it has said what it wrote. A failed write is printed, Exit{1}.

@@ -1,9 +1,9 @@
-// ricochet: run, record, replay, render and check scene logs; fuzz and bench where built.
+// ricochet: run, record, replay, render, reduce and check scene logs; fuzz and bench where built.
 //
 // Exit status: 0 success; 1 a check or expectation failed, a run stopped, or output could not be
 // written; 2 bad usage or input (an unknown command or option, a bad value, a malformed or missing log,
 // a log over the work bound, no project folder); 128 + the signal when SIGINT or SIGTERM stopped run, replay,
-// record, check or fuzz (ricochet_cli/stop_signal.hpp).
+// record, reduce, check or fuzz (ricochet_cli/stop_signal.hpp).
 #include <cstdio>
 #include <string>
 #include <system_error>
@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
     ricochet::cli::register_record(app);
     ricochet::cli::register_replay(app);
     ricochet::cli::register_render(app);
+    ricochet::cli::register_reduce(app);
     ricochet::cli::register_check(app);
 #ifdef RICOCHET_HAVE_BENCH
     ricochet::bench::register_bench(app);

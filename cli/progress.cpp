@@ -18,8 +18,9 @@ constexpr std::chrono::milliseconds k_progress_period{250};
 
 }  // namespace
 
-Progress::Progress(std::string what, Unit unit)
-    : what_(std::move(what)), unit_(unit), enabled_(::isatty(STDERR_FILENO) == 1 && ::isatty(STDOUT_FILENO) != 1),
+Progress::Progress(std::string what, Unit unit, Shown shown)
+    : what_(std::move(what)), unit_(unit),
+      enabled_(::isatty(STDERR_FILENO) == 1 && (shown == Shown::output_at_end || ::isatty(STDOUT_FILENO) != 1)),
       start_(Clock::now()), next_(start_ + k_progress_delay) {}
 
 Progress::~Progress() { clear(); }
@@ -41,6 +42,16 @@ void Progress::update(std::int64_t done, std::int64_t total) {
     next_ = now + k_progress_period;
     const double pct = total > 0 ? 100.0 * static_cast<double>(done) / static_cast<double>(total) : 100.0;
     fmt::print(stderr, "\r{}: {} {} of {} ({:.0f} %)\x1b[K", what_, unit_ == Unit::frame ? "frame" : "log", done, total, pct);
+    std::fflush(stderr);
+    shown_ = true;
+}
+
+void Progress::update(const std::function<std::string()>& text) {
+    if (!enabled_) return;
+    const auto now = Clock::now();
+    if (now < next_) return;
+    next_ = now + k_progress_period;
+    fmt::print(stderr, "\r{}: {}\x1b[K", what_, text());
     std::fflush(stderr);
     shown_ = true;
 }

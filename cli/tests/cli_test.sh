@@ -109,6 +109,20 @@ stop_when_running() {
   wait "$pid"
   rc=$?
 }
+# reduced_reproduces LOG [CHECK]: LOG is a failure log (of CHECK): replay passes it (its expected failure
+# reproduces), and without `expect failure` fails it at its found check, frame and ball.
+reduced_reproduces() {
+  found=$(sed -n 's/^found \([^ ]*\) \([0-9]*\) \([0-9]*\)$/\1 \2 \3/p' "$1")
+  [ -n "$found" ] || fail "$1 has no found line"
+  set -- "$1" "${2:-}" $found
+  [ -z "$2" ] || [ "$3" = "$2" ] || fail "$1 found $3, expected $2"
+  grep -qx "expect failure $3 $4" "$1" || fail "$1 does not expect its failure"
+  "$ricochet" replay "$1" >"$dir/r1" 2>&1 || fail "replay fails $1: $(cat "$dir/r1")"
+  grep -v '^expect failure' "$1" >"$dir/bare.scene"
+  ! "$ricochet" replay "$dir/bare.scene" >"$dir/r2" 2>&1 || fail "without expect failure $1 passes"
+  grep -q "invariant $3 broke at frame $4 ball $5:" "$dir/r2" || fail "not found $3 $4 $5: $(cat "$dir/r2")"
+  ! grep -q "when saved" "$dir/r2" || fail "replay says the run differs from found"
+}
 # A log that runs for hours (10^7 frames, 200 balls): a whole frame prints 200 state lines.
 long=$dir/long.scene
 { printf 'ricochet 1\nframes 10000000\nwall 0 0 0 100\nwall 0 100 100 100\nwall 100 100 100 0\nwall 100 0 0 0\n'
@@ -123,6 +137,7 @@ case "$case" in
   full-replay-hashes) run_full 1 replay --hashes "$log"; first_line err "$enospc" ;;
   full-record)       cp "$log" "$dir/r.scene"; run_full 1 record "$dir/r.scene"; first_line err "$enospc" ;;
   full-help)         run_full 1 help; first_line err "$enospc" ;;
+  full-reduce)       run_full 1 reduce "$src/replays/lecture/double-pinball-tunnel.scene"; first_line err "$enospc" ;;
   replay-empty-folder) mkdir "$dir/empty"; run 2 replay "$dir/empty"
                      has err "ricochet: error: no scene logs (*.scene) under $dir/empty"; has out "0 passed, 0 failed" ;;
   replay-empty-hashes) mkdir "$dir/empty"; run 2 replay --hashes "$dir/empty"
@@ -133,7 +148,7 @@ case "$case" in
                      has out "1 passed, 1 failed" ;;
   unknown-command)   run 2 replya replays; first_line err "ricochet: error: unknown command 'replya'; did you mean 'replay'?" ;;
   unknown-far)       run 2 xyzzy
-                     first_line err "ricochet: error: unknown command 'xyzzy' (commands: run, record, replay, render, check, bench, fuzz, help, completion)" ;;
+                     first_line err "ricochet: error: unknown command 'xyzzy' (commands: run, record, replay, render, reduce, check, bench, fuzz, help, completion)" ;;
   version)           run 0 --version; [ "$(cat "$dir/out")" = "ricochet $version" ] || fail "stdout is not 'ricochet $version'" ;;
   help)              run 0 help; first_line out "ricochet: the 2D collision core's scene logs, replay and checks"
                      has out "Subcommands:"; grep -q '^  replay ' "$dir/out" || fail "help lists no replay" ;;
@@ -245,6 +260,51 @@ case "$case" in
                      run 0 render "$dir/t.scene" -o "$dir/robust.svg" --kernel robust
                      grep -q '^wrote [^(]*$' "$dir/out" || fail "render --kernel robust marked a failure"
                      grep -q '>kernel robust, frames 0\.\.10, ' "$dir/robust.svg" || fail "the caption does not say kernel robust" ;;
+  # reduce: a failing log made small; the input never changes, the output is a failure log replay reproduces.
+  reduce-corpus)     cp "$src/replays/lecture/double-pinball-tunnel.scene" "$dir/in.scene"
+                     run 0 reduce "$dir/in.scene" -o "$dir/out.scene"
+                     cmp -s "$src/replays/lecture/double-pinball-tunnel.scene" "$dir/in.scene" || fail "reduce changed its input"
+                     grep -q '^ricochet reduce: 6 walls, 1 balls, 2 circles, 1 rects, 500 frames → 1 walls, 1 balls, 0 circles, 0 rects, [0-9]* frames; [0-9]* tries, [0-9.]* s, nothing smaller found; wrote ' "$dir/err" ||
+                       fail "no summary line"
+                     [ ! -s "$dir/out" ] || fail "stdout not empty with -o"
+                     [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left"
+                     reduced_reproduces "$dir/out.scene" no-tunnel ;;
+  reduce-stdout)     # Without -o the reduced log goes to stdout, the same bytes.
+                     run 0 reduce "$src/replays/lecture/double-wedge-tunnel.scene" -o "$dir/a.scene"
+                     run 0 reduce "$src/replays/lecture/double-wedge-tunnel.scene"
+                     cmp -s "$dir/out" "$dir/a.scene" || fail "stdout differs from -o's file"
+                     grep -q '^ricochet reduce: .*nothing smaller found$' "$dir/err" || fail "no summary line" ;;
+  reduce-kernel)     # pinball.scene holds under robust; --kernel lecture-double breaks it, and the reduced log says so.
+                     run 2 reduce "$src/replays/pinball.scene" -o "$dir/out.scene"
+                     first_line err "$src/replays/pinball.scene: error: every check holds under robust through frame 500: nothing to reduce"
+                     [ ! -e "$dir/out.scene" ] || fail "a log was written"
+                     run 0 reduce "$src/replays/pinball.scene" --kernel lecture-double -o "$dir/out.scene"
+                     grep -qx 'kernel lecture-double' "$dir/out.scene" || fail "the reduced log does not name the kernel"
+                     reduced_reproduces "$dir/out.scene" ;;
+  reduce-malformed)  printf 'ricochet 1\nwall 0 0 1\n' >"$dir/bad.scene"
+                     run 2 reduce "$dir/bad.scene" -o "$dir/out.scene"
+                     first_line err "$dir/bad.scene:2:11: error: 'wall' needs X0 Y0 X1 Y1: missing Y1"
+                     [ ! -e "$dir/out.scene" ] || fail "a log was written" ;;
+  reduce-passing)    run 2 reduce "$log"
+                     first_line err "$log: error: every check holds under robust through frame 10: nothing to reduce"
+                     [ ! -s "$dir/out" ] || fail "stdout not empty" ;;
+  reduce-same-file)  # -o naming the input, as another path, through a symbolic link or a hard link: refused.
+                     cp "$src/replays/lecture/double-wedge-tunnel.scene" "$dir/in.scene"
+                     ln -s in.scene "$dir/link.scene"; ln "$dir/in.scene" "$dir/hard.scene"
+                     for o in "$dir/in.scene" "$dir/./in.scene" "$dir/link.scene" "$dir/hard.scene"; do
+                       run 2 reduce "$dir/in.scene" -o "$o"
+                       first_line err "ricochet: error: -o $o is the log being reduced; reduce never changes its input"
+                     done
+                     cmp -s "$src/replays/lecture/double-wedge-tunnel.scene" "$dir/in.scene" || fail "reduce changed its input"
+                     [ -L "$dir/link.scene" ] || fail "the link is gone" ;;
+  reduce-max-tries)  run 0 reduce "$src/replays/lecture/double-pinball-tunnel.scene" --max-tries 3 -o "$dir/out.scene"
+                     grep -q '; 3 tries, [0-9.]* s, stopped at --max-tries 3; wrote ' "$dir/err" || fail "not stopped at 3 tries"
+                     reduced_reproduces "$dir/out.scene" no-tunnel
+                     run 2 reduce "$log" --max-tries 0
+                     first_line err "ricochet: error: --max-tries: '0' is out of range (expected a number of tries from 1 to 4294967295)" ;;
+  reduce-max-work)   run 2 reduce "$src/replays/lecture/double-pinball-tunnel.scene" --max-work 4999
+                     grep -q "= 5000 is over the bound of 4999" "$dir/err" || fail "no work error"
+                     [ ! -s "$dir/out" ] || fail "stdout not empty" ;;
   # --- The project folder: defaults from the nearest folder holding replays/, never the source tree.
   project-here)      mkproj; cd "$proj"; run 0 replay
                      grep -q '^ok   replays/t\.scene: ' "$dir/out" || fail "replay did not read the project's replays/"
@@ -383,6 +443,18 @@ case "$case" in
                      has err "ricochet record: the log is unchanged; stopped by SIGINT"
                      cmp -s "$long" "$dir/r.scene" || fail "record changed the log"
                      [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left" ;;
+  stop-reduce)       # A closed chain of 10^4 walls (core/tests/ring_log) under no-escape: every wall is needed, so the
+                     # reduction would run its 20 000 tries (tens of seconds); stopped, it writes what it has.
+                     ring=$(dirname "$ricochet")/../core/tests/ring_log
+                     [ -x "$ring" ] || { echo "skip $case: no $ring"; exit 77; }
+                     "$ring" 10000 lecture-float 3000 | sed 's/^check no-tunnel$/check no-escape/' >"$dir/ring.scene"
+                     cp "$dir/ring.scene" "$dir/in.scene"
+                     stop_when_running INT reduce "$dir/in.scene" -o "$dir/small.scene"
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     grep -q '^ricochet reduce: 10000 walls, .*, stopped by SIGINT; wrote ' "$dir/err" || fail "no stopped summary"
+                     cmp -s "$dir/ring.scene" "$dir/in.scene" || fail "reduce changed its input"
+                     [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left"
+                     reduced_reproduces "$dir/small.scene" no-escape ;;
   stop-fuzz-stuck)   mkproj; mkdir "$dir/bin"
                      # A worker that never ends on SIGINT or SIGTERM (as a libFuzzer deadlocked in its
                      # interrupt handler would): the campaign kills it k_stop_grace_s (10 s) after passing the

@@ -21,15 +21,16 @@ offers() {
 }
 
 case "$case" in
-  commands)        offers 'words run record replay render check bench fuzz help completion' ""
+  commands)        offers 'words run record replay render reduce check bench fuzz help completion' ""
                    offers 'words replay' rep
-                   offers 'words record replay render' re
+                   offers 'words record replay render reduce' re
                    offers 'words' __c ;;
   options)         offers 'words --help --hashes' replay --h
                    offers 'words -o' render x.scene -o
                    offers 'files' run -- --k ;;
   kernel-values)   offers 'words lecture-float lecture-double robust exact' run --kernel ""
                    offers 'words robust' run x.scene --kernel ro
+                   offers 'words robust' reduce x.scene --kernel ro
                    # bash splits --kernel=ro at '='; zsh and fish keep it one word.
                    offers 'words lecture-float lecture-double robust exact' run --kernel = ""
                    offers 'words lecture-float lecture-double' run --kernel = l
@@ -42,6 +43,7 @@ case "$case" in
                    offers 'words' run x.scene ""
                    offers 'files' replay a.scene ""
                    offers 'files' render x.scene -o ""
+                   offers 'files' reduce x.scene -o ""
                    offers 'dirs' fuzz --cache-dir ""
                    offers 'dirs' check --replay-dir = ""
                    offers 'words' run --frames ""

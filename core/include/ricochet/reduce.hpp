@@ -1,6 +1,6 @@
 // Reducing a failing log: the smallest scene found that still fails the same way, by delta debugging over
 // its balls, walls, circles and rects, frames cut from both ends, and simpler numbers (docs/scene-log.md,
-// "Reducing a failing log").
+// "Reduced logs").
 //
 // "Fails the same way" is decided by the shared checker alone (run_checked, checks.hpp), on the log's
 // kernel (or options.kernel):

@@ -7,10 +7,12 @@
 namespace ricochet::detail::reduce {
 namespace {
 
-/// From this many walls on a try steps with the wall grid; below it every wall is tried. Options change
-/// no event's bits (world.hpp), only the time: a handful of walls is quicker without an index, and a leg
-/// far longer than the scene (as generated cases have) would walk many grid cells for nothing.
+/// A try steps with the wall grid from this many walls and this many ball-frames on; otherwise every wall
+/// is tried. Options change no event's bits (world.hpp), only the time: a handful of walls is quicker
+/// without an index, a leg far longer than the scene (as generated cases have) would walk many grid cells
+/// for nothing, and a run of a frame or two sweeps fewer walls than building the grid visits.
 constexpr std::size_t k_grid_from_walls = 64;
+constexpr std::int64_t k_grid_from_ball_frames = 16;
 
 }  // namespace
 
@@ -19,7 +21,9 @@ CheckedRun run_to_first_failure(const Scene& scene, KernelId kernel, std::span<c
     CheckOptions options;
     options.keep_events = false;
     options.on_frame = on_frame;
-    options.world.broad_phase = scene.walls.size() >= k_grid_from_walls ? BroadPhase::grid : BroadPhase::none;
+    const bool grid = scene.walls.size() >= k_grid_from_walls &&
+                      scene.frames * static_cast<std::int64_t>(scene.balls.size()) >= k_grid_from_ball_frames;
+    options.world.broad_phase = grid ? BroadPhase::grid : BroadPhase::none;
     // Nothing after the first failure can change the verdict.
     options.stop_after = [](const CheckedRun& run) { return run.failure.has_value(); };
     return run_checked(scene, kernel, scene.frames, checks, options);
