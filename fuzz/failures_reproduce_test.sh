@@ -3,7 +3,9 @@
 # The lecture kernels fail often, so they are the test bed: every fuzz target (libFuzzer with a fixed
 # -seed and -runs, -reload=0, one process, no CMP-guided mutation so that heap addresses do not steer the
 # inputs) and the properties (RapidCheck with a fixed seed and case count) run under lecture-float and
-# lecture-double, saving their failure logs into temporary folders. Then, for every saved log:
+# lecture-double, saving their failure logs into temporary folders; a fuzz target's log is reduced as the
+# campaign reduces it before saving (`ricochet reduce`, the same reduce_log and default budget), the
+# properties reduce theirs themselves. Then, for every saved log:
 #   - it has a `found C F B` line and an `expect failure C F` line (lecture kernel);
 #   - `ricochet replay` passes it (its expected failure reproduces);
 #   - with `expect failure` removed, replay fails it with check C at frame F for ball B, and does not say
@@ -43,6 +45,10 @@ for k in $kernels; do
       RICOCHET_KERNEL=$k RICOCHET_FUZZ_SCENE_OUT="$TMP/fuzz/$t-$k-$s.scene" RICOCHET_FUZZ_SHA1="$sha" \
         "$bins/fuzz_$t" -artifact_prefix="$TMP/junk/" "$crash" > "$art/again" 2>&1
       [ -f "$TMP/fuzz/$t-$k-$s.scene" ] || { echo "FAIL: fuzz_$t ($k, seed $s) failed but wrote no log:"; tail -n 5 "$art/again"; exit 1; }
+      # Reduced, as the campaign saves it (fuzz/campaign/failure.cpp).
+      "$exe" reduce "$TMP/fuzz/$t-$k-$s.scene" -o "$art/reduced.scene" 2>"$art/reduce" ||
+        { echo "FAIL: ricochet reduce $t-$k-$s.scene:"; cat "$art/reduce"; exit 1; }
+      mv "$art/reduced.scene" "$TMP/fuzz/$t-$k-$s.scene"
       found_by[$t]=$(( ${found_by[$t]:-0} + 1 ))
     done
     echo "$k $t: done at ${SECONDS} s"

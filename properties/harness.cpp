@@ -7,7 +7,8 @@
 // come in order of ever smaller cases and the last failing call is the minimal one (this version also
 // replays that minimal case once more at the end, see rapidcheck/BeforeMinimalTestCase.h). So the
 // property only remembers its latest failing scene, and run_property saves that one after
-// checkProperty has returned, then reads the saved log back and checks that it still fails.
+// checkProperty has returned, reduced first (reduce.hpp: RapidCheck shrinks the generated values, the
+// reducer the scene itself), then reads the saved log back and checks that it still fails.
 #include "harness.hpp"
 
 #include <fmt/format.h>
@@ -25,6 +26,7 @@
 
 #include "ricochet/checks.hpp"
 #include "ricochet/failure_log.hpp"
+#include "ricochet/reduce.hpp"
 #include "ricochet/replay.hpp"
 #include "ricochet/scene_log.hpp"
 
@@ -115,24 +117,37 @@ int replay_saved(const Property& p, KernelId k) {
     return replayed;
 }
 
-/// Saves the minimal failing case as a failure log (make_failure_log) when the shared checker sees the
-/// failure (what it cannot see is not saved: replay could not reproduce it); returns a report for the
-/// test's failure message.
+/// Tries the reducer may make on a shrunk counterexample before it is saved: a count, not a clock, so a run
+/// saves the same log on every machine. RapidCheck shrinks the generated values; the reducer then removes
+/// what the statement's check does not need (balls, walls, shapes, frames) and simplifies the numbers.
+constexpr std::uint64_t k_reduce_tries = 2'000;
+
+/// Saves the minimal failing case, reduced (reduce.hpp), as a failure log (make_failure_log) when the shared
+/// checker sees the failure (what it cannot see is not saved: replay could not reproduce it); returns a
+/// report for the test's failure message.
 std::string save_failure(const Property& p, KernelId k, std::uint64_t seed, const Scene& found, const Failure& f) {
     Scene scene = found;
     scene.kernel = k;
-    const Check checks[] = {f.check};
-    CheckOptions options;
-    options.keep_events = false;
-    const CheckedRun run = run_checked(scene, k, scene.frames, checks, options);
-    if (!run.failure)
+    scene.checks = {f.check};
+    scene.provenance = {fmt::format("property {} seed {}", p.name, seed)};
+    scene.expect_hash.reset();
+    scene.expect_states.clear();
+    scene.expect_failure.reset();
+    scene.found.reset();
+    ReduceOptions options;
+    options.max_tries = k_reduce_tries;
+    const auto result = reduce_log(scene, options);
+    const auto* reduced = std::get_if<ReducedLog>(&result);
+    if (reduced == nullptr || reduced->error)
         return fmt::format("NOT saved: the shared check {} holds on this case, so replay could not reproduce it",
                            check_name(f.check));
-    const FailureLog log = make_failure_log(scene, k, fmt::format("property {} seed {}", p.name, seed), *run.failure);
+    const FailureLog& log = reduced->log;
     std::string error;
     const auto saved = save_scene_log_once(replay_dir(), p.name, std::string_view(log.text()), &error);
     if (!saved) return fmt::format("could not save the case: {}", error);
-    std::string report = fmt::format("minimal case {} {}", saved->is_new ? "saved as" : "already saved as",
+    std::string report = fmt::format("minimal case, reduced from {} to {} entities and {} to {} frames in {} tries, {} {}",
+                                     reduced->before.entities(), reduced->after.entities(), reduced->before.frames,
+                                     reduced->after.frames, reduced->tries, saved->is_new ? "saved as" : "already saved as",
                                      saved->path.string());
     // Read the saved log back: it must still break the property, and replay must show the failure.
     auto parsed = read_scene_log(saved->path);

@@ -1,5 +1,5 @@
 // The property harness: which kernels are under test, how a property is run (saved logs first, then
-// RapidCheck), and how its shrunk counterexample becomes a scene log.
+// RapidCheck), and how its shrunk counterexample becomes a scene log (reduced first, reduce.hpp).
 #pragma once
 
 #include <gtest/gtest.h>  // before rapidcheck/gtest.h, which uses it
@@ -52,7 +52,8 @@ struct Property {
 };
 
 /// Runs p against kernel k as the current GoogleTest test: first every saved log in replay_dir() that
-/// names p, then RapidCheck's search. A failure is reported through GoogleTest and its minimal case saved.
+/// names p, then RapidCheck's search. A failure is reported through GoogleTest and its minimal case, reduced
+/// (reduce_log, a fixed budget of tries), saved.
 void run_property(const Property& p, KernelId k);
 
 /// Cases generated (RapidCheck successes) so far in this process, over every property and kernel.

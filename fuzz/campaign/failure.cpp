@@ -1,8 +1,9 @@
 // Turning a campaign's failures into scene logs (failure.hpp). The fuzz target writes the failure log
 // itself (fuzz_common.cpp's fail(), make_failure_log: `from fuzz TARGET SHA1`, the check that failed,
 // `found`, `expect failure` for a lecture kernel) when RICOCHET_FUZZ_SCENE_OUT names a file; the campaign
-// saves it as fuzz-TARGET-ID.scene through save_scene_log_once, which tells a new case from one already
-// in the folder under any name.
+// reduces it (reduce.hpp: libFuzzer minimizes bytes, not scenes) and saves the reduced log as
+// fuzz-TARGET-ID.scene through save_scene_log_once, which tells a new case from one already in the folder
+// under any name.
 #include "failure.hpp"
 
 #include <algorithm>
@@ -20,6 +21,7 @@
 #include "cache.hpp"
 #include "cache_lock.hpp"
 #include "fuzz_common.hpp"
+#include "ricochet/reduce.hpp"
 #include "ricochet/replay.hpp"
 #include "process.hpp"
 #include "run_dir.hpp"
@@ -56,6 +58,28 @@ std::pair<std::string, std::string> signature_of(const std::string& out) {
         if (line.starts_with("SUMMARY:")) signature = first_line = line;
     }
     return {signature, first_line};
+}
+
+/// The failure log text the target wrote, reduced (reduce_log with its default budget of tries, a count,
+/// so a campaign by --runs saves the same log on every machine; the same as `ricochet reduce LOG`); the text
+/// as it is if it does not read or cannot be reduced (the reproduction check after saving says so).
+std::string reduced_log(const std::string& text, const fs::path& path) {
+    const SceneOrDiagnostic parsed = parse_scene_log(text, path.string());
+    const Scene* scene = std::get_if<Scene>(&parsed);
+    if (scene == nullptr) return text;
+    ReduceOptions options;
+    // A stopped campaign still saves what it converted: the reduction so far is a failure log too.
+    options.stop = [] { return cli::stop_requested(); };
+    const auto result = reduce_log(*scene, options);
+    const auto* reduced = std::get_if<ReducedLog>(&result);
+    if (reduced == nullptr || reduced->error) {
+        fmt::print("    not reduced: {}\n",
+                   reduced == nullptr ? std::get<ReduceRefusal>(result).message : "the log's run stops at an error");
+        return text;
+    }
+    fmt::print("    reduced:      {} to {} entities, {} to {} frames in {} tries\n", reduced->before.entities(),
+               reduced->after.entities(), reduced->before.frames, reduced->after.frames, reduced->tries);
+    return reduced->log.text();
 }
 
 /// Minimizes one failure, converts it to a scene log, saves it unless it was saved before.
@@ -115,8 +139,8 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, 
         ++r.new_failures;
         return;
     }
-    // The target wrote the failure log (make_failure_log); saved verbatim, its note comment kept.
-    const std::string text = read_all(scene_out);
+    // The target wrote the failure log (make_failure_log); it is saved reduced, as a failure log of its own.
+    const std::string text = reduced_log(read_all(scene_out), scene_out);
     std::string error;
     // Under the cache's lock, so that of two campaigns saving the same case one saves it, one finds it known.
     std::optional<SavedLog> saved;
