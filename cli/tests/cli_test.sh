@@ -31,6 +31,10 @@ has() { grep -qxF -- "$2" "$dir/$1" || fail "std$1 lacks the line: $2"; }
 # first_line FILE TEXT: FILE's first line is TEXT.
 first_line() { [ "$(head -n 1 "$dir/$1")" = "$2" ] || fail "std$1's first line is not: $2"; }
 
+# Every kernel's name as errors list them: the built-in four, then the peers this build has.
+kernels='lecture-float, lecture-double, robust, exact'
+for k in ${RICOCHET_PEER_KERNELS:-}; do kernels="$kernels, $k"; done
+
 # A small valid log: 10 frames × 2 balls × (1 wall + 0 shapes + 1) = 40 units of work.
 log=$dir/tiny.scene
 printf 'ricochet 1\nframes 10\nwall 0 -5 0 5\nball -1 0 0.5 0\nball -3 1 0.25 0\ncheck no-tunnel\n' >"$log"
@@ -149,7 +153,7 @@ case "$case" in
                      first_line err "ricochet: error: --frames: 'abc' is not a frame range (expected A:B, integers with 0 <= A <= B)"
                      [ ! -e "$dir/x.svg" ] || fail "render wrote the picture" ;;
   run-unknown-kernel) run 2 run "$log" --kernel nope
-                     first_line err "ricochet: error: unknown kernel 'nope' (lecture-float, lecture-double, robust, exact)" ;;
+                     first_line err "ricochet: error: unknown kernel 'nope' ($kernels)" ;;
   replay-unreadable) mkdir "$dir/logs"; cp "$log" "$dir/logs/a.scene"; printf 'ricochet 1\nbogus 1\n' >"$dir/logs/b.scene"
                      run 2 replay "$dir/logs"
                      has out "FAIL $dir/logs/b.scene: unreadable log"; has out "1 passed, 1 failed"
