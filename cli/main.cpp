@@ -11,8 +11,8 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "ricochet_peers/peers.hpp"
 #include "ricochet_fuzz/command.hpp"
+#include "ricochet_peers/peers.hpp"
 #ifdef RICOCHET_HAVE_BENCH
 #include "ricochet_bench/command.hpp"
 #endif

@@ -154,6 +154,18 @@ case "$case" in
                      [ ! -e "$dir/x.svg" ] || fail "render wrote the picture" ;;
   run-unknown-kernel) run 2 run "$log" --kernel nope
                      first_line err "ricochet: error: unknown kernel 'nope' ($kernels)" ;;
+  # The peers as kernels, where built: run and render take them, and a log naming one replays.
+  peer-kernels)      [ -n "${RICOCHET_PEER_KERNELS:-}" ] || { echo "skip $case: no peer kernel in this build"; exit 77; }
+                     for k in $RICOCHET_PEER_KERNELS; do
+                       run 0 run "$log" --kernel "$k"
+                       [ "$(grep -c '^state 10 ' "$dir/out")" = 2 ] || fail "run --kernel $k did not run both balls 10 frames"
+                       run 0 render "$log" -o "$dir/$k.svg" --kernel "$k"
+                       grep -q ">kernel $k, frames 0\.\.10, " "$dir/$k.svg" || fail "the caption does not say kernel $k"
+                       # Without its check (the peers tunnel through this wall: replays/peers/ shows how).
+                       sed "s/^ricochet 1$/ricochet 1\nkernel $k/; /^check /d" "$log" >"$dir/$k.scene"
+                       run 0 replay "$dir/$k.scene"
+                       has out "1 passed, 0 failed"
+                     done ;;
   replay-unreadable) mkdir "$dir/logs"; cp "$log" "$dir/logs/a.scene"; printf 'ricochet 1\nbogus 1\n' >"$dir/logs/b.scene"
                      run 2 replay "$dir/logs"
                      has out "FAIL $dir/logs/b.scene: unreadable log"; has out "1 passed, 1 failed"
