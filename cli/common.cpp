@@ -44,7 +44,9 @@ void write_file_holding_signals(const std::string& path, std::string_view text, 
 KernelId kernel_or_exit(const std::string& name) {
     const auto k = parse_kernel(name);
     if (!k) {
-        fmt::print(stderr, "ricochet: error: unknown kernel '{}' ({})\n", name, kernel_names());
+        // A kernel this build knows but lacks (a peer not found at build time) is told apart from a typo.
+        fmt::print(stderr, "ricochet: error: {}\n",
+                   absent_kernel_message(name).value_or(fmt::format("unknown kernel '{}' ({})", name, kernel_names())));
         throw Exit{2};
     }
     return *k;

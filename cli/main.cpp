@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "ricochet_fuzz/command.hpp"
+#include "ricochet_peers/peers.hpp"
 #ifdef RICOCHET_HAVE_BENCH
 #include "ricochet_bench/command.hpp"
 #endif
@@ -26,6 +27,8 @@ std::string usage_error(const CLI::App*, const CLI::Error& e) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Before any kernel name is parsed (options, logs, completion): the peers join the kernel registry.
+    ricochet::peers::register_peer_kernels();
     CLI::App app{"ricochet: the 2D collision core's scene logs, replay and checks", "ricochet"};
     // Before the commands are added: each copies its parent's failure message.
     app.failure_message(usage_error);

@@ -12,14 +12,21 @@
 #include "ricochet/checks.hpp"
 #include "ricochet/failure_log.hpp"
 #include "ricochet/scene_log.hpp"
+#include "ricochet_peers/peers.hpp"
 
 namespace ricochet::fuzz {
 
 KernelId kernel_under_test() {
     static const KernelId k = [] {
+        // The peers join the registry before RICOCHET_KERNEL is read.
+        peers::register_peer_kernels();
         const char* name = std::getenv(k_kernel_env);
         if (name == nullptr || *name == '\0') return KernelId::robust;
         const auto parsed = parse_kernel(name);
+        if (const auto absent = parsed ? std::nullopt : absent_kernel_message(name)) {
+            fmt::print(stderr, "ricochet fuzz: error: {}={}: {}\n", k_kernel_env, name, *absent);
+            std::exit(2);
+        }
         if (!parsed) {
             fmt::print(stderr, "ricochet fuzz: error: {}={} is not a kernel ({})\n", k_kernel_env, name,
                        kernel_names());

@@ -29,6 +29,7 @@
 #include "ricochet/reduce.hpp"
 #include "ricochet/replay.hpp"
 #include "ricochet/scene_log.hpp"
+#include "ricochet_peers/peers.hpp"
 
 namespace ricochet {
 
@@ -165,6 +166,8 @@ std::string save_failure(const Property& p, KernelId k, std::uint64_t seed, cons
 }  // namespace
 
 std::vector<KernelId> kernels_under_test() {
+    // The peers join the registry before RICOCHET_KERNEL is read (the suites are instantiated from here).
+    peers::register_peer_kernels();
     const char* env = std::getenv("RICOCHET_KERNEL");
     if (env == nullptr || *env == '\0') return {KernelId::robust, KernelId::exact};
     std::vector<KernelId> out;
@@ -176,6 +179,9 @@ std::vector<KernelId> kernels_under_test() {
             out.assign(k_all_kernels.begin(), k_all_kernels.end());
         } else if (const auto k = parse_kernel(name)) {
             out.push_back(*k);
+        } else if (const auto absent = absent_kernel_message(name)) {
+            fmt::print(stderr, "RICOCHET_KERNEL: error: {}\n", *absent);
+            std::exit(2);
         } else {
             fmt::print(stderr, "RICOCHET_KERNEL: error: no kernel called '{}' ({}, all)\n", name, kernel_names());
             std::exit(2);
@@ -229,6 +235,8 @@ std::string kernel_param_name(const ::testing::TestParamInfo<KernelId>& info) {
 }
 
 void run_property(const Property& p, KernelId k) {
+    // Saved logs are read below (replayed first, read back after saving): they may name a peer kernel.
+    peers::register_peer_kernels();
     const auto start = std::chrono::steady_clock::now();
     const int replayed = replay_saved(p, k);
 

@@ -31,6 +31,10 @@ has() { grep -qxF -- "$2" "$dir/$1" || fail "std$1 lacks the line: $2"; }
 # first_line FILE TEXT: FILE's first line is TEXT.
 first_line() { [ "$(head -n 1 "$dir/$1")" = "$2" ] || fail "std$1's first line is not: $2"; }
 
+# Every kernel's name as errors list them: the built-in four, then the peers this build has.
+kernels='lecture-float, lecture-double, robust, exact'
+for k in ${RICOCHET_PEER_KERNELS:-}; do kernels="$kernels, $k"; done
+
 # A small valid log: 10 frames × 2 balls × (1 wall + 0 shapes + 1) = 40 units of work.
 log=$dir/tiny.scene
 printf 'ricochet 1\nframes 10\nwall 0 -5 0 5\nball -1 0 0.5 0\nball -3 1 0.25 0\ncheck no-tunnel\n' >"$log"
@@ -164,7 +168,19 @@ case "$case" in
                      first_line err "ricochet: error: --frames: 'abc' is not a frame range (expected A:B, integers with 0 <= A <= B)"
                      [ ! -e "$dir/x.svg" ] || fail "render wrote the picture" ;;
   run-unknown-kernel) run 2 run "$log" --kernel nope
-                     first_line err "ricochet: error: unknown kernel 'nope' (lecture-float, lecture-double, robust, exact)" ;;
+                     first_line err "ricochet: error: unknown kernel 'nope' ($kernels)" ;;
+  # The peers as kernels, where built: run and render take them, and a log naming one replays.
+  peer-kernels)      [ -n "${RICOCHET_PEER_KERNELS:-}" ] || { echo "skip $case: no peer kernel in this build"; exit 77; }
+                     for k in $RICOCHET_PEER_KERNELS; do
+                       run 0 run "$log" --kernel "$k"
+                       [ "$(grep -c '^state 10 ' "$dir/out")" = 2 ] || fail "run --kernel $k did not run both balls 10 frames"
+                       run 0 render "$log" -o "$dir/$k.svg" --kernel "$k"
+                       grep -q ">kernel $k, frames 0\.\.10, " "$dir/$k.svg" || fail "the caption does not say kernel $k"
+                       # Without its check (the peers tunnel through this wall: replays/peers/ shows how).
+                       sed "s/^ricochet 1$/ricochet 1\nkernel $k/; /^check /d" "$log" >"$dir/$k.scene"
+                       run 0 replay "$dir/$k.scene"
+                       has out "1 passed, 0 failed"
+                     done ;;
   replay-unreadable) mkdir "$dir/logs"; cp "$log" "$dir/logs/a.scene"; printf 'ricochet 1\nbogus 1\n' >"$dir/logs/b.scene"
                      run 2 replay "$dir/logs"
                      has out "FAIL $dir/logs/b.scene: unreadable log"; has out "1 passed, 1 failed"

@@ -20,6 +20,9 @@ offers() {
   [ "$got" = "$want " ] || fail "__complete -- $*: offered '$got', wanted '$want'"
 }
 
+# Every kernel, as completion offers them: the built-in four, then the peers this build has.
+kernels="lecture-float lecture-double robust exact${RICOCHET_PEER_KERNELS:+ $RICOCHET_PEER_KERNELS}"
+
 case "$case" in
   commands)        offers 'words run record replay render reduce check bench fuzz help completion' ""
                    offers 'words replay' rep
@@ -28,11 +31,11 @@ case "$case" in
   options)         offers 'words --help --hashes' replay --h
                    offers 'words -o' render x.scene -o
                    offers 'files' run -- --k ;;
-  kernel-values)   offers 'words lecture-float lecture-double robust exact' run --kernel ""
+  kernel-values)   offers "words $kernels" run --kernel ""
                    offers 'words robust' run x.scene --kernel ro
                    offers 'words robust' reduce x.scene --kernel ro
                    # bash splits --kernel=ro at '='; zsh and fish keep it one word.
-                   offers 'words lecture-float lecture-double robust exact' run --kernel = ""
+                   offers "words $kernels" run --kernel = ""
                    offers 'words lecture-float lecture-double' run --kernel = l
                    offers 'words --kernel=robust' run --kernel=r
                    offers 'words static sweep scene' fuzz --target s ;;
@@ -76,7 +79,8 @@ echo "[view]"; complete_words render x.scene --view a
 EOF
                    ricochet=$ricochet bash "$dir/try.bash" "$dir/ricochet.bash" "$dir/logs" >"$dir/out" 2>"$dir/err" ||
                      fail "the script failed"
-                   printf '%s\n' "[rep]" replay "[kernel]" lecture-float lecture-double robust exact "[kernel=]" \
+                   # shellcheck disable=SC2086 # $kernels: one word per kernel
+                   printf '%s\n' "[rep]" replay "[kernel]" $kernels "[kernel=]" \
                      lecture-float lecture-double "[file]" a.scene "[dir]" sub "[view]" all >"$dir/want"
                    cmp -s "$dir/out" "$dir/want" || { echo "--- wanted:"; cat "$dir/want"; fail "bash completed otherwise"; }  ;;
   zsh)             command -v zsh >/dev/null || { echo "skip $case: no zsh"; exit 77; }

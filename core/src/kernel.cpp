@@ -6,6 +6,8 @@
 #include <cassert>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "kernel_impl.hpp"
 #include "kernel_lecture.hpp"
 
@@ -30,6 +32,14 @@ static_assert(k_all_kernels.size() == 4 && k_all_kernels[0] == KernelId{0} && k_
 
 bool registered(KernelId k) { return static_cast<std::size_t>(k) < s_count; }
 
+/// The names this build knows but lacks, with why (note_absent_kernel): entries 0 … s_absent_count − 1.
+struct Absent {
+    std::string_view name;
+    std::string_view why;
+};
+constinit std::array<Absent, k_max_kernels> s_absent{};
+constinit std::size_t s_absent_count = 0;
+
 }  // namespace
 
 std::optional<KernelId> register_kernel(const KernelOps& ops) {
@@ -39,6 +49,19 @@ std::optional<KernelId> register_kernel(const KernelOps& ops) {
     s_ids[s_count] = id;
     ++s_count;
     return id;
+}
+
+bool note_absent_kernel(std::string_view name, std::string_view why) {
+    if (s_absent_count == k_max_kernels || parse_kernel(name) || absent_kernel_message(name)) return false;
+    s_absent[s_absent_count++] = {name, why};
+    return true;
+}
+
+std::optional<std::string> absent_kernel_message(std::string_view name) {
+    for (std::size_t i = 0; i < s_absent_count; ++i)
+        if (s_absent[i].name == name)
+            return fmt::format("kernel '{}' is not built into this ricochet: {}", name, s_absent[i].why);
+    return std::nullopt;
 }
 
 const KernelOps& kernel_ops(KernelId k) {

@@ -190,8 +190,9 @@ private:
             if (seen_kernel_) fail(d, "duplicate 'kernel'");
             const Token& t = arg(1, "kernel name");
             const auto k = parse_kernel(t.text);
-            if (!k)
-                fail(t, fmt::format("unknown kernel '{}' ({})", shown(t.text), kernel_names()));
+            // A kernel this build knows but lacks (a peer not found at build time) is told apart from a typo.
+            if (!k) fail(t, absent_kernel_message(t.text).value_or(
+                                fmt::format("unknown kernel '{}' ({})", shown(t.text), kernel_names())));
             no_more(2);
             scene_.kernel = *k;
             seen_kernel_ = true;

@@ -2,8 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <variant>
 
 #include "ricochet/kernel.hpp"
+#include "ricochet/scene_log_format.hpp"
 
 namespace ricochet {
 namespace {
@@ -67,6 +69,27 @@ TEST(Registry, PlugInKernelJoinsByName) {
     Ball far{{0x1p300, 0}, {1, 0}};
     EXPECT_EQ(step_ball(*id, far, memory, std::span<const Wall>(&w, 1), hits, scratch), FrameStatus::out_of_range);
     EXPECT_EQ(InsideKernel::frames, before + 1);
+}
+
+TEST(Registry, AnAbsentKernelIsRefusedWithWhy) {
+    // A kernel this build knows of but lacks (a peer whose library was not found): not parsed, but told apart
+    // from a typo, in the log's FILE:LINE:COL form too.
+    ASSERT_TRUE(note_absent_kernel("test-absent", "its library was not found at build time"));
+    EXPECT_FALSE(parse_kernel("test-absent").has_value());
+    EXPECT_EQ(absent_kernel_message("test-absent"),
+              "kernel 'test-absent' is not built into this ricochet: its library was not found at build time");
+    EXPECT_FALSE(absent_kernel_message("fast").has_value());
+    EXPECT_EQ(kernel_names().find("test-absent"), std::string::npos);
+    // Noted once; a registered name is never absent.
+    EXPECT_FALSE(note_absent_kernel("test-absent", "again"));
+    EXPECT_FALSE(note_absent_kernel("robust", "no"));
+    EXPECT_FALSE(absent_kernel_message("robust").has_value());
+    const auto parsed = parse_scene_log("ricochet 1\nkernel test-absent\n", "t.scene");
+    const auto* d = std::get_if<Diagnostic>(&parsed);
+    ASSERT_NE(d, nullptr);
+    EXPECT_EQ(d->str(),
+              "t.scene:2:8: error: kernel 'test-absent' is not built into this ricochet: its library was not found at "
+              "build time");
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "run_dir.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet_cli/project.hpp"
+#include "ricochet_peers/peers.hpp"
 
 namespace ricochet::fuzz {
 namespace {
@@ -36,8 +37,12 @@ bool known_target(const std::string& t) {
 }  // namespace
 
 std::optional<Plan> make_plan(const CampaignOptions& opt) {
-    if (!parse_kernel(opt.kernel)) {
-        fmt::print(stderr, "ricochet fuzz: error: unknown kernel '{}' ({})\n", opt.kernel, kernel_names());
+    peers::register_peer_kernels();
+    const auto kernel = parse_kernel(opt.kernel);
+    if (!kernel) {
+        fmt::print(stderr, "ricochet fuzz: error: {}\n",
+                   absent_kernel_message(opt.kernel)
+                       .value_or(fmt::format("unknown kernel '{}' ({})", opt.kernel, kernel_names())));
         return std::nullopt;
     }
     Plan plan;
@@ -123,9 +128,10 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
         }
         r.dict = plan.source / "fuzz" / fmt::format("{}.dict", t);
         // Seeds, read only: the project's committed regression inputs (PROJECT/fuzz/corpus/TARGET, else the
-        // target's own, committed with the tool), and the project's replays for the parser. A lecture kernel
-        // starts from its own corpus only: committed inputs may be known failures of it.
-        if (!opt.kernel.starts_with("lecture")) {
+        // target's own, committed with the tool), and the project's replays for the parser. A kernel whose
+        // failures are documented (the lecture kernels, the peers) starts from its own corpus only: committed
+        // inputs may be known failures of it.
+        if (!kernel_ops(*kernel).failures_documented) {
             const fs::path mine = plan.project.empty() ? fs::path() : plan.project / "fuzz" / "corpus" / t;
             const fs::path tools = plan.source / "fuzz" / "corpus" / t;
             if (!mine.empty() && fs::is_directory(mine, ec))

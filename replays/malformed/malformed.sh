@@ -15,6 +15,10 @@ case "$1" in
      f=$dir/bad.scene ;;
 esac
 h='ricochet 1'
+# The kernel names a diagnostic lists: the built-in four, then the peers this build has (RICOCHET_PEER_KERNELS,
+# set by CTest from the build: bench/peers).
+kernels='lecture-float, lecture-double, robust, exact'
+for k in ${RICOCHET_PEER_KERNELS:-}; do kernels="$kernels, $k"; done
 case "$kind" in
   unknown-directive) printf '%s\nwal 0 0 1 1\n' "$h" >"$f"; want='2:1: error: unknown directive '\''wal'\''' ;;
   missing-token)     printf '%s\nwall 0 0 1\n' "$h" >"$f"; want='2:11: error: '\''wall'\'' needs X0 Y0 X1 Y1: missing Y1' ;;
@@ -29,7 +33,7 @@ case "$kind" in
   bottom-gt-top)     printf '%s\nrect 0 2 1 1\n' "$h" >"$f"; want='2:8: error: bottom 2 is greater than top 1' ;;
   negative-frames)   printf '%s\nframes -3\n' "$h" >"$f"; want='2:8: error: negative frame count -3' ;;
   absurd-frames)     printf '%s\nframes 99999999999\n' "$h" >"$f"; want='2:8: error: frame count 99999999999 is over the limit of 10000000' ;;
-  unknown-kernel)    printf '%s\nkernel fast\n' "$h" >"$f"; want='2:8: error: unknown kernel '\''fast'\'' (lecture-float, lecture-double, robust, exact)' ;;
+  unknown-kernel)    printf '%s\nkernel fast\n' "$h" >"$f"; want="2:8: error: unknown kernel 'fast' ($kernels)" ;;
   unknown-check)     printf '%s\ncheck speedy\n' "$h" >"$f"; want='2:7: error: unknown check '\''speedy'\'' (no-tunnel, symmetry, boundary, speed, deterministic, oracle, swap, translation, broad-phase, round-trip, no-escape, bounce-side, accuracy, event-order)' ;;
   future-version)    printf 'ricochet 2\n' >"$f"; want='1:10: error: format version 2 is newer than this reader (it reads version 1)' ;;
   missing-header)    printf 'wall 0 0 1 1\n' >"$f"; want='1:1: error: expected the header '\''ricochet 1'\'' before '\''wall'\''' ;;

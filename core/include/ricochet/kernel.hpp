@@ -119,6 +119,11 @@ inline constexpr std::size_t k_max_kernels = 16;
 /// function below dispatches to it, and scene logs may name it. Returns its id, or nothing if the name is
 /// taken or the registry is full. The name must outlive every use of the registry (a literal is fine).
 std::optional<KernelId> register_kernel(const KernelOps& ops);
+/// A kernel this build knows by name but was built without (a peer whose library was not found at build
+/// time): parse_kernel still finds nothing, and absent_kernel_message (kernel_id.hpp) says why wherever the
+/// name is refused. Returns false if the name is registered or noted already, or the table is full. Both
+/// strings must outlive every use of the registry (literals are fine).
+bool note_absent_kernel(std::string_view name, std::string_view why);
 /// The implementation of kernel k. k must be registered (every KernelId parse_kernel returns is).
 const KernelOps& kernel_ops(KernelId k);
 /// Every registered kernel, in id order: k_all_kernels first, then the plug-ins in the order they joined.

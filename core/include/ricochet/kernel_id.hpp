@@ -22,5 +22,8 @@ std::string_view kernel_name(KernelId k);
 std::optional<KernelId> parse_kernel(std::string_view name);
 /// Every registered kernel's name, joined for error messages: "lecture-float, lecture-double, robust, exact".
 std::string kernel_names();
+/// For a name this build knows but lacks (note_absent_kernel, kernel.hpp): "kernel 'NAME' is not built into
+/// this ricochet: WHY"; nothing for any other name.
+std::optional<std::string> absent_kernel_message(std::string_view name);
 
 }  // namespace ricochet
