@@ -85,12 +85,15 @@ sys.exit(0 if eval(sys.argv[2]) else 1)' "$dir/$f" "$e" "$@" 2>"$dir/py" || fail
 # $dir/err), waits until it has printed its first line (synchronised on its output, not on a delay), sends
 # SIGNAL, and leaves its exit status in rc. The commands given run for hours unless stopped, so the verdict
 # does not depend on timing.
-stop_after_first_line() {
-  sig=$1; shift
+stop_after_first_line() { stop_once '[ -s "$dir/out" ]' "$@"; }
+# stop_once CONDITION SIGNAL ARGS...: runs ricochet ARGS in the background and sends SIGNAL once the shell test
+# CONDITION holds; rc is its exit status.
+stop_once() {
+  cond=$1; sig=$2; shift 2
   "$ricochet" "$@" >"$dir/out" 2>"$dir/err" &
   pid=$!
-  while [ ! -s "$dir/out" ]; do
-    kill -0 "$pid" 2>/dev/null || { wait "$pid"; fail "ricochet $* ended (exit $?) before printing a line"; }
+  while ! eval "$cond"; do
+    kill -0 "$pid" 2>/dev/null || { wait "$pid"; fail "ricochet $* ended (exit $?) before it was under way"; }
     sleep 0.02
   done
   kill "-$sig" "$pid"
@@ -102,16 +105,7 @@ stop_after_first_line() {
 # /proc/PID/stat (reading a 200-line log takes microseconds). Skips the case where there is no /proc.
 stop_when_running() {
   [ -r /proc/$$/stat ] || { echo "skip $case: no /proc"; exit 77; }
-  sig=$1; shift
-  "$ricochet" "$@" >"$dir/out" 2>"$dir/err" &
-  pid=$!
-  while [ "$(awk '{print $14}' "/proc/$pid/stat" 2>/dev/null || echo 0)" -lt 10 ]; do
-    kill -0 "$pid" 2>/dev/null || { wait "$pid"; fail "ricochet $* ended (exit $?) before its run was under way"; }
-    sleep 0.02
-  done
-  kill "-$sig" "$pid"
-  wait "$pid"
-  rc=$?
+  stop_once '[ "$(awk '"'"'{print $14}'"'"' "/proc/$pid/stat" 2>/dev/null || echo 0)" -ge 10 ]' "$@"
 }
 # reduced_reproduces LOG [CHECK]: LOG is a failure log (of CHECK): replay passes it (its expected failure
 # reproduces), and without `expect failure` fails it at its found check, frame and ball.
@@ -475,9 +469,10 @@ case "$case" in
                      # A worker that never ends on SIGINT or SIGTERM (as a libFuzzer deadlocked in its
                      # interrupt handler would): the campaign kills it k_stop_grace_s (10 s) after passing the
                      # signal on, and still ends as a stopped campaign.
-                     printf '#!/bin/sh\ncase "$1" in -help=1) echo "Usage: fake"; exit 0;; esac\ntrap "" INT TERM\nwhile :; do sleep 1; done\n' >"$dir/bin/fuzz_scene"
+                     # It says when it runs: a signal before the campaign has started it would find no worker to kill.
+                     printf '#!/bin/sh\ncase "$1" in -help=1) echo "Usage: fake"; exit 0;; esac\ntrap "" INT TERM\n: > "%s/started"\nwhile :; do sleep 1; done\n' "$dir" >"$dir/bin/fuzz_scene"
                      chmod +x "$dir/bin/fuzz_scene"; cd "$proj"
-                     stop_after_first_line INT fuzz --target scene --time 604800 --seed 1 --cache-dir "$dir/cache" --bin-dir "$dir/bin"
+                     stop_once '[ -e "$dir/started" ]' INT fuzz --target scene --time 604800 --seed 1 --cache-dir "$dir/cache" --bin-dir "$dir/bin"
                      [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
                      grep -q 'scene worker 0 did not stop within 10 s of SIGINT: killed' "$dir/out" || fail "the stuck worker was not killed"
                      grep -q 'stopped by SIGINT (exit 130)$' "$dir/out" || fail "the summary does not say it was stopped" ;;
