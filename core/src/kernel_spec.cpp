@@ -1,0 +1,26 @@
+// Kernel specs (kernel_spec.hpp): a registered name, or plugin:PATH.
+#include "ricochet/kernel_spec.hpp"
+
+#include <fmt/format.h>
+
+#include "ricochet/plugin_loader.hpp"
+#include "shown_text.hpp"
+
+namespace ricochet {
+
+std::optional<KernelId> resolve_kernel(std::string_view spec, std::string* error) {
+    if (spec.starts_with(k_plugin_spec_prefix)) {
+        const std::string_view path = spec.substr(k_plugin_spec_prefix.size());
+        if (path.empty()) {
+            if (error != nullptr) *error = fmt::format("'{}' names no file (plugin:PATH)", spec);
+            return std::nullopt;
+        }
+        return load_plugin(std::filesystem::path(path), error);
+    }
+    if (const auto k = parse_kernel(spec)) return k;
+    if (error != nullptr)
+        *error = fmt::format("unknown kernel '{}' ({}, or plugin:PATH)", detail::shown(spec), kernel_names());
+    return std::nullopt;
+}
+
+}  // namespace ricochet
