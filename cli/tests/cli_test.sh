@@ -149,7 +149,7 @@ case "$case" in
                      first_line err "ricochet: error: --frames: 'abc' is not a frame range (expected A:B, integers with 0 <= A <= B)"
                      [ ! -e "$dir/x.svg" ] || fail "render wrote the picture" ;;
   run-unknown-kernel) run 2 run "$log" --kernel nope
-                     first_line err "ricochet: error: unknown kernel 'nope' (lecture-float, lecture-double, robust, exact)" ;;
+                     first_line err "ricochet: error: unknown kernel 'nope' (lecture-float, lecture-double, robust, exact, or plugin:PATH)" ;;
   replay-unreadable) mkdir "$dir/logs"; cp "$log" "$dir/logs/a.scene"; printf 'ricochet 1\nbogus 1\n' >"$dir/logs/b.scene"
                      run 2 replay "$dir/logs"
                      has out "FAIL $dir/logs/b.scene: unreadable log"; has out "1 passed, 1 failed"
