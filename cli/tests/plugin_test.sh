@@ -154,12 +154,17 @@ case $case in
                   # leave room whatever order the fuzzer's coverage takes (its counts vary by an edge from run to run).
                   need_fuzzer sweep
                   run 1 fuzz --kernel "plugin:$crash" --target sweep --runs 2000 --seed 1 --cache-dir "$dir/cache" \
-                    --replay-dir "$dir/replays" -- -len_control=0 -max_len=64
-                  has_part out "sweep failure: $(named test-crash crash) crashed: SIGSEGV in its sweep function, called with "
-                  has_part out "ricochet fuzz: kernel test-crash (plug-in $crash)"
+                    --replay-dir "$dir/replays" --json -- -len_control=0 -max_len=64
+                  has_part err "sweep failure: $(named test-crash crash) crashed: SIGSEGV in its sweep function, called with "
+                  has_part err "ricochet fuzz: kernel test-crash (plug-in $crash)"
                   set -- "$dir"/replays/fuzz-sweep-*.scene
                   [ "$#" = 1 ] && [ -f "$1" ] || fail "expected one scene log in $dir/replays, found: $*"
-                  has_part out "scene log: $1  (ricochet replay --plugin $crash $1)"
+                  has_part err "scene log: $1  (ricochet replay --plugin $crash $1)"
+                  # The document names the kernel by its own name and the plug-in by its file (docs/cli-json.md).
+                  python3 -c 'import json, sys
+d = json.load(open(sys.argv[1]))
+sys.exit(0 if d["kernel"] == "test-crash" and d["plugin"] == sys.argv[2] and d["new_failures"] == 1 else 1)' \
+                    "$dir/out" "$crash" || fail "the JSON document does not name the plug-in" 
                   grep -qx 'kernel test-crash' "$1" || fail "the log does not name the plug-in's kernel"
                   run 3 replay --plugin "$crash" "$1"
                   has_part err "crashed: SIGSEGV in its sweep function" ;;
