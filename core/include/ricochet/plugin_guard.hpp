@@ -50,17 +50,6 @@ void stage_plugin_input(PluginStage stage);
 /// Nothing staged: a fault reports the plug-in and the call only.
 void clear_plugin_stage();
 
-/// Stages a PluginStage for its own lifetime.
-class PluginStageScope {
-public:
-    /// Stages stage.
-    explicit PluginStageScope(PluginStage stage) { stage_plugin_input(std::move(stage)); }
-    /// Clears the stage.
-    ~PluginStageScope() { clear_plugin_stage(); }
-    PluginStageScope(const PluginStageScope&) = delete;
-    PluginStageScope& operator=(const PluginStageScope&) = delete;
-};
-
 /// What the guard does after its report and keeping the staged input.
 enum class PluginFaultAction : std::uint8_t {
     exit,   ///< _exit(k_plugin_fault_exit): the default
