@@ -99,6 +99,7 @@ void register_check(CLI::App& app) {
         long fuzz_seed = 1;
         bool no_properties = false;
         std::string replay_dir;
+        std::vector<std::string> plugins;
         bool json = false;
         std::uint64_t max_work = k_default_max_work;
     };
@@ -112,6 +113,7 @@ void register_check(CLI::App& app) {
     sub->add_option("--fuzz-time", opt->fuzz_time, "fuzz for this many seconds instead of a count of inputs (0: none)")
         ->check(number_in(0, 86400, "a number of seconds"));
     add_max_work_option(*sub, opt->max_work);
+    add_plugin_option(*sub, opt->plugins);
     sub->add_flag("--no-properties", opt->no_properties, "skip the property suite");
     sub->add_option("--replay-dir", opt->replay_dir,
                     "the corpus to replay, and where the properties and the fuzz campaign save failures "
@@ -121,6 +123,8 @@ void register_check(CLI::App& app) {
                   "everything else goes to stderr");
     sub->callback([opt] {
         if (opt->fuzz_time < 0) opt->fuzz_time = env_fuzz_seconds();
+        // Plug-ins before the corpus: their failure logs there name their kernels.
+        load_plugins_or_exit(opt->plugins);
         const auto project = find_project(opt->replay_dir);
         if (!project) {
             fmt::print(stderr, "{}\n", no_project_message("check", "run it in a project folder or pass --replay-dir DIR"));

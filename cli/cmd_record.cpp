@@ -41,13 +41,16 @@ std::string without_expect_lines(const std::string& text) {
 void register_record(CLI::App& app) {
     struct Options {
         std::string log;
+        std::vector<std::string> plugins;
         std::uint64_t max_work = k_default_max_work;
     };
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand("record", "run a log and write its expect lines back (atomically)");
     sub->add_option("LOG", opt->log, "scene log")->required();
     add_max_work_option(*sub, opt->max_work);
+    add_plugin_option(*sub, opt->plugins);
     sub->callback([opt] {
+        load_plugins_or_exit(opt->plugins);
         // One read: the text that is parsed is the text that is rewritten.
         auto read = read_log_text(opt->log);
         if (auto* d = std::get_if<Diagnostic>(&read)) {
@@ -64,6 +67,7 @@ void register_record(CLI::App& app) {
         }
         Scene scene = std::get<Scene>(std::move(parsed));
         check_work_or_exit(opt->log, scene, scene.frames, opt->max_work);
+        stage_plugin_run(scene.kernel, fmt::format("recording {}", opt->log));
         // The run is one call into the core, with no frame to stop at; nothing is written yet, so a signal
         // may end the process there and then.
         std::optional<ExitOnSignal> exit_on_signal;

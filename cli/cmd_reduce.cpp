@@ -1,4 +1,4 @@
-// `ricochet reduce LOG [-o OUT] [--kernel K] [--max-tries N] [--max-work N]`: the smallest log found that fails
+// `ricochet reduce LOG [-o OUT] [--kernel K] [--max-tries N] [--max-work N] [--plugin PATH…]`: the smallest log found that fails
 // as LOG does (reduce.hpp), written to OUT atomically or to stdout; LOG itself is never written (-o naming it,
 // through a link or not, is refused). Progress on stderr while it works, then one summary line.
 // SIGINT or SIGTERM stops the reduction between two tries: the smallest failing log found so far is written
@@ -36,6 +36,7 @@ void register_reduce(CLI::App& app) {
         std::string kernel;
         std::uint64_t max_tries = k_reduce_default_tries;
         std::uint64_t max_work = k_default_max_work;
+        std::vector<std::string> plugins;
     };
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand("reduce", "shrink a failing log to a small one that fails the same check");
@@ -48,16 +49,22 @@ void register_reduce(CLI::App& app) {
         "whose checks all hold is refused (exit 2). LOG is never changed.");
     sub->add_option("LOG", opt->log, "the failing scene log")->required();
     sub->add_option("-o,--output", opt->out, "write the reduced log here (atomically; default: stdout)");
-    sub->add_option("--kernel", opt->kernel, "run under this kernel instead of the log's");
+    sub->add_option("--kernel", opt->kernel,
+                    "run under this kernel instead of the log's: a kernel's name, or plugin:PATH (ricochet/plugin.h)");
     sub->add_option("--max-tries", opt->max_tries,
                     fmt::format("stop after N candidate runs (default {})", k_reduce_default_tries))
         ->option_text("N")
         ->check(number_in<std::uint64_t>(1, std::numeric_limits<std::uint32_t>::max(), "a number of tries"));
     add_max_work_option(*sub, opt->max_work);
+    add_plugin_option(*sub, opt->plugins);
     sub->callback([opt] {
-        const Scene scene = load_scene_or_exit(opt->log);
+        // Plug-ins and the kernel first: a plug-in loaded by --plugin or --kernel plugin:PATH makes its name known
+        // to the log.
+        load_plugins_or_exit(opt->plugins);
         ReduceOptions options;
         if (!opt->kernel.empty()) options.kernel = kernel_or_exit(opt->kernel);
+        const Scene scene = load_scene_or_exit(opt->log);
+        stage_plugin_run(options.kernel.value_or(scene.kernel), fmt::format("reducing {}", opt->log));
         options.max_tries = opt->max_tries;
         // Never the input: -o naming LOG, by another path or through a link, would replace what is reduced.
         std::error_code ec;

@@ -54,11 +54,14 @@ void register_render(CLI::App& app) {
         ->check(number_in(std::uint32_t{1}, std::uint32_t{10000000}, "a point count"));
     sub->add_option("--width", opt->width, "picture width in pixels (default 800)")
         ->check(number_in(100, 20000, "a width in pixels"));
-    sub->add_option("--kernel", opt->kernel, "override the log's kernel");
+    sub->add_option("--kernel", opt->kernel, "override the log's kernel: a kernel's name, or plugin:PATH (ricochet/plugin.h)");
     add_max_work_option(*sub, opt->max_work);
     sub->callback([opt] {
+        // The kernel first: a plug-in loaded by --kernel plugin:PATH makes its name known to the log.
+        const std::optional<KernelId> chosen = opt->kernel.empty() ? std::nullopt : std::optional(kernel_or_exit(opt->kernel));
         Scene scene = load_scene_or_exit(opt->log);
-        if (!opt->kernel.empty()) scene.kernel = kernel_or_exit(opt->kernel);
+        if (chosen) scene.kernel = *chosen;
+        stage_plugin_run(scene.kernel, fmt::format("rendering {}", opt->log));
         RenderOptions r;
         r.view = opt->view == "all" ? RenderView::all : RenderView::failure;
         r.max_balls = opt->max_balls;

@@ -17,6 +17,7 @@ namespace ricochet::cli {
 void register_replay(CLI::App& app) {
     struct Options {
         std::vector<std::string> paths;
+        std::vector<std::string> plugins;
         bool hashes = false;
         bool json = false;
         std::uint64_t max_work = k_default_max_work;
@@ -30,7 +31,9 @@ void register_replay(CLI::App& app) {
                   "print one JSON document (docs/cli-json.md, schema ricochet-replay/1) on stdout instead; "
                   "the per-log lines go to stderr");
     add_max_work_option(*sub, opt->max_work);
+    add_plugin_option(*sub, opt->plugins);
     sub->callback([opt] {
+        load_plugins_or_exit(opt->plugins);
         std::vector<std::string> paths = opt->paths;
         if (paths.empty()) {
             // The project's corpus, never the tree this binary was built from.

@@ -2,6 +2,7 @@
 // them, stepped with the default WorldOptions (the broad phase on, one thread). SIGINT or SIGTERM stops it
 // after a whole frame: every event up to it is printed, then "stopped" on stderr, exit 128 + the signal.
 #include <cstdio>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -24,13 +25,16 @@ void register_run(CLI::App& app) {
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand("run", "print a log's run: state/hit/overlap lines, frame 0 = initial state");
     sub->add_option("LOG", opt->log, "scene log")->required();
-    sub->add_option("--kernel", opt->kernel, "override the log's kernel");
+    sub->add_option("--kernel", opt->kernel, "override the log's kernel: a kernel's name, or plugin:PATH (ricochet/plugin.h)");
     sub->add_option("--frames", opt->frames, "override the log's frame count")
         ->check(number_in(std::int64_t{0}, k_max_frames, "a frame count"));
     add_max_work_option(*sub, opt->max_work);
     sub->callback([opt] {
+        // The kernel first: a plug-in loaded by --kernel plugin:PATH makes its name known to the log.
+        const std::optional<KernelId> chosen = opt->kernel.empty() ? std::nullopt : std::optional(kernel_or_exit(opt->kernel));
         Scene scene = load_scene_or_exit(opt->log);
-        const KernelId k = opt->kernel.empty() ? scene.kernel : kernel_or_exit(opt->kernel);
+        const KernelId k = chosen.value_or(scene.kernel);
+        stage_plugin_run(k, fmt::format("running {}", opt->log));
         const std::int64_t frames = opt->frames >= 0 ? opt->frames : scene.frames;
         check_work_or_exit(opt->log, scene, frames, opt->max_work);
         World world(scene, k);

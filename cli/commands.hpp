@@ -59,8 +59,17 @@ void write_file_holding_signals(const std::string& path, std::string_view text, 
                                 std::optional<StopOnSignal>& stop);
 /// Reads a log, or prints its diagnostic on stderr and throws Exit{2}.
 Scene load_scene_or_exit(const std::filesystem::path& path);
-/// The kernel called name, or a diagnostic on stderr and Exit{2}.
-KernelId kernel_or_exit(const std::string& name);
+/// The kernel a --kernel spec names (a registered name, or plugin:PATH, loaded: kernel_spec.hpp), or a
+/// diagnostic on stderr and Exit{2}.
+KernelId kernel_or_exit(const std::string& spec);
+/// Adds `--plugin PATH` (repeatable) to command: plug-ins to load before any log is read, so that logs naming
+/// their kernels read (a log never loads one).
+void add_plugin_option(CLI::App& command, std::vector<std::string>& plugins);
+/// Loads each plug-in file (plugin_loader.hpp), or prints why one cannot be and throws Exit{2}.
+void load_plugins_or_exit(const std::vector<std::string>& plugins);
+/// When k is a plug-in kernel, tells its guard what is being stepped (plugin_guard.hpp): "DOING" (a log on
+/// disk, so nothing more to keep), for a crash's or hang's report.
+void stage_plugin_run(KernelId k, std::string doing);
 /// One log's verdict in a replay.
 struct LogVerdict {
     std::string path;                   ///< as given or found under a folder

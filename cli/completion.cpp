@@ -1,6 +1,7 @@
 // Shell completion. `ricochet completion bash|zsh` prints a script for the shell; the script asks the
 // program itself what may follow the words typed so far, so candidates are always this build's commands,
-// options and values (bench's subcommands only where bench/ is built, every registered kernel):
+// options and values (bench's subcommands only where bench/ is built, every registered kernel and plugin:, a file
+// after --plugin):
 //
 //   ricochet __complete -- WORD...    WORD...: the words after "ricochet", the last one being completed
 //
@@ -21,6 +22,7 @@
 #include "commands.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/kernel_id.hpp"
+#include "ricochet/kernel_spec.hpp"
 #include "ricochet_fuzz/campaign.hpp"
 
 namespace ricochet::cli {
@@ -72,6 +74,10 @@ Reply value_of(const CLI::Option* opt) {
     const std::string name = l.empty() ? opt->get_name(true) : l.front();
     if (name == "kernel") {
         for (const KernelId k : registered_kernels()) r.words.emplace_back(kernel_name(k));
+        // A plug-in's file follows it (kernel_spec.hpp).
+        r.words.emplace_back(k_plugin_spec_prefix);
+    } else if (name == "plugin") {
+        r.mode = "files";
     } else if (name == "target") {
         for (const std::string_view t : fuzz::k_campaign_targets) r.words.emplace_back(t);
     } else if (auto set = value_set(opt); !set.empty()) {

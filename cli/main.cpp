@@ -2,7 +2,8 @@
 //
 // Exit status: 0 success; 1 a check or expectation failed, a run stopped, or output could not be
 // written; 2 bad usage or input (an unknown command or option, a bad value, a malformed or missing log,
-// a log over the work bound, no project folder); 128 + the signal when SIGINT or SIGTERM stopped run, replay,
+// a log over the work bound, no project folder, a plug-in that cannot be loaded); 3 a plug-in kernel crashed, hung
+// or broke ricochet/plugin.h (plugin_guard.hpp); 128 + the signal when SIGINT or SIGTERM stopped run, replay,
 // record, reduce, check or fuzz (ricochet_cli/stop_signal.hpp).
 #include <cstdio>
 #include <string>

@@ -1,19 +1,20 @@
 # Install rules and the package config. `cmake --install BUILD --prefix P` gives
-#   P/include/ricochet/*.hpp              the public headers
+#   P/include/ricochet/*.hpp, plugin.h    the public headers, and the plug-in interface (plain C)
 #   P/lib/libricochet_core.a              the core (static unless BUILD_SHARED_LIBS)
 #   P/bin/ricochet                        the command
 #   P/lib/cmake/ricochet/                 ricochetConfig.cmake and its version: find_package(ricochet 0.2)
-# and find_package gives ricochet::core with its include folder, C++20 and the floating-point flags.
+# and find_package gives ricochet::core with its include folder, C++20 and the floating-point flags, and
+# ricochet::plugin, the include folder alone, for a plug-in kernel (ricochet/plugin.h) in C or C++.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 set(_ricochet_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/ricochet)
 
-install(TARGETS ricochet_core EXPORT ricochetTargets
+install(TARGETS ricochet_core ricochet_plugin_interface EXPORT ricochetTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/ricochet DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-        FILES_MATCHING PATTERN "*.hpp")
+        FILES_MATCHING PATTERN "*.hpp" PATTERN "plugin.h")
 install(TARGETS ricochet RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 # A static core's private xxhash is named in the export as $<LINK_ONLY:PkgConfig::XXHASH>: the config

@@ -11,6 +11,9 @@
 
 #include "ricochet/checks.hpp"
 #include "ricochet/failure_log.hpp"
+#include "ricochet/kernel_spec.hpp"
+#include "ricochet/plugin_guard.hpp"
+#include "ricochet/plugin_loader.hpp"
 #include "ricochet/scene_log.hpp"
 #include "ricochet_peers/peers.hpp"
 
@@ -22,16 +25,15 @@ KernelId kernel_under_test() {
         peers::register_peer_kernels();
         const char* name = std::getenv(k_kernel_env);
         if (name == nullptr || *name == '\0') return KernelId::robust;
-        const auto parsed = parse_kernel(name);
-        if (const auto absent = parsed ? std::nullopt : absent_kernel_message(name)) {
-            fmt::print(stderr, "ricochet fuzz: error: {}={}: {}\n", k_kernel_env, name, *absent);
-            std::exit(2);
-        }
+        std::string error;
+        const auto parsed = resolve_kernel(name, &error);
         if (!parsed) {
-            fmt::print(stderr, "ricochet fuzz: error: {}={} is not a kernel ({})\n", k_kernel_env, name,
-                       kernel_names());
+            fmt::print(stderr, "ricochet fuzz: error: {}: {}\n", k_kernel_env, error);
             std::exit(2);
         }
+        // A plug-in's crash goes on to libFuzzer's handler after the guard's report, so that libFuzzer keeps
+        // the input as its artifact (plugin_guard.hpp).
+        if (plugin_info(*parsed) != nullptr) set_plugin_fault_action(PluginFaultAction::chain);
         return *parsed;
     }();
     return k;
@@ -181,9 +183,32 @@ Rect ByteReader::rect() {
     return r;
 }
 
+/// Before a plug-in kernel steps scene: its guard is told (plugin_guard.hpp), and where the campaign asks for the
+/// scene (RICOCHET_FUZZ_SCENE_OUT, when it converts an artifact), the scene is kept there should the plug-in
+/// crash or hang on it. Fuzzing, libFuzzer keeps the input itself.
+void stage_plugin_case(std::string_view target, const Scene& scene, std::span<const Check> checks) {
+    const KernelId k = kernel_under_test();
+    if (plugin_info(k) == nullptr) return;
+    const char* out = std::getenv(k_scene_out_env);
+    if (out == nullptr || *out == '\0') {
+        static const bool staged = [&] {
+            stage_plugin_input({fmt::format("running fuzz target {}", target), {}, {}});
+            return true;
+        }();
+        (void)staged;
+        return;
+    }
+    const char* sha = std::getenv(k_sha1_env);
+    Scene with_checks = scene;
+    with_checks.checks.assign(checks.begin(), checks.end());
+    const Scene log = plugin_case_log(with_checks, k, fmt::format("fuzz {} {}", target, sha != nullptr && *sha != '\0' ? sha : "unknown"));
+    stage_plugin_input({fmt::format("running fuzz target {}", target), write_scene_log(log), out});
+}
+
 void check_scene(std::string_view target, const Scene& scene, std::span<const Check> checks) {
     CheckOptions options;
     options.keep_events = false;
+    stage_plugin_case(target, scene, checks);
     const CheckedRun run = run_checked(scene, kernel_under_test(), scene.frames, checks, options);
     if (run.failure) fail(target, scene, *run.failure);
 }

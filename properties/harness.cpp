@@ -27,6 +27,9 @@
 #include "ricochet/checks.hpp"
 #include "ricochet/failure_log.hpp"
 #include "ricochet/reduce.hpp"
+#include "ricochet/kernel_spec.hpp"
+#include "ricochet/plugin_guard.hpp"
+#include "ricochet/plugin_loader.hpp"
 #include "ricochet/replay.hpp"
 #include "ricochet/scene_log.hpp"
 #include "ricochet_peers/peers.hpp"
@@ -79,6 +82,15 @@ bool names_property(const Scene& s, std::string_view name) {
     });
 }
 
+/// Before case s of p runs under kernel k: a plug-in kernel's guard is told (plugin_guard.hpp), to keep the case
+/// in replay_dir() as NAME-ID.scene should the plug-in crash or hang on it.
+void stage_case(const Property& p, KernelId k, const Scene& s, std::uint64_t seed) {
+    if (plugin_info(k) == nullptr) return;
+    const Scene log = plugin_case_log(s, k, fmt::format("property {} seed {}", p.name, seed));
+    stage_plugin_input({fmt::format("running property {} (seed {})", p.name, seed), write_scene_log(log),
+                        replay_dir() / fmt::format("{}-{}.scene", p.name, scene_content_id(log))});
+}
+
 /// Runs the statement, turning an unexpected exception into a failure of the property's check.
 std::optional<Failure> judge(const Property& p, KernelId k, const Scene& s) {
     try {
@@ -111,6 +123,7 @@ int replay_saved(const Property& p, KernelId k) {
         // The log's case is replayed against the kernel under test: a case that once broke some kernel
         // stays a regression test for every kernel the property is claimed for.
         s.kernel = k;
+        if (plugin_info(k) != nullptr) stage_plugin_input({fmt::format("replaying {} for property {}", path.string(), p.name), {}, {}});
         if (const auto f = judge(p, k, s))
             ADD_FAILURE() << fmt::format("saved log {} breaks {} under {} again: {}: {}", path.string(), p.name,
                                          kernel_name(k), check_name(f->check), f->message);
@@ -135,6 +148,8 @@ std::string save_failure(const Property& p, KernelId k, std::uint64_t seed, cons
     scene.expect_states.clear();
     scene.expect_failure.reset();
     scene.found.reset();
+    // A plug-in that crashes while the case is reduced keeps the case as it was shrunk.
+    stage_case(p, k, scene, seed);
     ReduceOptions options;
     options.max_tries = k_reduce_tries;
     const auto result = reduce_log(scene, options);
@@ -177,13 +192,11 @@ std::vector<KernelId> kernels_under_test() {
         const std::string_view name = rest.substr(0, comma);
         if (name == "all") {
             out.assign(k_all_kernels.begin(), k_all_kernels.end());
-        } else if (const auto k = parse_kernel(name)) {
+        } else if (std::string error; const auto k = resolve_kernel(name, &error)) {
             out.push_back(*k);
-        } else if (const auto absent = absent_kernel_message(name)) {
-            fmt::print(stderr, "RICOCHET_KERNEL: error: {}\n", *absent);
-            std::exit(2);
         } else {
-            fmt::print(stderr, "RICOCHET_KERNEL: error: no kernel called '{}' ({}, all)\n", name, kernel_names());
+            // A name or plugin:PATH (kernel_spec.hpp), or all.
+            fmt::print(stderr, "RICOCHET_KERNEL: error: {}; all names the built-in kernels\n", error);
             std::exit(2);
         }
         rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
@@ -259,6 +272,7 @@ void run_property(const Property& p, KernelId k) {
     const auto property = [&] {
         Scene s = *p.gen;
         s.kernel = k;
+        stage_case(p, k, s, params.seed);
         std::set<std::string> labels;
         g_case_tags = &labels;
         auto f = judge(p, k, s);

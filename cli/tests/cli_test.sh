@@ -162,7 +162,7 @@ case "$case" in
                      first_line err "ricochet: error: --frames: 'abc' is not a frame range (expected A:B, integers with 0 <= A <= B)"
                      [ ! -e "$dir/x.svg" ] || fail "render wrote the picture" ;;
   run-unknown-kernel) run 2 run "$log" --kernel nope
-                     first_line err "ricochet: error: unknown kernel 'nope' ($kernels)" ;;
+                     first_line err "ricochet: error: unknown kernel 'nope' ($kernels, or plugin:PATH)" ;;
   # The peers as kernels, where built: run and render take them, and a log naming one replays.
   peer-kernels)      [ -n "${RICOCHET_PEER_KERNELS:-}" ] || { echo "skip $case: no peer kernel in this build"; exit 77; }
                      for k in $RICOCHET_PEER_KERNELS; do

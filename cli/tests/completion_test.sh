@@ -31,11 +31,12 @@ case "$case" in
   options)         offers 'words --help --hashes' replay --h
                    offers 'words -o' render x.scene -o
                    offers 'files' run -- --k ;;
-  kernel-values)   offers "words $kernels" run --kernel ""
+  kernel-values)   offers "words $kernels plugin:" run --kernel ""
                    offers 'words robust' run x.scene --kernel ro
                    offers 'words robust' reduce x.scene --kernel ro
                    # bash splits --kernel=ro at '='; zsh and fish keep it one word.
-                   offers "words $kernels" run --kernel = ""
+                   offers "words $kernels plugin:" run --kernel = ""
+                   offers 'words plugin:' fuzz --kernel p
                    offers 'words lecture-float lecture-double' run --kernel = l
                    offers 'words --kernel=robust' run --kernel=r
                    offers 'words static sweep scene' fuzz --target s ;;
@@ -48,6 +49,7 @@ case "$case" in
                    offers 'files' render x.scene -o ""
                    offers 'files' reduce x.scene -o ""
                    offers 'dirs' fuzz --cache-dir ""
+                   offers 'files' replay --plugin ""
                    offers 'dirs' check --replay-dir = ""
                    offers 'words' run --frames ""
                    offers 'words' run x.scene --frames 3 "" ;;
@@ -80,7 +82,8 @@ EOF
                    ricochet=$ricochet bash "$dir/try.bash" "$dir/ricochet.bash" "$dir/logs" >"$dir/out" 2>"$dir/err" ||
                      fail "the script failed"
                    # shellcheck disable=SC2086 # $kernels: one word per kernel
-                   printf '%s\n' "[rep]" replay "[kernel]" $kernels "[kernel=]" \
+                   # shellcheck disable=SC2086 # $kernels: one word per kernel
+                   printf '%s\n' "[rep]" replay "[kernel]" $kernels plugin: "[kernel=]" \
                      lecture-float lecture-double "[file]" a.scene "[dir]" sub "[view]" all >"$dir/want"
                    cmp -s "$dir/out" "$dir/want" || { echo "--- wanted:"; cat "$dir/want"; fail "bash completed otherwise"; }  ;;
   zsh)             command -v zsh >/dev/null || { echo "skip $case: no zsh"; exit 77; }

@@ -58,4 +58,17 @@ FailureLog make_failure_log(const Scene& scene, KernelId kernel, std::string_vie
     return log;
 }
 
+Scene plugin_case_log(const Scene& scene, KernelId kernel, std::string_view provenance) {
+    Scene s = scene;
+    s.kernel = kernel;
+    s.provenance = {std::string(provenance)};
+    // Replay steps what the checks step: every check, so that it reaches the call that crashed.
+    if (s.checks.empty()) s.checks.assign(k_all_checks.begin(), k_all_checks.end());
+    s.found.reset();
+    s.expect_hash.reset();
+    s.expect_states.clear();
+    s.expect_failure.reset();
+    return s;
+}
+
 }  // namespace ricochet

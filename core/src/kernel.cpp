@@ -100,6 +100,7 @@ std::string_view miss_name(Miss m) {
         case Miss::past_p1: return "past-p1";
         case Miss::degenerate: return "degenerate";
         case Miss::leaving: return "leaving";
+        case Miss::no_reason: return "miss";
     }
     return "?";
 }

@@ -3,15 +3,12 @@
 // These kernels are the baseline that the harness must expose: do not fix them.
 #pragma once
 
-#include <cstdint>
-#include <limits>
 #include <span>
 #include <vector>
 
-#include "path.hpp"
+#include "naive_frame.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/line.hpp"
-#include "ricochet/step_trace.hpp"
 #include "ricochet/vec2.hpp"
 
 namespace ricochet {
@@ -67,78 +64,21 @@ struct LectureKernel {
 
     static Vec2 reflect(Vec2 v, const Wall& w) { return vec_cast<double>(reflect_real(vec_cast<Real>(v), w)); }
 
-    /// One frame among many walls, the naive way: the earliest t_i over every wall but the one just
-    /// bounced off, bounce, repeat for the rest of the frame. memory is not read or written: the lecture
-    /// remembers nothing between frames (that is what lets it tunnel), and this baseline is not fixed.
+    /// One frame among many walls, the naive way (naive_frame.hpp): the earliest t_i over every wall but the
+    /// one just bounced off, bounce, repeat for the rest of the frame, all in Real. memory is not read or
+    /// written: the lecture remembers nothing between frames (that is what lets it tunnel), and this baseline
+    /// is not fixed.
     static FrameStatus step_ball(Ball& ball, BallMemory& /*memory*/, std::span<const Wall> walls,
                                  std::vector<HitEvent>& hits, StepScratch& scratch, const WallIndex* index) {
-        V pos = vec_cast<Real>(ball.pos), vel = vec_cast<Real>(ball.vel);
-        Real rest = 1, now = 0;
-        std::uint32_t last = std::numeric_limits<std::uint32_t>::max();
-        FrameStatus status = FrameStatus::ok;
-        for (int bounce = 0;; ++bounce) {
-            const V d = vel * rest;
-            const Vec2 a = vec_cast<double>(pos);
-            const Vec2 b = vec_cast<double>(pos + d);
-            bool found = false;
-            std::uint32_t best = 0;
-            Leg hit{};
-            TracedLeg* traced = nullptr;
-            if (StepTrace* t = scratch.trace) {
-                // The leg as the kernel's own numbers: pos and pos + d in Real, widened to double exactly.
-                const auto first = static_cast<std::uint32_t>(t->decisions.size());
-                const std::optional<std::uint32_t> skipped = last == std::numeric_limits<std::uint32_t>::max()
-                                                                 ? std::nullopt
-                                                                 : std::optional<std::uint32_t>(last);
-                traced = &t->legs.emplace_back(TracedLeg{a, b, false, 0, 0, std::nullopt, first, 0, skipped});
-                traced->vel = vec_cast<double>(vel);
-            }
-            for (std::uint32_t i : detail::candidates(walls, index, a, b, scratch.candidates, scratch.all_walls)) {
-                if (i == last) continue;
-                const Leg r = sweep_leg(pos, d, vec_cast<Real>(walls[i].p0), vec_cast<Real>(walls[i].p1));
-                if (traced != nullptr) {
-                    scratch.trace->decisions.push_back({i, r.miss});
-                    ++traced->decision_count;
-                }
-                if (r.miss != Miss::none) continue;
-                if (!found || r.t < hit.t || (r.t == hit.t && i < best)) {
-                    found = true;
-                    best = i;
-                    hit = r;
-                }
-            }
-            if (!found) {
-                pos = pos + d;
-                break;
-            }
-            if (traced != nullptr) {
-                traced->hit = best;
-                traced->hit_t = static_cast<double>(hit.t);
-            }
-            if (bounce == k_max_bounces) {
-                status = FrameStatus::bounce_limit;
-                break;
-            }
-            if (scratch.trace != nullptr) ++scratch.trace->reflections;
-            now = now + rest * hit.t;
-            hits.push_back({best, static_cast<double>(now), vec_cast<double>(hit.point)});
-            // Spend the rest of the frame, (1 − t_i)·v', moving on from B_i.
-            vel = reflect_real(vel, walls[best]);
-            pos = hit.point;
-            rest = rest * (Real(1) - hit.t);
-            last = best;
-        }
-        ball = {vec_cast<double>(pos), vec_cast<double>(vel)};
-        return status;
+        return detail::step_naive_frame<Real>(
+            ball, walls, hits, scratch, index,
+            [](V pos, V d, const Wall& w) { return sweep_leg(pos, d, vec_cast<Real>(w.p0), vec_cast<Real>(w.p1)); },
+            [](V v, const Wall& w) { return reflect_real(v, w); });
     }
 
 private:
     /// The animated point's answer against one wall, in Real.
-    struct Leg {
-        Miss miss;
-        Real t;
-        V point;
-    };
+    using Leg = detail::NaiveLeg<Real>;
 
     /// B(t) = Bs + v·t against P0 → P1, the five tests in the lecture's order.
     static Leg sweep_leg(V bs, V v, V p0, V p1) {

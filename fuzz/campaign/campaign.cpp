@@ -22,7 +22,12 @@ namespace {
 std::string json_summary(const Plan& plan, const CampaignOptions& opt, double wall, int code, bool stopped) {
     cli::JsonWriter json;
     json.begin_object().member("schema", fmt::format("ricochet-fuzz/{}", cli::k_json_schema_version));
-    json.member("kernel", opt.kernel).key("runs_per_worker");
+    json.member("kernel", plan.kernel_name).key("plugin");
+    if (plan.plugin.empty())
+        json.null();
+    else
+        json.value(plan.plugin.string());
+    json.key("runs_per_worker");
     if (opt.runs > 0)
         json.value(opt.runs);
     else
@@ -71,8 +76,9 @@ int run_campaign(const CampaignOptions& opt) {
     // Degenerate: bad usage or missing binaries (make_plan said which).
     if (!plan) return 2;
     const std::string budget = opt.runs > 0 ? fmt::format("{} runs per worker", opt.runs) : fmt::format("{} s", opt.time);
-    fmt::print("ricochet fuzz: kernel {}, {}, {} target(s), {} worker(s)\n  binaries {}\n  corpus   {}\n  logs to  {}\n",
-               opt.kernel, budget, plan->runs.size(), plan->jobs, plan->bin_dir.string(), plan->cache.string(),
+    const std::string plugin = plan->plugin.empty() ? std::string() : fmt::format(" (plug-in {})", plan->plugin.string());
+    fmt::print("ricochet fuzz: kernel {}{}, {}, {} target(s), {} worker(s)\n  binaries {}\n  corpus   {}\n  logs to  {}\n",
+               plan->kernel_name, plugin, budget, plan->runs.size(), plan->jobs, plan->bin_dir.string(), plan->cache.string(),
                plan->replay_dir.string());
     // Seen as it starts, also when stdout is a file (a caller waiting for the campaign to be under way).
     std::fflush(stdout);
@@ -84,7 +90,7 @@ int run_campaign(const CampaignOptions& opt) {
     }
     // Merge: keep only the inputs that add coverage, for the next campaign.
     if (!opt.no_merge && !cli::stop_requested())
-        for (TargetRun& r : plan->runs) merge_corpus(r, plan->cache, opt.kernel);
+        for (TargetRun& r : plan->runs) merge_corpus(r, plan->cache, plan->kernel_env);
     // Everything worth keeping has left this campaign's own folder (artifacts to the cache, logs to the
     // replay folder).
     std::error_code ec;
@@ -99,7 +105,7 @@ int run_campaign(const CampaignOptions& opt) {
         for (const std::string& stop : r.stops) fmt::print("stopped early: {}\n", stop);
     const bool stopped = cli::stop_requested();
     const int code = stopped ? cli::stop_exit_code() : any_new ? 1 : 0;
-    fmt::print("kernel {}, {:.0f} s, exec/s per worker; {}{}\n", opt.kernel, wall, any_new ? "NEW FAILURES" : "no new failures",
+    fmt::print("kernel {}, {:.0f} s, exec/s per worker; {}{}\n", plan->kernel_name, wall, any_new ? "NEW FAILURES" : "no new failures",
                stopped ? fmt::format("; stopped by {} (exit {})", cli::stop_signal_name(), code) : any_new ? " (exit 1)" : "");
     if (json_out.on()) {
         json_out.restore();

@@ -40,7 +40,7 @@ void register_fuzz(CLI::App& app) {
     auto opt = std::make_shared<CampaignOptions>();
     CLI::App* sub = app.add_subcommand("fuzz", "run a libFuzzer campaign; failures become scene logs");
     sub->add_option("--target", opt->targets, "target(s): parser, static, sweep, scene (default: all built)");
-    sub->add_option("--kernel", opt->kernel, "kernel under test (default robust)");
+    sub->add_option("--kernel", opt->kernel, "kernel under test: a kernel's name, or plugin:PATH (ricochet/plugin.h; default robust)");
     sub->add_option("--time", opt->time, "seconds to fuzz (default 60; 1 to 604800, a week)")
         ->check(number_in(1.0, k_max_time_s, "a number of seconds"));
     sub->add_option("--runs", opt->runs, "inputs per worker instead of a time limit (with --seed: a reproducible campaign)")

@@ -26,6 +26,7 @@
 #include "process.hpp"
 #include "run_dir.hpp"
 #include "ricochet/checks.hpp"
+#include "ricochet/plugin_guard.hpp"
 #include "ricochet/scene_log.hpp"
 #include "ricochet_cli/stop_signal.hpp"
 #include "sha1.hpp"
@@ -43,12 +44,15 @@ constexpr int k_minimize_runs = 20000;
 /// that it minimizes to the same input whatever the load).
 constexpr int k_minimize_seconds = 20;
 
-/// The failure's signature (the target's failure line without its frame, or the sanitizer's summary)
-/// and the line to print; both empty if the output has neither.
+/// The failure's signature (the target's failure line without its frame, a plug-in guard's report without the
+/// call's numbers, or the sanitizer's summary) and the line to print; both empty if the output has none.
 std::pair<std::string, std::string> signature_of(const std::string& out) {
     std::string signature, first_line;
     std::istringstream lines(out);
     for (std::string line; std::getline(lines, line);) {
+        // The plug-in crashed, hung or broke plugin.h: its report names it and what it was doing, before
+        // whatever the handler after it (libFuzzer's, a sanitizer's) prints.
+        if (line.starts_with(k_plugin_fault_prefix)) return {line.substr(0, line.find(", called with")), line};
         if (line.starts_with(k_failure_tag)) {
             const auto k = line.find(" check=");
             const auto f = line.find(" frame=");
@@ -82,6 +86,42 @@ std::string reduced_log(const std::string& text, const fs::path& path) {
     return reduced->log.text();
 }
 
+/// reduced_log for a plug-in's failure: the reduction runs a plug-in on scenes no worker has run, and one it
+/// crashes or hangs on ends the process it runs in (plugin_guard.hpp), so it runs apart, as `ricochet reduce
+/// --plugin PATH` (this program, /proc/self/exe). If that process ends otherwise than with a reduced log, the
+/// text is saved as the target wrote it.
+std::string reduced_log_apart(const std::string& text, const TargetRun& r, const Plan& plan, const fs::path& scratch) {
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) {
+        fmt::print("    not reduced: cannot find this program to reduce in a process of its own ({})\n", ec.message());
+        return text;
+    }
+    const fs::path in = r.work / "to-reduce.scene", out = r.work / "reduced.scene";
+    std::string error;
+    fs::remove(out, ec);
+    if (!write_file_atomically(in, text, &error)) {
+        fmt::print("    not reduced: {}\n", error);
+        return text;
+    }
+    const auto [rc, output] = run_capture({self.string(), "reduce", in.string(), "-o", out.string(), "--plugin",
+                                           plan.plugin.string()},
+                                          {}, scratch);
+    const std::string reduced = rc == 0 ? read_all(out) : std::string();
+    if (reduced.empty()) {
+        fmt::print("    not reduced: `ricochet reduce --plugin {}` ended with exit {}{}\n", plan.plugin.string(), rc,
+                   rc == k_plugin_fault_exit ? " (the plug-in crashed or hung on a smaller scene)" : "");
+        return text;
+    }
+    // Its summary line, "ricochet reduce: BEFORE → AFTER; …", says what it did.
+    constexpr std::string_view summary = "ricochet reduce: ";
+    if (const auto at = output.rfind(summary); at != std::string::npos) {
+        const auto from = at + summary.size();
+        fmt::print("    reduced:      {}\n", output.substr(from, output.find('\n', from) - from));
+    }
+    return reduced;
+}
+
 /// Minimizes one failure, converts it to a scene log, saves it unless it was saved before.
 void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, const std::string& artifact,
                     std::set<std::string>& signatures) {
@@ -100,7 +140,7 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, 
     if (opt.runs == 0) argv.push_back(fmt::format("-max_total_time={}", k_minimize_seconds));
     if (opt.seed > 0) argv.push_back(fmt::format("-seed={}", opt.seed));
     argv.insert(argv.end(), {"-exact_artifact_path=" + minimized.string(), raw.string()});
-    run_capture(argv, {"RICOCHET_KERNEL=" + opt.kernel}, scratch);
+    run_capture(argv, {"RICOCHET_KERNEL=" + plan.kernel_env}, scratch);
     std::error_code ec;
     fs::path input = raw;
     std::string sha = sha1_hex(read_all(raw));
@@ -116,7 +156,7 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, 
     const fs::path scene_out = r.work / "failure.scene";
     fs::remove(scene_out, ec);
     const auto [rc, out] = run_capture({r.bin.string(), input.string()},
-                                       {"RICOCHET_KERNEL=" + opt.kernel, std::string(k_scene_out_env) + "=" + scene_out.string(),
+                                       {"RICOCHET_KERNEL=" + plan.kernel_env, std::string(k_scene_out_env) + "=" + scene_out.string(),
                                         std::string(k_sha1_env) + "=" + sha},
                                        scratch);
     auto [signature, first_line] = signature_of(out);
@@ -132,15 +172,21 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, 
     }
     fmt::print("  {} failure: {}\n    raw artifact: {}\n    minimized:    {} (sha1 {})\n", r.target, first_line, raw.string(),
                input.string(), sha);
+    const bool plugin_fault = signature.starts_with(k_plugin_fault_prefix);
     if (!fs::exists(scene_out)) {
         // The parser's inputs, and sanitizer crashes, have no scene: the input is the reproducer.
-        fmt::print("    no scene log (run `{} {}` to reproduce; add it to fuzz/corpus/{}/ once fixed)\n", r.bin.string(),
-                   input.string(), r.target);
+        const std::string env = plan.kernel_env == "robust" ? std::string() : fmt::format("RICOCHET_KERNEL={} ", plan.kernel_env);
+        fmt::print("    no scene log (run `{}{} {}` to reproduce; add it to fuzz/corpus/{}/ once fixed)\n", env,
+                   r.bin.string(), input.string(), r.target);
         ++r.new_failures;
         return;
     }
-    // The target wrote the failure log (make_failure_log); it is saved reduced, as a failure log of its own.
-    const std::string text = reduced_log(read_all(scene_out), scene_out);
+    // The target wrote the failure log (make_failure_log); it is saved reduced, as a failure log of its own. A
+    // scene a plug-in crashed or hung on is saved as written: running it here would do the same to this process.
+    const std::string written = read_all(scene_out);
+    const std::string text = plugin_fault          ? written
+                             : !plan.plugin.empty() ? reduced_log_apart(written, r, plan, scratch)
+                                                    : reduced_log(written, scene_out);
     std::string error;
     // Under the cache's lock, so that of two campaigns saving the same case one saves it, one finds it known.
     std::optional<SavedLog> saved;
@@ -159,15 +205,23 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, 
         ++r.known_failures;
         return;
     }
-    fmt::print("    scene log: {}  (ricochet replay {})\n", saved->path.string(), saved->path.string());
+    // A plug-in's log names its kernel: replay loads the plug-in first.
+    const std::string plugin = plan.plugin.empty() ? std::string() : fmt::format("--plugin {} ", plan.plugin.string());
+    fmt::print("    scene log: {}  (ricochet replay {}{})\n", saved->path.string(), plugin, saved->path.string());
     r.logs.emplace_back(saved->path.string(), true);
+    ++r.new_failures;
+    // The scene the plug-in crashed or hung on: replaying it here would do the same to this process.
+    if (plugin_fault) {
+        fmt::print("    the plug-in crashed or hung on this scene; replaying the log does the same (exit {})\n",
+                   k_plugin_fault_exit);
+        return;
+    }
     // The contract: replay shows the failure the target saw. A log that passes replay without expecting a
     // failure would guard against nothing: say so.
     const SceneOrDiagnostic parsed = read_scene_log(saved->path);
     if (const Scene* scene = std::get_if<Scene>(&parsed); scene != nullptr && !scene->expect_failure &&
                                                          replay_scene(*scene).passed)
         fmt::print("    note: replay's checks do not see this failure; the log documents the case only\n");
-    ++r.new_failures;
 }
 
 }  // namespace

@@ -11,6 +11,8 @@
 #include "process.hpp"
 #include "run_dir.hpp"
 #include "ricochet/kernel.hpp"
+#include "ricochet/kernel_spec.hpp"
+#include "ricochet/plugin_loader.hpp"
 #include "ricochet_cli/project.hpp"
 #include "ricochet_peers/peers.hpp"
 
@@ -38,14 +40,21 @@ bool known_target(const std::string& t) {
 
 std::optional<Plan> make_plan(const CampaignOptions& opt) {
     peers::register_peer_kernels();
-    const auto kernel = parse_kernel(opt.kernel);
+    // A plug-in is loaded here too: a bad one is refused before any worker starts, and its name is known.
+    std::string kernel_error;
+    const auto kernel = resolve_kernel(opt.kernel, &kernel_error);
     if (!kernel) {
-        fmt::print(stderr, "ricochet fuzz: error: {}\n",
-                   absent_kernel_message(opt.kernel)
-                       .value_or(fmt::format("unknown kernel '{}' ({})", opt.kernel, kernel_names())));
+        fmt::print(stderr, "ricochet fuzz: error: {}\n", kernel_error);
         return std::nullopt;
     }
     Plan plan;
+    plan.kernel_name = kernel_name(*kernel);
+    plan.kernel_env = opt.kernel;
+    if (const PluginInfo* plugin = plugin_info(*kernel)) {
+        // The workers start elsewhere (another folder): they get the file by its absolute path.
+        plan.plugin = plugin->path;
+        plan.kernel_env = std::string(k_plugin_spec_prefix) + plugin->path.string();
+    }
     plan.bin_dir = opt.bin_dir.empty() ? default_bin_dir() : fs::path(opt.bin_dir);
     plan.cache = opt.cache_dir.empty() ? default_cache_dir() : fs::path(opt.cache_dir);
     if (plan.cache.empty()) {
@@ -113,7 +122,7 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
         }
         // The corpus is per kernel: an input that is fine under robust may fail under a lecture kernel and
         // would stop every run at start-up.
-        r.dir = plan.cache / t / opt.kernel;
+        r.dir = plan.cache / t / plan.kernel_name;
         r.corpus = r.dir / "corpus";
         r.kept = r.dir / "artifacts";
         r.work = plan.run_dir / t;
@@ -129,7 +138,7 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
         r.dict = plan.source / "fuzz" / fmt::format("{}.dict", t);
         // Seeds, read only: the project's committed regression inputs (PROJECT/fuzz/corpus/TARGET, else the
         // target's own, committed with the tool), and the project's replays for the parser. A kernel whose
-        // failures are documented (the lecture kernels, the peers) starts from its own corpus only: committed
+        // failures are documented (a lecture baseline, a peer, a plug-in) starts from its own corpus only: committed
         // inputs may be known failures of it.
         if (!kernel_ops(*kernel).failures_documented) {
             const fs::path mine = plan.project.empty() ? fs::path() : plan.project / "fuzz" / "corpus" / t;

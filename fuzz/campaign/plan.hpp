@@ -57,6 +57,9 @@ struct Plan {
     std::filesystem::path replay_dir;  ///< where failure logs are saved (the project's, ricochet_cli/project.hpp)
     std::filesystem::path project;     ///< the project folder (its fuzz/corpus/ seeds); empty if none was found
     std::filesystem::path source;      ///< the tool's source tree, read only (dictionaries, the targets' own inputs)
+    std::string kernel_env;            ///< RICOCHET_KERNEL for every worker: the kernel's name, or plugin:ABSOLUTE-PATH
+    std::string kernel_name;           ///< the kernel's name (a plug-in's own): its corpus folder in the cache
+    std::filesystem::path plugin;      ///< the plug-in's file, if the kernel is one; empty otherwise
     int jobs = 1;                      ///< worker processes in all
     std::vector<TargetRun> runs;       ///< one per target, in the order asked for
 };

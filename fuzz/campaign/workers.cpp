@@ -143,7 +143,7 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
         argv.insert(argv.end(), opt.libfuzzer_flags.begin(), opt.libfuzzer_flags.end());
         argv.push_back(r.corpus.string());
         for (const auto& s : r.seeds) argv.push_back(s.string());
-        r.pids[w] = spawn(argv, {"RICOCHET_KERNEL=" + opt.kernel}, r.log);
+        r.pids[w] = spawn(argv, {"RICOCHET_KERNEL=" + plan.kernel_env}, r.log);
         r.started[w] = Clock::now();
     };
     for (TargetRun& r : plan.runs) {

@@ -38,7 +38,8 @@
 //                  wall, and the overlap events the frame printed for the ball are exactly the circles and
 //                  rects holding p. For each frame's legs a → b, as the kernel swept them from its own
 //                  (rounded) points and velocities (a leg with a non-finite end fails: it is not a
-//                  segment): each per-wall Miss it decided equals truth's for a → b; every wall it did not
+//                  segment): each per-wall Miss it decided equals truth's for a → b (a miss it gives no reason
+//                  for, a plug-in's RICOCHET_MISS, only needs truth to miss too); every wall it did not
 //                  try is exactly missed; the wall it took as the leg's first hit equals truth's first hit
 //                  (the earliest exact crossing, the lowest index on a tie; a wall the kernel's own rule
 //                  skips, lecture's wall just bounced off, left out); a leg it ended at a contact wall ends
@@ -48,7 +49,8 @@
 //                  ball at the last point of its path.
 //                  And the frame's first hit equals the exact kernel's from the same state and memory (unless
 //                  the exact kernel's frame leaves the accepted range). The exact kernel's legs are rational,
-//                  so it has only the static parts.
+//                  so it has only the static parts; a kernel that steps whole frames itself and traces no legs
+//                  (a plug-in's frame step, plugin.h) has the static parts and the frame's first hit.
 //   swap           circles_overlap(a, b) = circles_overlap(b, a) and rects_overlap likewise for every pair of
 //                  static shapes (frame 0); for each printed state p, v and every wall w, the wall walked the
 //                  other way gives p and Be = p + v the opposite side and the sweep from p the same hit or miss.
@@ -97,7 +99,8 @@
 //                  (M the largest magnitude of a, b and R·v; truth::leg_end_accuracy), exactly.
 //                  The same bound for every kernel: robust keeps it (its derivation is in promise_test.cpp),
 //                  lecture-float does not (2^−24 rounding). The exact kernel's legs are rational, so it has
-//                  none to check (its B_i is its exact crossing, rounded once).
+//                  none to check (its B_i is its exact crossing, rounded once); nor has a plug-in's frame step
+//                  (plugin.h), which shows no legs.
 //   event-order    Every frame's events come in the order docs/scene-log.md gives: per ball in index order its
 //                  hits (none at frame 0), then its state, then every overlap, ball-major, circles before
 //                  rects, each by index and once; each event carries its frame's number and names a ball,

@@ -44,4 +44,10 @@ struct FailureLog {
 FailureLog make_failure_log(const Scene& scene, KernelId kernel, std::string_view provenance,
                             const CheckFailure& failure);
 
+/// A case a harness is about to step under a plug-in kernel, as the log its guard keeps should the plug-in
+/// crash or hang on it (plugin_guard.hpp, PluginStage): scene under kernel, `from PROVENANCE` in place of its
+/// own, its frames, every check if it lists none, no `found` or `expect` lines (nothing failed yet). Keep it
+/// as PREFIX-ID.scene (scene_content_id), as saved failures are named.
+Scene plugin_case_log(const Scene& scene, KernelId kernel, std::string_view provenance);
+
 }  // namespace ricochet

@@ -18,6 +18,9 @@ enum class Miss : std::uint8_t {
     past_p1,        ///< test 5: the hit point lies past P1
     degenerate,     ///< zero-length wall or zero velocity
     leaving,        ///< Bs is on the wall's line and the ball moves off it
+    /// A miss whose reason the kernel does not say (a plug-in's RICOCHET_MISS, plugin.h): the oracle then only
+    /// asks whether the wall is hit. No built-in kernel answers it.
+    no_reason,
 };
 /// A short name for a Miss ("hit", "both-inside", …).
 std::string_view miss_name(Miss m);

@@ -96,7 +96,9 @@ private:
         std::vector<std::uint32_t> printed;
         for (const Event& e : f.events)
             if (e.kind == Event::Kind::hit && e.ball == i) printed.push_back(e.index);
-        if (!trace.legs_traced) return std::nullopt;
+        // Legs not traced: the exact kernel's are rational (it is the oracle itself); a kernel that steps whole
+        // frames (a plug-in's frame step, plugin.h) shows only the frame, judged by its first hit below.
+        if (!trace.legs_traced) return kernel_ == KernelId::exact ? std::nullopt : first_hit(f, i, printed);
         std::vector<std::uint32_t> traced;
         std::size_t blocked = 0;  // legs that ended reflecting off a contact wall
         std::vector<bool> decided(scene_.walls.size());
@@ -122,7 +124,9 @@ private:
                 const TracedDecision& td = trace.decisions[d];
                 decided[td.wall] = true;
                 const Miss want = truth::leg_miss(leg.from, leg.to, scene_.walls[td.wall]);
-                if (td.miss != want)
+                // A miss without a reason (a plug-in's, sweep.hpp) is judged as a miss: right whenever truth misses.
+                const bool same = td.miss == Miss::no_reason ? want != Miss::none : td.miss == want;
+                if (!same)
                     return fail(fmt::format("{} against wall {}: the kernel says {}, exactly {}", where, td.wall,
                                             td.miss, want));
             }
@@ -167,8 +171,13 @@ private:
                 return fail(fmt::format("stopped at the bounce limit at {}, but the last point of its path is {}",
                                         state->pos, last));
         }
-        // The frame's first hit against the exact kernel's frame from the same state and memory. (The exact
-        // kernel's own frames returned above: it traces no legs.)
+        return first_hit(f, i, printed);
+    }
+
+    /// The frame's first hit (printed: the hit walls the frame printed for ball i) against the exact kernel's
+    /// frame from the same state and memory. (The exact kernel's own frames never come here: it traces no legs.)
+    std::optional<CheckFailure> first_hit(const Frame& f, std::uint32_t i, const std::vector<std::uint32_t>& printed) {
+        const auto fail = [&](std::string m) { return failure(Check::oracle, f.index, i, std::move(m)); };
         Ball ball = f.before[i];
         BallMemory memory = f.memory_before[i];
         hits_.clear();
