@@ -110,7 +110,7 @@ struct Box2dKernel {
         // The leg Bs → Be = Bs + v, both in float, as the ray p1 → p2; a ball that does not move casts none.
         const b2Vec2 p1 = to_b2(bs), p2 = p1 + to_b2(v);
         const auto out = p1 == p2 ? std::nullopt : ray_cast(edge_of(w), p1, p2);
-        if (!out) return {no_hit_miss(to_vec(p1), to_vec(p2), w), 0.0, {}};
+        if (!out) return {Miss::no_reason, 0.0, {}};
         // The ray hits at p1 + fraction·(p2 − p1) (b2_collision.h).
         return {Miss::none, out->fraction, to_vec(p1 + out->fraction * (p2 - p1))};
     }
@@ -144,7 +144,7 @@ struct Box2dKernel {
                 // The edge just bounced off: the ray starts on it and would hit it again at 0.
                 if (last && i == *last) continue;
                 const auto out = ray_cast(edge_of(walls[i]), p1, p2);
-                decide(scratch, traced, i, walls[i], out.has_value());
+                decide(scratch, traced, i, out.has_value());
                 if (!out) continue;
                 if (!found || out->fraction < hit.fraction || (out->fraction == hit.fraction && i < best)) {
                     found = true;

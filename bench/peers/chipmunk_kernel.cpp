@@ -111,7 +111,7 @@ struct ChipmunkKernel {
         // The leg Bs → Be = Bs + v; a ball that does not move makes no query.
         const cpVect a = to_cp(bs), b = cpvadd(a, to_cp(v));
         const auto info = cpveql(a, b) ? std::nullopt : segment_query(w, a, b);
-        if (!info) return {no_hit_miss(bs, to_vec(b), w), 0.0, {}};
+        if (!info) return {Miss::no_reason, 0.0, {}};
         return {Miss::none, info->alpha, to_vec(info->point)};
     }
 
@@ -143,7 +143,7 @@ struct ChipmunkKernel {
                 // The wall just bounced off: the query starts on it and would hit it again at alpha 0.
                 if (last && i == *last) continue;
                 const auto info = segment_query(walls[i], a, b);
-                decide(scratch, traced, i, walls[i], info.has_value());
+                decide(scratch, traced, i, info.has_value());
                 if (!info) continue;
                 if (!found || info->alpha < hit.alpha || (info->alpha == hit.alpha && i < best)) {
                     found = true;

@@ -1,10 +1,7 @@
 // What the peer kernels share (peer_trace.hpp).
 #include "peer_trace.hpp"
 
-#include <cmath>
 #include <numeric>
-
-#include "ricochet/truth.hpp"
 
 namespace ricochet::peers {
 
@@ -23,16 +20,6 @@ std::span<const std::uint32_t> candidates(std::span<const Wall> walls, const Wal
     return scratch.all_walls;
 }
 
-Miss no_hit_miss(Vec2 a, Vec2 b, const Wall& w) {
-    // Degenerate: a leg with an infinite or NaN end (float overflowed) is not a segment and has no exact
-    // answer; `oracle` fails such a leg before it reads any decision.
-    if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y))
-        return Miss::degenerate;
-    const Miss exact = truth::leg_miss(a, b, w);
-    if (exact != Miss::none) return exact;
-    return truth::side(a, w) > 0 ? Miss::both_outside : Miss::both_inside;
-}
-
 TracedLeg* begin_leg(StepScratch& scratch, Vec2 a, Vec2 b, Vec2 vel, std::optional<std::uint32_t> skipped) {
     StepTrace* t = scratch.trace;
     if (t == nullptr) return nullptr;
@@ -42,9 +29,9 @@ TracedLeg* begin_leg(StepScratch& scratch, Vec2 a, Vec2 b, Vec2 vel, std::option
     return &leg;
 }
 
-void decide(StepScratch& scratch, TracedLeg* leg, std::uint32_t wall, const Wall& w, bool hit) {
+void decide(StepScratch& scratch, TracedLeg* leg, std::uint32_t wall, bool hit) {
     if (leg == nullptr) return;
-    scratch.trace->decisions.push_back({wall, hit ? Miss::none : no_hit_miss(leg->from, leg->to, w)});
+    scratch.trace->decisions.push_back({wall, hit ? Miss::none : Miss::no_reason});
     ++leg->decision_count;
 }
 
