@@ -190,7 +190,8 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                 const bool clean = WIFEXITED(status) && WEXITSTATUS(status) == 0;
                 if (!clean && std::chrono::duration<double>(Clock::now() - r.started[w]).count() < 1) ++r.quick_crashes;
                 // A worker stops at its first failure; restart it while time is left, unless it keeps failing
-                // at start-up (a corpus input that fails). A campaign by runs does not restart: each worker
+                // at start-up (a corpus input that fails, or a kernel that fails on nearly every input, as the
+                // peers do: more restarts would find the same failures again). A campaign by runs does not restart: each worker
                 // runs its inputs once. A stopped campaign restarts nothing and says nothing: it was asked to.
                 if (cli::stop_requested()) continue;
                 const bool time_left = !by_runs && elapsed() < opt.time - 1;
@@ -208,7 +209,8 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                 else if (time_left && clean)
                     why = "it exited with status 0 before the time was up";
                 else if (time_left && r.quick_crashes >= k_max_quick_crashes)
-                    why = fmt::format("it {}, and {} starts failed within a second: an input of the corpus fails at start-up",
+                    why = fmt::format("it {}, and {} starts failed within a second: an input of the corpus fails at "
+                                      "start-up, or the kernel fails on almost any input",
                                       how_it_ended(status), r.quick_crashes);
                 else if (time_left)
                     why = fmt::format("it {}, and the target's workers were restarted {} times already (the most)", how_it_ended(status),
