@@ -9,6 +9,7 @@
 
 #include <gmpxx.h>
 
+#include "orient_filter.hpp"
 #include "staged_sign.hpp"
 
 namespace ricochet::exact {
@@ -62,8 +63,8 @@ mpq_class q(double x) { return mpq_class(x); }
 
 /// sign((A + a)(B + b) − (C + c)(D + d)) in stages 1, 2, 3 (staged_sign.hpp), with l = fl(A·B), r = fl(C·D); no
 /// answer when the inputs the differences came from are not all in the expansions' range and stage 3 is needed.
-std::optional<int> det_sign(Split p, Split q, Split u, Split v, double l, double r,
-                            std::initializer_list<double> inputs) {
+[[gnu::always_inline]] inline std::optional<int> det_sign(Split p, Split q, Split u, Split v, double l, double r,
+                                                          std::initializer_list<double> inputs) {
     if (const auto s = staged::ordered(p, q, u, v, l, r)) return counted(*s, &FallbackCounts::ordered);
     if (const auto s = staged::bounded_det(p, q, u, v, l, r)) return counted(*s, &FallbackCounts::bounded);
     if (expansion_safe(inputs)) return counted(staged::complete_det(p, q, u, v), &FallbackCounts::complete);
@@ -71,27 +72,17 @@ std::optional<int> det_sign(Split p, Split q, Split u, Split v, double l, double
 }
 
 /// sign((X + x)² + (Y + y)² − (R + ρ)²) in stages 2 and 3; no answer as for det_sign.
-std::optional<int> squares_sign(Split dx, Split dy, Split rr, std::initializer_list<double> inputs) {
+[[gnu::always_inline]] inline std::optional<int> squares_sign(Split dx, Split dy, Split rr,
+                                                              std::initializer_list<double> inputs) {
     if (const auto s = staged::bounded_squares(dx, dy, rr)) return counted(*s, &FallbackCounts::bounded);
     if (expansion_safe(inputs)) return counted(staged::complete_squares(dx, dy, rr), &FallbackCounts::complete);
     return std::nullopt;
 }
 
-// The exact path of orient, out of line so that the filter's call stays small. l and r are the filter's products.
-[[gnu::noinline]] int orient_exact(Vec2 a, Vec2 b, Vec2 c, double l, double r) {
-    // (a − c) × (b − c) = (ax − cx)·(by − cy) − (ay − cy)·(bx − cx), each difference as a head and a tail
-    const Split d1 = two_diff(a.x, c.x), d2 = two_diff(b.y, c.y), d3 = two_diff(a.y, c.y), d4 = two_diff(b.x, c.x);
-    if (const auto s = det_sign(d1, d2, d3, d4, l, r, {a.x, a.y, b.x, b.y, c.x, c.y})) return *s;
-    return gmp_sign((q(a.x) - q(c.x)) * (q(b.y) - q(c.y)) - (q(a.y) - q(c.y)) * (q(b.x) - q(c.x)));
-}
-
-// Filtered orient: the value, its two products, and whether its sign is certain.
+// orient's filter for compare_crossings (the same operations as orient_filter.hpp's): the value, its bound.
 struct Filtered {
     double value;
     double bound;
-    double l;
-    double r;
-    bool certain() const { return std::fabs(value) > bound; }
 };
 
 Filtered orient_filtered(Vec2 a, Vec2 b, Vec2 c) {
@@ -99,8 +90,8 @@ Filtered orient_filtered(Vec2 a, Vec2 b, Vec2 c) {
     const double r = (a.y - c.y) * (b.x - c.x);
     const double sum = std::fabs(l) + std::fabs(r);
     // Too small to rule out underflow, or overflowed: make the filter decline.
-    if (!(sum >= k_tiny) || !std::isfinite(sum)) return {l - r, INFINITY, l, r};
-    return {l - r, k_ccw * sum, l, r};
+    if (!(sum >= k_tiny) || !std::isfinite(sum)) return {l - r, INFINITY};
+    return {l - r, k_ccw * sum};
 }
 
 // The exact path of direction_side: sign(e × d) with e = P1 − P0.
@@ -131,19 +122,17 @@ Filtered orient_filtered(Vec2 a, Vec2 b, Vec2 c) {
 
 }  // namespace
 
-int orient(Vec2 a, Vec2 b, Vec2 c) {
-    // (a − c) × (b − c) equals (b − a) × (c − a): the same signed double area.
-    const Filtered f = orient_filtered(a, b, c);
-    if (f.certain()) return sign(f.value);
-    // Both products have an exactly-zero factor (x − y = 0 exactly iff x = y): the area is exactly 0.
-    if ((a.x == c.x || b.y == c.y) && (a.y == c.y || b.x == c.x)) return 0;
-    return orient_exact(a, b, c, f.l, f.r);
+// The exact path of orient, out of line so that the filter (orient_filter.hpp) stays small where it is inlined.
+[[gnu::noinline]] int detail::orient_exact(Vec2 a, Vec2 b, Vec2 c, double l, double r) {
+    // (a − c) × (b − c) = (ax − cx)·(by − cy) − (ay − cy)·(bx − cx), each difference as a head and a tail
+    const Split d1 = two_diff(a.x, c.x), d2 = two_diff(b.y, c.y), d3 = two_diff(a.y, c.y), d4 = two_diff(b.x, c.x);
+    if (const auto s = det_sign(d1, d2, d3, d4, l, r, {a.x, a.y, b.x, b.y, c.x, c.y})) return *s;
+    return gmp_sign((q(a.x) - q(c.x)) * (q(b.y) - q(c.y)) - (q(a.y) - q(c.y)) * (q(b.x) - q(c.x)));
 }
 
-int side(Vec2 p, const Wall& w) {
-    // BC = n·(p − P0) with n = (e_y, −e_x) is −e × (p − P0) = −orient(P0, P1, p).
-    return -orient(w.p0, w.p1, p);
-}
+int orient(Vec2 a, Vec2 b, Vec2 c) { return detail::orient(a, b, c); }
+
+int side(Vec2 p, const Wall& w) { return detail::side(p, w); }
 
 int direction_side(Vec2 d, const Wall& w) {
     // n·d = e_y·d_x − e_x·d_y = −(e × d)

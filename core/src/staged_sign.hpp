@@ -39,6 +39,11 @@ inline Split two_diff(double a, double b) { return two_sum(a, -b); }
 
 inline int sign_of(double v) { return (v > 0.0) - (v < 0.0); }
 
+/// Veltkamp's splitting constant for doubles, 2^27 + 1: x = hi + lo with hi and lo of at most 26 bits each.
+inline constexpr double k_split = 134217729.0;
+/// Below this magnitude a square's partial products may underflow: Dekker's square error is exact for every x with
+/// 2^-485 ≤ |x| ≤ 2^995 (Boldo 2006: the exponents must sum to at least e_min + p − 1 = −970), and for 0.
+inline constexpr double k_square_min = 0x1p-485;
 /// Above this, a sum of two or three squares or products leaves its terms too close to overflow for stage 2.
 inline constexpr double k_stage_huge = 0x1p900;
 /// Stage 2's bound for a determinant, times L = |l| + |r| (derived in bounded_det).
@@ -46,9 +51,19 @@ inline constexpr double k_det_tail = 18.0 * k_eps * k_eps;
 /// Stage 2's bound for a sum of squares, times M = X² + Y² + R² rounded (derived in bounded_squares).
 inline constexpr double k_squares_tail = 32.0 * k_eps * k_eps;
 
+/// x² − fl(x²) exactly, for x = 0 or 2^-485 ≤ |x| ≤ 2^995, given p = fl(x²): Dekker's product of x by itself
+/// (the two cross terms hi·lo as one exact 2hi·lo), with no call to fma, which x86-64 without FMA makes in libm.
+[[gnu::always_inline]] inline double square_error(double x, double p) {
+    const double t = k_split * x;
+    const double hi = t - (t - x);
+    const double lo = x - hi;
+    return ((hi * hi - p) + (hi + hi) * lo) + lo * lo;
+}
+
 /// Stage 1: sign(A·B − C·D) for exact differences A, B, C, D (every tail 0) from l = fl(A·B) and r = fl(C·D).
 /// No answer when a tail is not 0, or when l = r and |l| is below k_tiny or infinite.
-inline std::optional<int> ordered(Split p, Split q, Split u, Split v, double l, double r) {
+[[gnu::always_inline]] inline std::optional<int> ordered(Split p, Split q, Split u, Split v, double l,
+                                                         double r) {
     if (p.tail != 0.0 || q.tail != 0.0 || u.tail != 0.0 || v.tail != 0.0) return std::nullopt;
     // Rounding is monotonic (A·B ≤ C·D ⇒ fl(A·B) ≤ fl(C·D)), overflow and underflow included: l ≠ r orders the
     // exact products.
@@ -61,7 +76,8 @@ inline std::optional<int> ordered(Split p, Split q, Split u, Split v, double l, 
 
 /// Stage 2: sign((A + a)(B + b) − (C + c)(D + d)) given l = fl(A·B) and r = fl(C·D), each tail at most ε of its
 /// head; no answer when the estimate is within its bound, or L = |l| + |r| is outside [k_tiny, k_stage_huge].
-inline std::optional<int> bounded_det(Split p, Split q, Split u, Split v, double l, double r) {
+[[gnu::always_inline]] inline std::optional<int> bounded_det(Split p, Split q, Split u, Split v, double l,
+                                                             double r) {
     const double A = p.head, a = p.tail, B = q.head, b = q.tail, C = u.head, c = u.tail, D = v.head, d = v.tail;
     // det = (l + le) − (r + re) + (A·b + a·B − C·d − c·D) + (a·b − c·d), with A·B = l + le and C·D = r + re, and
     // l − r = s + t exactly (two-sum). est = s + (((t + le) − re) + ((A·b + a·B) − (C·d + c·D))) drops a·b − c·d.
@@ -86,26 +102,28 @@ inline std::optional<int> bounded_det(Split p, Split q, Split u, Split v, double
 }
 
 /// Stage 2: sign((X + x)² + (Y + y)² − (R + ρ)²), each tail at most ε of its head; no answer when the estimate is
-/// within its bound, or M = X² + Y² + R² (rounded) is outside [k_tiny, k_stage_huge].
-inline std::optional<int> bounded_squares(Split dx, Split dy, Split rr) {
+/// within its bound, a non-zero head is below k_square_min, or M = X² + Y² + R² (rounded) is outside
+/// [k_tiny, k_stage_huge].
+[[gnu::always_inline]] inline std::optional<int> bounded_squares(Split dx, Split dy, Split rr) {
     const double X = dx.head, x = dx.tail, Y = dy.head, y = dy.tail, R = rr.head, rho = rr.tail;
     // V = (P1 + E1) + (P2 + E2) − (P3 + E3) + 2(X·x + Y·y − R·ρ) + (x² + y² − ρ²), with P1 = fl(X²), E1 = X² − P1
-    // (an fma, rounded once), and so on, P1 + P2 = S + s and S − P3 = H + h exactly (two-sum).
+    // exactly (square_error), and so on, P1 + P2 = S + s and S − P3 = H + h exactly (two-sum).
     // est = H + (((((s + h) + E1) + E2) − E3) + 2((X·x + Y·y) − R·ρ)) drops x² + y² − ρ². With M = P1 + P2 + P3:
-    // |s| ≤ ε|S| ≤ ε(1 + ε)M; |H| ≤ (1 + ε)max(S, P3) ≤ (1 + ε)²M, so |h| ≤ ε(1 + ε)²M; |E1| + |E2| + |E3| ≤ εM:
-    // the five sum to ≤ 3ε(1 + ε)²M. |X·x| ≤ εX² ≤ εP1/(1 − ε) and likewise, so the first-order terms sum to
-    // ≤ 2εM/(1 − ε), and |x² + y² − ρ²| ≤ ε²M/(1 − ε). The E's are rounded once (≤ ε of εM), then the five pass
-    // through at most five rounded additions (≤ γ5), the first-order terms through a product and three additions
-    // (≤ γ4; the factor 2 is exact): |V − (H + rest)| ≤ γ5·3ε(1 + ε)²M + ε²M + γ4·2εM/(1 − ε) + ε²M/(1 − ε)
-    // ≤ 25ε²M(1 + 8ε). An underflow adds ≤ 2^-1075 to each of the nine rounded squares, products and fma's,
-    // ≤ 2^-1071 in all. fl(H + rest) keeps the sign of H + rest; fl(M) ≥ (1 − ε)²M, and fl(M) ≥ k_tiny makes the
-    // bound k_squares_tail·fl(M) = 32ε²·fl(M) normal: |fl(est)| beyond it gives |H + rest| > 32ε²M(1 − ε)³/(1 + ε),
-    // which exceeds 25ε²M(1 + 8ε) + 2^-1071. fl(M) ≤ k_stage_huge keeps |X|, |Y|, |R| ≤ 2^451, every term finite.
+    // |s| ≤ ε|S| ≤ ε(1 + ε)M; |H| ≤ (1 + ε)max(S, P3) ≤ (1 + ε)²M, so |h| ≤ ε(1 + ε)²M; |E1| + |E2| + |E3| ≤ εM
+    // (the squares are normal): the five sum to ≤ 3ε(1 + ε)²M. |X·x| ≤ εX² ≤ εP1/(1 − ε) and likewise, so the
+    // first-order terms sum to ≤ 2εM/(1 − ε), and |x² + y² − ρ²| ≤ ε²M/(1 − ε). The five pass through at most five
+    // rounded additions (≤ γ5 = 5ε/(1 − 5ε)), the first-order terms through a product and three additions (≤ γ4;
+    // the factor 2 is exact): |V − (H + rest)| ≤ γ5·3ε(1 + ε)²M + γ4·2εM/(1 − ε) + ε²M/(1 − ε) ≤ 24ε²M(1 + 8ε).
+    // An underflowed product X·x, Y·y or R·ρ adds ≤ 2^-1075, ≤ 2^-1071 in all. fl(H + rest) keeps the sign of
+    // H + rest; fl(M) ≥ (1 − ε)²M, and fl(M) ≥ k_tiny makes the bound k_squares_tail·fl(M) = 32ε²·fl(M) normal:
+    // |fl(est)| beyond it gives |H + rest| > 32ε²M(1 − ε)³/(1 + ε), which exceeds 24ε²M(1 + 8ε) + 2^-1071.
+    // fl(M) ≤ k_stage_huge keeps |X|, |Y|, |R| ≤ 2^451 and every term finite.
     const double p1 = X * X, p2 = Y * Y, p3 = R * R;
     const Split s = two_sum(p1, p2);
     const double m = s.head + p3;
-    if (!(m >= k_tiny && m <= k_stage_huge)) return std::nullopt;
-    const double e1 = std::fma(X, X, -p1), e2 = std::fma(Y, Y, -p2), e3 = std::fma(R, R, -p3);
+    const auto splits = [](double v) { return v == 0.0 || std::fabs(v) >= k_square_min; };
+    if (!(m >= k_tiny && m <= k_stage_huge && splits(X) && splits(Y) && splits(R))) return std::nullopt;
+    const double e1 = square_error(X, p1), e2 = square_error(Y, p2), e3 = square_error(R, p3);
     const Split h = two_sum(s.head, -p3);
     const double rest = ((((s.tail + h.tail) + e1) + e2) - e3) + 2.0 * ((X * x + Y * y) - R * rho);
     const double est = h.head + rest;

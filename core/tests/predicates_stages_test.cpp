@@ -110,10 +110,16 @@ TEST(PredicateStages, SquaresStagesDecideOrDecline) {
     const double h = 3 * (1 + 0x1p-52);
     EXPECT_FALSE(exact::staged::bounded_squares({h, 0}, {0x1p-60, 0}, {h, 0}));
     EXPECT_EQ(exact::staged::complete_squares({h, 0}, {0x1p-60, 0}, {h, 0}), 1);
-    // Guards: M below k_tiny, above k_stage_huge, infinite.
+    // Guards: M below k_tiny, above k_stage_huge, infinite; a non-zero head too small for an exact square error
+    // (2^-486 < k_square_min) though M ≈ 2 is fine and (2^-486)² + (1 + 2^-60)² − 1 ≈ 2^-59 is clear, and the same
+    // with the head at k_square_min, which answers.
     EXPECT_FALSE(exact::staged::bounded_squares({0x1p-460, 0}, {0, 0}, {0, 0}));
     EXPECT_FALSE(exact::staged::bounded_squares({0x1p460, 0}, {0, 0}, {0, 0}));
     EXPECT_FALSE(exact::staged::bounded_squares({INFINITY, NAN}, {0, 0}, {1, 0}));
+    EXPECT_FALSE(exact::staged::bounded_squares({0x1p-486, 0}, {1, 0x1p-60}, {1, 0}));
+    EXPECT_FALSE(exact::staged::bounded_squares({1, 0x1p-60}, {0x1p-486, 0}, {1, 0}));
+    EXPECT_FALSE(exact::staged::bounded_squares({1, 0x1p-60}, {0, 0}, {0x1p-486, 0}));
+    EXPECT_EQ(exact::staged::bounded_squares({0x1p-485, 0}, {1, 0x1p-60}, {1, 0}), 1);
 }
 
 // --- each stage against GMP over random inputs of every kind (fixed seed) ---
@@ -126,6 +132,20 @@ struct Rng {
     /// A random double of magnitude in [2^lo, 2^hi), either sign.
     double magnitude(int lo, int hi) { return (coin() ? 1 : -1) * std::ldexp(uniform(1, 2), integer(lo, hi - 1)); }
 };
+
+TEST(PredicateStages, SquareErrorIsExactInItsRange) {
+    // Dekker's square error against the correctly rounded fma, which gives x² − fl(x²) exactly when it is
+    // representable (as it is here): random mantissas at every exponent of the range, and its two ends.
+    Rng g;
+    for (int e = -485; e <= 451; ++e)
+        for (int i = 0; i < 20; ++i) {
+            const double x = std::ldexp(g.uniform(1, 2), e) * (g.coin() ? 1 : -1);
+            ASSERT_EQ(exact::staged::square_error(x, x * x), std::fma(x, x, -(x * x))) << x;
+        }
+    for (const double x : {0x1p-485, 0x1.fffffffffffffp-485, 0x1.fffffffffffffp451, 0x1p451, 0.0, -0.0}) {
+        ASSERT_EQ(exact::staged::square_error(x, x * x), std::fma(x, x, -(x * x))) << x;
+    }
+}
 
 /// Stage 3's precondition: each head and tail 0, or a multiple of 2^-502 of magnitude at most 2^451.
 bool in_stage3_range(std::initializer_list<Split> xs) {
