@@ -61,21 +61,10 @@ int gmp_sign(const mpq_class& v) {
 
 mpq_class q(double x) { return mpq_class(x); }
 
-/// sign((A + a)(B + b) − (C + c)(D + d)) in stages 1, 2, 3 (staged_sign.hpp), with l = fl(A·B), r = fl(C·D); no
-/// answer when the inputs the differences came from are not all in the expansions' range and stage 3 is needed.
-[[gnu::always_inline]] inline std::optional<int> det_sign(Split p, Split q, Split u, Split v, double l, double r,
-                                                          std::initializer_list<double> inputs) {
+/// sign((A + a)(B + b) − (C + c)(D + d)) in stages 1 and 2 (staged_sign.hpp), with l = fl(A·B), r = fl(C·D).
+[[gnu::always_inline]] inline std::optional<int> det_sign(Split p, Split q, Split u, Split v, double l, double r) {
     if (const auto s = staged::ordered(p, q, u, v, l, r)) return counted(*s, &FallbackCounts::ordered);
     if (const auto s = staged::bounded_det(p, q, u, v, l, r)) return counted(*s, &FallbackCounts::bounded);
-    if (expansion_safe(inputs)) return counted(staged::complete_det(p, q, u, v), &FallbackCounts::complete);
-    return std::nullopt;
-}
-
-/// sign((X + x)² + (Y + y)² − (R + ρ)²) in stages 2 and 3; no answer as for det_sign.
-[[gnu::always_inline]] inline std::optional<int> squares_sign(Split dx, Split dy, Split rr,
-                                                              std::initializer_list<double> inputs) {
-    if (const auto s = staged::bounded_squares(dx, dy, rr)) return counted(*s, &FallbackCounts::bounded);
-    if (expansion_safe(inputs)) return counted(staged::complete_squares(dx, dy, rr), &FallbackCounts::complete);
     return std::nullopt;
 }
 
@@ -94,40 +83,74 @@ Filtered orient_filtered(Vec2 a, Vec2 b, Vec2 c) {
     return {l - r, k_ccw * sum};
 }
 
-// The exact path of direction_side: sign(e × d) with e = P1 − P0.
-[[gnu::noinline]] int cross_exact(const Wall& w, Vec2 d, double l, double r) {
-    // e × d = (x1 − x0)·dy − (y1 − y0)·dx; d's components are inputs, exact
-    const Split ex = two_diff(w.p1.x, w.p0.x), ey = two_diff(w.p1.y, w.p0.y), dy{d.y, 0.0}, dx{d.x, 0.0};
-    if (const auto s = det_sign(ex, dy, ey, dx, l, r, {w.p0.x, w.p0.y, w.p1.x, w.p1.y, d.x, d.y})) return *s;
+// The last stage of direction_side: sign(e × d) as a complete sum, or by GMP. Out of line: rare.
+[[gnu::noinline]] int cross_complete(const Wall& w, Vec2 d) {
+    if (expansion_safe({w.p0.x, w.p0.y, w.p1.x, w.p1.y, d.x, d.y})) {
+        const Split ex = two_diff(w.p1.x, w.p0.x), ey = two_diff(w.p1.y, w.p0.y);
+        return counted(staged::complete_det(ex, {d.y, 0.0}, ey, {d.x, 0.0}), &FallbackCounts::complete);
+    }
     return gmp_sign((q(w.p1.x) - q(w.p0.x)) * q(d.y) - (q(w.p1.y) - q(w.p0.y)) * q(d.x));
 }
 
-// The exact path of point_circle: sign(|p − c|² − r²).
-[[gnu::noinline]] int point_circle_exact(Vec2 p, const Circle& c) {
-    if (const auto s = squares_sign(two_diff(p.x, c.c.x), two_diff(p.y, c.c.y), {c.r, 0.0},
-                                    {p.x, p.y, c.c.x, c.c.y, c.r}))
-        return *s;
+// The exact path of direction_side: sign(e × d) with e = P1 − P0, stages 1 and 2, then the last stage.
+[[gnu::noinline]] int cross_exact(const Wall& w, Vec2 d, double l, double r) {
+    // e × d = (x1 − x0)·dy − (y1 − y0)·dx; d's components are inputs, exact
+    const Split ex = two_diff(w.p1.x, w.p0.x), ey = two_diff(w.p1.y, w.p0.y);
+    if (const auto s = det_sign(ex, {d.y, 0.0}, ey, {d.x, 0.0}, l, r)) return *s;
+    return cross_complete(w, d);
+}
+
+// The last stage of point_circle: sign(|p − c|² − r²) as a complete sum, or by GMP. Out of line: rare.
+[[gnu::noinline]] int point_circle_complete(Vec2 p, const Circle& c) {
+    if (expansion_safe({p.x, p.y, c.c.x, c.c.y, c.r}))
+        return counted(staged::complete_squares(two_diff(p.x, c.c.x), two_diff(p.y, c.c.y), {c.r, 0.0}),
+                       &FallbackCounts::complete);
     const mpq_class ex = q(p.x) - q(c.c.x), ey = q(p.y) - q(c.c.y), r = q(c.r);
     return gmp_sign(ex * ex + ey * ey - r * r);
 }
 
-// The exact path of circle_circle: sign(|cA − cB|² − (rA + rB)²).
-[[gnu::noinline]] int circle_circle_exact(const Circle& a, const Circle& b) {
-    if (const auto s = squares_sign(two_diff(a.c.x, b.c.x), two_diff(a.c.y, b.c.y), two_sum(a.r, b.r),
-                                    {a.c.x, a.c.y, b.c.x, b.c.y, a.r, b.r}))
-        return *s;
+// The exact path of point_circle: stage 2, then the last stage. Out of line, so that the filter's call stays small,
+// and apart from the last stage, so that its own frame does too.
+[[gnu::noinline]] int point_circle_exact(Vec2 p, const Circle& c) {
+    if (const auto s = staged::bounded_squares(two_diff(p.x, c.c.x), two_diff(p.y, c.c.y), {c.r, 0.0}))
+        return counted(*s, &FallbackCounts::bounded);
+    return point_circle_complete(p, c);
+}
+
+// The last stage of circle_circle: sign(|cA − cB|² − (rA + rB)²) as a complete sum, or by GMP. Out of line: rare.
+[[gnu::noinline]] int circle_circle_complete(const Circle& a, const Circle& b) {
+    if (expansion_safe({a.c.x, a.c.y, b.c.x, b.c.y, a.r, b.r}))
+        return counted(staged::complete_squares(two_diff(a.c.x, b.c.x), two_diff(a.c.y, b.c.y), two_sum(a.r, b.r)),
+                       &FallbackCounts::complete);
     const mpq_class ex = q(a.c.x) - q(b.c.x), ey = q(a.c.y) - q(b.c.y), r = q(a.r) + q(b.r);
     return gmp_sign(ex * ex + ey * ey - r * r);
 }
 
+// The exact path of circle_circle, as point_circle's.
+[[gnu::noinline]] int circle_circle_exact(const Circle& a, const Circle& b) {
+    if (const auto s = staged::bounded_squares(two_diff(a.c.x, b.c.x), two_diff(a.c.y, b.c.y), two_sum(a.r, b.r)))
+        return counted(*s, &FallbackCounts::bounded);
+    return circle_circle_complete(a, b);
+}
+
+// The last stage of orient: sign((a − c) × (b − c)) as a complete sum, or by GMP. Out of line: rare.
+[[gnu::noinline]] int orient_complete(Vec2 a, Vec2 b, Vec2 c) {
+    if (expansion_safe({a.x, a.y, b.x, b.y, c.x, c.y})) {
+        const Split d1 = two_diff(a.x, c.x), d2 = two_diff(b.y, c.y), d3 = two_diff(a.y, c.y), d4 = two_diff(b.x, c.x);
+        return counted(staged::complete_det(d1, d2, d3, d4), &FallbackCounts::complete);
+    }
+    return gmp_sign((q(a.x) - q(c.x)) * (q(b.y) - q(c.y)) - (q(a.y) - q(c.y)) * (q(b.x) - q(c.x)));
+}
+
 }  // namespace
 
-// The exact path of orient, out of line so that the filter (orient_filter.hpp) stays small where it is inlined.
+// The exact path of orient, out of line so that the filter (orient_filter.hpp) stays small where it is inlined:
+// stages 1 and 2, then the last stage, apart so that this frame stays small too.
 [[gnu::noinline]] int detail::orient_exact(Vec2 a, Vec2 b, Vec2 c, double l, double r) {
     // (a − c) × (b − c) = (ax − cx)·(by − cy) − (ay − cy)·(bx − cx), each difference as a head and a tail
     const Split d1 = two_diff(a.x, c.x), d2 = two_diff(b.y, c.y), d3 = two_diff(a.y, c.y), d4 = two_diff(b.x, c.x);
-    if (const auto s = det_sign(d1, d2, d3, d4, l, r, {a.x, a.y, b.x, b.y, c.x, c.y})) return *s;
-    return gmp_sign((q(a.x) - q(c.x)) * (q(b.y) - q(c.y)) - (q(a.y) - q(c.y)) * (q(b.x) - q(c.x)));
+    if (const auto s = det_sign(d1, d2, d3, d4, l, r)) return *s;
+    return orient_complete(a, b, c);
 }
 
 int orient(Vec2 a, Vec2 b, Vec2 c) { return detail::orient(a, b, c); }
