@@ -37,12 +37,15 @@ inline Split two_sum(double a, double b) {
 /// |tail| ≤ ε|head|: the error of a rounding to nearest is at most half an ulp, and 0 below the normal range.
 inline Split two_diff(double a, double b) { return two_sum(a, -b); }
 
+/// −1, 0 or +1: the sign of v.
 inline int sign_of(double v) { return (v > 0.0) - (v < 0.0); }
 
 /// Veltkamp's splitting constant for doubles, 2^27 + 1: x = hi + lo with hi and lo of at most 26 bits each.
 inline constexpr double k_split = 134217729.0;
-/// Below this magnitude a square's partial products may underflow: Dekker's square error is exact for every x with
-/// 2^-485 ≤ |x| ≤ 2^995 (Boldo 2006: the exponents must sum to at least e_min + p − 1 = −970), and for 0.
+/// Below this magnitude a square's partial products may underflow. Dekker's square error is exact for x = 0 and for
+/// 2^-485 ≤ |x| ≤ 2^995: no split overflows (2^27·|x| < 2^1023), and hi and lo are multiples of ulp(x) ≥ 2^-537 of
+/// at most 26 bits, so every partial product is a representable multiple of 2^-1074, and Dekker's argument holds
+/// as without underflow (Boldo 2006: exponents summing to at least e_min + p − 1 = −970 suffice).
 inline constexpr double k_square_min = 0x1p-485;
 /// Above this, a sum of two or three squares or products leaves its terms too close to overflow for stage 2.
 inline constexpr double k_stage_huge = 0x1p900;
