@@ -164,19 +164,29 @@ struct StageCheck {
         const int want = det_gmp(p, r, u, v);
         const double l = p.head * r.head, rr = u.head * v.head;
         const auto s1 = exact::staged::ordered(p, r, u, v, l, rr);
-        if (s1) ASSERT_EQ(*s1, want) << p.head << ' ' << r.head << ' ' << u.head << ' ' << v.head;
+        if (s1) {
+            ASSERT_EQ(*s1, want) << p.head << ' ' << r.head << ' ' << u.head << ' ' << v.head;
+        }
         const auto s2 = exact::staged::bounded_det(p, r, u, v, l, rr);
-        if (s2) ASSERT_EQ(*s2, want) << p.head << ' ' << p.tail << ' ' << r.head << ' ' << r.tail;
+        if (s2) {
+            ASSERT_EQ(*s2, want) << p.head << ' ' << p.tail << ' ' << r.head << ' ' << r.tail;
+        }
         const bool s3 = in_stage3_range({p, r, u, v});
-        if (s3) ASSERT_EQ(exact::staged::complete_det(p, r, u, v), want) << p.head << ' ' << r.head << ' ' << u.head;
+        if (s3) {
+            ASSERT_EQ(exact::staged::complete_det(p, r, u, v), want) << p.head << ' ' << r.head << ' ' << u.head;
+        }
         count(s1.has_value(), s2.has_value(), s3);
     }
     void squares(Split x, Split y, Split r) {
         const int want = squares_gmp(x, y, r);
         const auto s2 = exact::staged::bounded_squares(x, y, r);
-        if (s2) ASSERT_EQ(*s2, want) << x.head << ' ' << x.tail << ' ' << y.head << ' ' << r.head << ' ' << r.tail;
+        if (s2) {
+            ASSERT_EQ(*s2, want) << x.head << ' ' << x.tail << ' ' << y.head << ' ' << r.head << ' ' << r.tail;
+        }
         const bool s3 = in_stage3_range({x, y, r});
-        if (s3) ASSERT_EQ(exact::staged::complete_squares(x, y, r), want) << x.head << ' ' << y.head << ' ' << r.head;
+        if (s3) {
+            ASSERT_EQ(exact::staged::complete_squares(x, y, r), want) << x.head << ' ' << y.head << ' ' << r.head;
+        }
         count(false, s2.has_value(), s3);
     }
     void count(bool s1, bool s2, bool s3) { ++(s1 ? ordered : s2 ? bounded : s3 ? complete : left); }
