@@ -1,20 +1,29 @@
-// Exact predicates: floating-point filter, then expansion arithmetic (first on the differences, when they
-// are exact), then GMP.
+// Exact predicates: floating-point filter, then the exact path in stages (staged_sign.hpp): when the differences
+// are exact, the order of two rounded products; then the leading terms and a bounded tail; then the complete
+// exact sum; GMP beyond the expansions' range.
 #include "ricochet/predicates.hpp"
 
-#include <atomic>
 #include <cmath>
 #include <initializer_list>
+#include <optional>
 
 #include <gmpxx.h>
+
+#include "orient_filter.hpp"
+#include "staged_sign.hpp"
 
 namespace ricochet::exact {
 namespace {
 
-// Generous bound for a sum of squares of differences (each square off by ≤ 3ε, sums ≤ 2ε more).
-constexpr double k_sq = 8.0 * k_eps;
-// Expansion arithmetic is exact when no product underflows or overflows: every non-zero input lies
-// in [2^-450, 2^450], so products lie in [2^-900, 2^900] with all 106 bits representable.
+using staged::Split;
+using staged::two_diff;
+using staged::two_sum;
+
+// Filter bound for the circle tests, times 4·d2 + r2 (point_circle) or 4·d2 + 3·r2 (circle_circle), derived
+// above each use.
+constexpr double k_sq = (1.0 + 16.0 * k_eps) * k_eps;
+// Stage 3's range (staged_sign.hpp): every non-zero input in [2^-450, 2^450], so that the differences, their tails
+// and all their products are multiples of 2^-1004 below 2^903, none underflowing or overflowing.
 constexpr double k_exp_min = 0x1p-450;
 constexpr double k_exp_max = 0x1p450;
 // compare_crossings: the rounding of its two products l, r and of D = l − r, each ≤ ε relative; 4ε leaves room.
@@ -23,10 +32,10 @@ constexpr double k_cross_round = 4.0 * k_eps;
 // an upper bound, so the filter never vouches for a sign it should not.
 constexpr double k_cross_slack = 1.0 + 8.0 * k_eps;
 
-std::atomic<unsigned long long> g_expansion{0};
-std::atomic<unsigned long long> g_gmp{0};
+// Per thread: counting costs a plain increment, and threads stepping balls side by side share no cache line.
+thread_local FallbackCounts t_counts;
 
-int sign(double v) { return (v > 0.0) - (v < 0.0); }
+int sign(double v) { return staged::sign_of(v); }
 int sign(const mpq_class& v) { return sgn(v); }
 
 bool expansion_safe(std::initializer_list<double> xs) {
@@ -37,105 +46,32 @@ bool expansion_safe(std::initializer_list<double> xs) {
     return true;
 }
 
-// An exact sum of doubles, kept as a non-overlapping expansion in increasing magnitude.
-struct Expansion {
-    double c[40];
-    int n = 0;
+/// Counts a sign found without GMP in the given stage's counter, and returns it.
+int counted(int s, unsigned long long FallbackCounts::*stage) {
+    ++t_counts.expansion;
+    ++(t_counts.*stage);
+    return s;
+}
 
-    // Knuth's two-sum: a + b = x + y exactly.
-    static void two_sum(double a, double b, double& x, double& y) {
-        x = a + b;
-        const double bv = x - a;
-        const double av = x - bv;
-        y = (a - av) + (b - bv);
-    }
-    // Shewchuk's grow-expansion with zero elimination: adds b exactly.
-    void add(double b) {
-        double q = b;
-        int h = 0;
-        for (int i = 0; i < n; ++i) {
-            double qn, err;
-            two_sum(q, c[i], qn, err);
-            q = qn;
-            if (err != 0.0) c[h++] = err;
-        }
-        if (q != 0.0 || h == 0) c[h++] = q;
-        n = h;
-    }
-    // Adds k·a·b exactly (k = ±1 or ±2): an exact product is a·b = p + fma(a, b, −p).
-    void add_product(double a, double b, double k = 1.0) {
-        const double p = a * b;
-        const double e = std::fma(a, b, -p);
-        add(k * p);
-        add(k * e);
-    }
-    // The largest component carries the sign of the whole sum.
-    int sign() const { return exact::sign(c[n - 1]); }
-};
+/// Counts a sign found by GMP, and returns it.
+int gmp_sign(const mpq_class& v) {
+    ++t_counts.gmp;
+    return sign(v);
+}
 
 mpq_class q(double x) { return mpq_class(x); }
 
-// The first stage of every expansion path: when the differences a predicate is made of are exact, its
-// polynomial has two or three products instead of six to nine, and the exact sign costs a fraction.
-
-/// a − b rounded, and whether that is exact (Shewchuk's two-diff: its rounding error is zero).
-struct Diff {
-    double d;
-    bool exact;
-};
-Diff diff(double a, double b) {
-    const double x = a - b;
-    const double bv = a - x;
-    const double av = x + bv;
-    return {x, (a - av) + (bv - b) == 0.0};
+/// sign((A + a)(B + b) − (C + c)(D + d)) in stages 1 and 2 (staged_sign.hpp), with l = fl(A·B), r = fl(C·D).
+[[gnu::always_inline]] inline std::optional<int> det_sign(Split p, Split q, Split u, Split v, double l, double r) {
+    if (const auto s = staged::ordered(p, q, u, v, l, r)) return counted(*s, &FallbackCounts::ordered);
+    if (const auto s = staged::bounded_det(p, q, u, v, l, r)) return counted(*s, &FallbackCounts::bounded);
+    return std::nullopt;
 }
 
-/// sign(a·b − c·d) exactly, for factors in the expansion range or exact differences of such numbers
-/// (multiples of 2^−502 of magnitude at most 2^451: every product and its rounding error is a double).
-/// Rounding is monotonic, so fl(a·b) ≠ fl(c·d) already orders the exact products; when they are equal,
-/// a·b − c·d is the difference of the two rounding errors (each exact by fma), and a rounded difference
-/// of two doubles keeps its sign.
-int sign_of_product_difference(double a, double b, double c, double d) {
-    const double l = a * b;
-    const double r = c * d;
-    if (l != r) return l > r ? 1 : -1;
-    return sign(std::fma(a, b, -l) - std::fma(c, d, -r));
-}
-
-/// sign(dx² + dy² − r²) exactly, for exact differences dx, dy and r of the same kind.
-int sign_of_squares(double dx, double dy, double r) {
-    Expansion s;
-    s.add_product(dx, dx);
-    s.add_product(dy, dy);
-    s.add_product(r, r, -1.0);
-    return s.sign();
-}
-
-int orient_exact(Vec2 a, Vec2 b, Vec2 c) {
-    if (expansion_safe({a.x, a.y, b.x, b.y, c.x, c.y})) {
-        g_expansion.fetch_add(1, std::memory_order_relaxed);
-        // (a − c) × (b − c) = (ax − cx)·(by − cy) − (ay − cy)·(bx − cx), when the four differences are exact
-        const Diff d1 = diff(a.x, c.x), d2 = diff(b.y, c.y), d3 = diff(a.y, c.y), d4 = diff(b.x, c.x);
-        if (d1.exact && d2.exact && d3.exact && d4.exact) return sign_of_product_difference(d1.d, d2.d, d3.d, d4.d);
-        // = ax·by − ax·cy − cx·by − ay·bx + ay·cx + cy·bx  (the cx·cy terms cancel)
-        Expansion s;
-        s.add_product(a.x, b.y);
-        s.add_product(a.x, c.y, -1.0);
-        s.add_product(c.x, b.y, -1.0);
-        s.add_product(a.y, b.x, -1.0);
-        s.add_product(a.y, c.x);
-        s.add_product(c.y, b.x);
-        return s.sign();
-    }
-    g_gmp.fetch_add(1, std::memory_order_relaxed);
-    return sign((q(a.x) - q(c.x)) * (q(b.y) - q(c.y)) - (q(a.y) - q(c.y)) * (q(b.x) - q(c.x)));
-}
-
-// Filtered orient: the value, and whether its sign is certain.
+// orient's filter for compare_crossings (the same operations as orient_filter.hpp's): the value, its bound.
 struct Filtered {
     double value;
     double bound;
-    bool certain() const { return std::fabs(value) > bound; }
 };
 
 Filtered orient_filtered(Vec2 a, Vec2 b, Vec2 c) {
@@ -147,21 +83,79 @@ Filtered orient_filtered(Vec2 a, Vec2 b, Vec2 c) {
     return {l - r, k_ccw * sum};
 }
 
+// The last stage of direction_side: sign(e × d) as a complete sum, or by GMP. Out of line: rare.
+[[gnu::noinline]] int cross_complete(const Wall& w, Vec2 d) {
+    if (expansion_safe({w.p0.x, w.p0.y, w.p1.x, w.p1.y, d.x, d.y})) {
+        const Split ex = two_diff(w.p1.x, w.p0.x), ey = two_diff(w.p1.y, w.p0.y);
+        return counted(staged::complete_det(ex, {d.y, 0.0}, ey, {d.x, 0.0}), &FallbackCounts::complete);
+    }
+    return gmp_sign((q(w.p1.x) - q(w.p0.x)) * q(d.y) - (q(w.p1.y) - q(w.p0.y)) * q(d.x));
+}
+
+// The exact path of direction_side: sign(e × d) with e = P1 − P0, stages 1 and 2, then the last stage.
+[[gnu::noinline]] int cross_exact(const Wall& w, Vec2 d, double l, double r) {
+    // e × d = (x1 − x0)·dy − (y1 − y0)·dx; d's components are inputs, exact
+    const Split ex = two_diff(w.p1.x, w.p0.x), ey = two_diff(w.p1.y, w.p0.y);
+    if (const auto s = det_sign(ex, {d.y, 0.0}, ey, {d.x, 0.0}, l, r)) return *s;
+    return cross_complete(w, d);
+}
+
+// The last stage of point_circle: sign(|p − c|² − r²) as a complete sum, or by GMP. Out of line: rare.
+[[gnu::noinline]] int point_circle_complete(Vec2 p, const Circle& c) {
+    if (expansion_safe({p.x, p.y, c.c.x, c.c.y, c.r}))
+        return counted(staged::complete_squares(two_diff(p.x, c.c.x), two_diff(p.y, c.c.y), {c.r, 0.0}),
+                       &FallbackCounts::complete);
+    const mpq_class ex = q(p.x) - q(c.c.x), ey = q(p.y) - q(c.c.y), r = q(c.r);
+    return gmp_sign(ex * ex + ey * ey - r * r);
+}
+
+// The exact path of point_circle: stage 2, then the last stage. Out of line, so that the filter's call stays small,
+// and apart from the last stage, so that its own frame does too.
+[[gnu::noinline]] int point_circle_exact(Vec2 p, const Circle& c) {
+    if (const auto s = staged::bounded_squares(two_diff(p.x, c.c.x), two_diff(p.y, c.c.y), {c.r, 0.0}))
+        return counted(*s, &FallbackCounts::bounded);
+    return point_circle_complete(p, c);
+}
+
+// The last stage of circle_circle: sign(|cA − cB|² − (rA + rB)²) as a complete sum, or by GMP. Out of line: rare.
+[[gnu::noinline]] int circle_circle_complete(const Circle& a, const Circle& b) {
+    if (expansion_safe({a.c.x, a.c.y, b.c.x, b.c.y, a.r, b.r}))
+        return counted(staged::complete_squares(two_diff(a.c.x, b.c.x), two_diff(a.c.y, b.c.y), two_sum(a.r, b.r)),
+                       &FallbackCounts::complete);
+    const mpq_class ex = q(a.c.x) - q(b.c.x), ey = q(a.c.y) - q(b.c.y), r = q(a.r) + q(b.r);
+    return gmp_sign(ex * ex + ey * ey - r * r);
+}
+
+// The exact path of circle_circle, as point_circle's.
+[[gnu::noinline]] int circle_circle_exact(const Circle& a, const Circle& b) {
+    if (const auto s = staged::bounded_squares(two_diff(a.c.x, b.c.x), two_diff(a.c.y, b.c.y), two_sum(a.r, b.r)))
+        return counted(*s, &FallbackCounts::bounded);
+    return circle_circle_complete(a, b);
+}
+
+// The last stage of orient: sign((a − c) × (b − c)) as a complete sum, or by GMP. Out of line: rare.
+[[gnu::noinline]] int orient_complete(Vec2 a, Vec2 b, Vec2 c) {
+    if (expansion_safe({a.x, a.y, b.x, b.y, c.x, c.y})) {
+        const Split d1 = two_diff(a.x, c.x), d2 = two_diff(b.y, c.y), d3 = two_diff(a.y, c.y), d4 = two_diff(b.x, c.x);
+        return counted(staged::complete_det(d1, d2, d3, d4), &FallbackCounts::complete);
+    }
+    return gmp_sign((q(a.x) - q(c.x)) * (q(b.y) - q(c.y)) - (q(a.y) - q(c.y)) * (q(b.x) - q(c.x)));
+}
+
 }  // namespace
 
-int orient(Vec2 a, Vec2 b, Vec2 c) {
-    // (a − c) × (b − c) equals (b − a) × (c − a): the same signed double area.
-    const Filtered f = orient_filtered(a, b, c);
-    if (f.certain()) return sign(f.value);
-    // Both products have an exactly-zero factor (x − y = 0 exactly iff x = y): the area is exactly 0.
-    if ((a.x == c.x || b.y == c.y) && (a.y == c.y || b.x == c.x)) return 0;
-    return orient_exact(a, b, c);
+// The exact path of orient, out of line so that the filter (orient_filter.hpp) stays small where it is inlined:
+// stages 1 and 2, then the last stage, apart so that this frame stays small too.
+[[gnu::noinline]] int detail::orient_exact(Vec2 a, Vec2 b, Vec2 c, double l, double r) {
+    // (a − c) × (b − c) = (ax − cx)·(by − cy) − (ay − cy)·(bx − cx), each difference as a head and a tail
+    const Split d1 = two_diff(a.x, c.x), d2 = two_diff(b.y, c.y), d3 = two_diff(a.y, c.y), d4 = two_diff(b.x, c.x);
+    if (const auto s = det_sign(d1, d2, d3, d4, l, r)) return *s;
+    return orient_complete(a, b, c);
 }
 
-int side(Vec2 p, const Wall& w) {
-    // BC = n·(p − P0) with n = (e_y, −e_x) is −e × (p − P0) = −orient(P0, P1, p).
-    return -orient(w.p0, w.p1, p);
-}
+int orient(Vec2 a, Vec2 b, Vec2 c) { return detail::orient(a, b, c); }
+
+int side(Vec2 p, const Wall& w) { return detail::side(p, w); }
 
 int direction_side(Vec2 d, const Wall& w) {
     // n·d = e_y·d_x − e_x·d_y = −(e × d)
@@ -171,21 +165,7 @@ int direction_side(Vec2 d, const Wall& w) {
     const double r = ey * d.x;
     const double sum = std::fabs(l) + std::fabs(r);
     if (sum >= k_tiny && std::isfinite(sum) && std::fabs(l - r) > k_ccw * sum) return -sign(l - r);
-    if (expansion_safe({w.p0.x, w.p0.y, w.p1.x, w.p1.y, d.x, d.y})) {
-        g_expansion.fetch_add(1, std::memory_order_relaxed);
-        // e × d = (x1 − x0)·dy − (y1 − y0)·dx, when e's two differences are exact
-        const Diff ex_ = diff(w.p1.x, w.p0.x), ey_ = diff(w.p1.y, w.p0.y);
-        if (ex_.exact && ey_.exact) return -sign_of_product_difference(ex_.d, d.y, ey_.d, d.x);
-        // = x1·dy − x0·dy − y1·dx + y0·dx
-        Expansion s;
-        s.add_product(w.p1.x, d.y);
-        s.add_product(w.p0.x, d.y, -1.0);
-        s.add_product(w.p1.y, d.x, -1.0);
-        s.add_product(w.p0.y, d.x);
-        return -s.sign();
-    }
-    g_gmp.fetch_add(1, std::memory_order_relaxed);
-    return -sign((q(w.p1.x) - q(w.p0.x)) * q(d.y) - (q(w.p1.y) - q(w.p0.y)) * q(d.x));
+    return -cross_exact(w, d, l, r);
 }
 
 int point_circle(Vec2 p, const Circle& c) {
@@ -195,26 +175,14 @@ int point_circle(Vec2 p, const Circle& c) {
     const double d2 = dx * dx + dy * dy;
     const double r2 = c.r * c.r;
     const double sum = d2 + r2;
-    if (sum >= k_tiny && std::isfinite(sum) && std::fabs(d2 - r2) > k_sq * sum) return sign(d2 - r2);
-    if (expansion_safe({p.x, p.y, c.c.x, c.c.y, c.r})) {
-        g_expansion.fetch_add(1, std::memory_order_relaxed);
-        // (px − cx)² + (py − cy)² − r², when the two differences are exact
-        const Diff ddx = diff(p.x, c.c.x), ddy = diff(p.y, c.c.y);
-        if (ddx.exact && ddy.exact) return sign_of_squares(ddx.d, ddy.d, c.r);
-        // = px² − 2·px·cx + cx² + py² − 2·py·cy + cy² − r²
-        Expansion s;
-        s.add_product(p.x, p.x);
-        s.add_product(p.x, c.c.x, -2.0);
-        s.add_product(c.c.x, c.c.x);
-        s.add_product(p.y, p.y);
-        s.add_product(p.y, c.c.y, -2.0);
-        s.add_product(c.c.y, c.c.y);
-        s.add_product(c.r, c.r, -1.0);
-        return s.sign();
-    }
-    g_gmp.fetch_add(1, std::memory_order_relaxed);
-    const mpq_class ex = q(p.x) - q(c.c.x), ey = q(p.y) - q(c.c.y), r = q(c.r);
-    return sign(ex * ex + ey * ey - r * r);
+    // V = D − r² with D = (px − cx)² + (py − cy)². Each term of d2 is its exact square times four factors (1 + δ),
+    // |δ| ≤ ε (difference, square twice, sum), so |d2 − D| ≤ ((1 + ε)⁴ − 1)·D ≤ 4ε(1 + 2ε)·d2/(1 − ε)⁴, and
+    // |r2 − r²| ≤ ε·r2/(1 − ε): |(d2 − r2) − V| ≤ ε(1 + 8ε)(4·d2 + r2). fl(d2 − r2) keeps the sign of d2 − r2 and
+    // errs by ≤ ε of it, and the bound fl(k_sq·fl(4·d2 + r2)) ≥ (1 + 16ε)(1 − ε)²·ε(4·d2 + r2) leaves that (1 + ε)
+    // and ≥ 4ε²·sum ≥ 2^-1004 more, far above the few 2^-1075 an underflowed square can add (sum ≥ k_tiny):
+    // |fl(d2 − r2)| beyond it gives sign(V). An overflowed 4·d2 makes the bound infinite: the filter declines.
+    if (sum >= k_tiny && std::isfinite(sum) && std::fabs(d2 - r2) > k_sq * (4.0 * d2 + r2)) return sign(d2 - r2);
+    return point_circle_exact(p, c);
 }
 
 int circle_circle(const Circle& a, const Circle& b) {
@@ -225,28 +193,11 @@ int circle_circle(const Circle& a, const Circle& b) {
     const double d2 = dx * dx + dy * dy;
     const double r2 = rs * rs;
     const double sum = d2 + r2;
-    if (sum >= k_tiny && std::isfinite(sum) && std::fabs(d2 - r2) > k_sq * sum) return sign(d2 - r2);
-    if (expansion_safe({a.c.x, a.c.y, b.c.x, b.c.y, a.r, b.r})) {
-        g_expansion.fetch_add(1, std::memory_order_relaxed);
-        // (ax − bx)² + (ay − by)² − (rA + rB)², when the two differences and the sum are exact
-        const Diff ddx = diff(a.c.x, b.c.x), ddy = diff(a.c.y, b.c.y), rsum = diff(a.r, -b.r);
-        if (ddx.exact && ddy.exact && rsum.exact) return sign_of_squares(ddx.d, ddy.d, rsum.d);
-        // = ax² − 2·ax·bx + bx² + ay² − 2·ay·by + by² − rA² − 2·rA·rB − rB²
-        Expansion s;
-        s.add_product(a.c.x, a.c.x);
-        s.add_product(a.c.x, b.c.x, -2.0);
-        s.add_product(b.c.x, b.c.x);
-        s.add_product(a.c.y, a.c.y);
-        s.add_product(a.c.y, b.c.y, -2.0);
-        s.add_product(b.c.y, b.c.y);
-        s.add_product(a.r, a.r, -1.0);
-        s.add_product(a.r, b.r, -2.0);
-        s.add_product(b.r, b.r, -1.0);
-        return s.sign();
-    }
-    g_gmp.fetch_add(1, std::memory_order_relaxed);
-    const mpq_class ex = q(a.c.x) - q(b.c.x), ey = q(a.c.y) - q(b.c.y), r = q(a.r) + q(b.r);
-    return sign(ex * ex + ey * ey - r * r);
+    // As in point_circle, with r2 = (rA + rB)² times three factors (sum, square twice): |r2 − (rA + rB)²| ≤
+    // 3ε(1 + 2ε)·r2/(1 − ε)³, so |(d2 − r2) − V| ≤ ε(1 + 8ε)(4·d2 + 3·r2); the bound k_sq·fl(4·d2 + fl(3·r2)) rounds
+    // three times, ≥ (1 + 16ε)(1 − ε)³·ε(4·d2 + 3·r2), still (1 + ε) and ≥ 3ε²·sum above it.
+    if (sum >= k_tiny && std::isfinite(sum) && std::fabs(d2 - r2) > k_sq * (4.0 * d2 + 3.0 * r2)) return sign(d2 - r2);
+    return circle_circle_exact(a, b);
 }
 
 int compare_crossings(Vec2 a, Vec2 b, const Wall& w1, const Wall& w2) {
@@ -265,16 +216,13 @@ int compare_crossings(Vec2 a, Vec2 b, const Wall& w1, const Wall& w2) {
                        k_cross_round * (std::fabs(l) + std::fabs(r));
     const double d = l - r;
     if (std::isfinite(err) && std::fabs(d) > k_cross_slack * err) return sign(d) * sa1 * sa2;
-    g_gmp.fetch_add(1, std::memory_order_relaxed);
     auto det = [](const Wall& w, Vec2 p) -> mpq_class {
         return (q(w.p0.x) - q(p.x)) * (q(w.p1.y) - q(p.y)) - (q(w.p0.y) - q(p.y)) * (q(w.p1.x) - q(p.x));
     };
     const mpq_class ea1 = det(w1, a), eb1 = det(w1, b), ea2 = det(w2, a), eb2 = det(w2, b);
-    return sign(ea2 * eb1 - ea1 * eb2) * sa1 * sa2;
+    return gmp_sign(ea2 * eb1 - ea1 * eb2) * sa1 * sa2;
 }
 
-FallbackCounts fallback_counts() {
-    return {g_expansion.load(std::memory_order_relaxed), g_gmp.load(std::memory_order_relaxed)};
-}
+FallbackCounts fallback_counts() { return t_counts; }
 
 }  // namespace ricochet::exact

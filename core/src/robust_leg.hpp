@@ -2,6 +2,7 @@
 // definition shared by the robust kernel (kernel_robust.cpp) and the batched decisions (batch.cpp).
 #pragma once
 
+#include "orient_filter.hpp"
 #include "ricochet/predicates.hpp"
 #include "ricochet/shapes.hpp"
 #include "ricochet/sweep.hpp"
@@ -20,8 +21,8 @@ inline Leg test_leg(Vec2 q, Vec2 b, const Wall& w) {
     // Degenerate: a zero-length wall has no normal, a zero-length leg no motion.
     if (w.p0 == w.p1 || q == b) return {Miss::degenerate};
     // Tests 1 and 2 on the exact signs of BC at both ends.
-    const int sq = exact::side(q, w);
-    const int sb = exact::side(b, w);
+    const int sq = exact::detail::side(q, w);
+    const int sb = exact::detail::side(b, w);
     if (sq < 0 && sb < 0) return {Miss::both_inside, sq, sb};
     if (sq > 0 && sb > 0) return {Miss::both_outside, sq, sb};
     // Test 3: both on the line, so the motion is along it, n·v = 0.
@@ -31,8 +32,8 @@ inline Leg test_leg(Vec2 q, Vec2 b, const Wall& w) {
     // u = −o0/(d × e), 1 − u = o1/(d × e), where o_k = orient(q, b, P_k) and sign(d × e) = −sign(sq).
     // The lecture's (B_i − P0)·e < 0 is u < 0: test 4, before P0; its (B_i − P1)·e > 0 is u > 1: test 5,
     // past P1.
-    if (exact::orient(q, b, w.p0) == -sq) return {Miss::before_p0, sq, sb};
-    if (exact::orient(q, b, w.p1) == sq) return {Miss::past_p1, sq, sb};
+    if (exact::detail::orient(q, b, w.p0) == -sq) return {Miss::before_p0, sq, sb};
+    if (exact::detail::orient(q, b, w.p1) == sq) return {Miss::past_p1, sq, sb};
     return {Miss::none, sq, sb};
 }
 

@@ -1,8 +1,11 @@
 // Exact geometric predicates on doubles: each returns the sign of a polynomial in its (double)
 // arguments exactly as if computed with real numbers. A floating-point filter answers almost every
-// call; when the rounded value is too close to zero to trust, an exact fallback decides: expansion
-// arithmetic (error-free sums and products, Shewchuk 1997) for inputs in the range where products
-// cannot underflow or overflow, GMP rationals beyond it. Valid for every finite input.
+// call; when the rounded value is too close to zero to trust, an exact path decides in stages, each
+// only when the one before cannot: for a determinant of exact differences, the order of its two rounded
+// products; the leading terms of the exact expansion and a rounded tail, when farther from zero than a
+// derived bound; the complete sum in expansion arithmetic (error-free sums and products, Shewchuk 1997).
+// Those need inputs in the range where products cannot underflow or overflow; beyond it GMP rationals
+// decide. Valid for every finite input.
 #pragma once
 
 #include "ricochet/shapes.hpp"
@@ -33,11 +36,19 @@ int circle_circle(const Circle& a, const Circle& b);
 /// s_k = a_k/(a_k − b_k). Returns sign(s_1 − s_2).
 int compare_crossings(Vec2 a, Vec2 b, const Wall& w1, const Wall& w2);
 
-/// How many calls the filter could not decide, since start (for benchmarks and the
-/// "skip what a scene doesn't need" report). Not thread-safe to read while others write; relaxed.
+/// How many calls the filter could not decide on the calling thread since it started, by what decided
+/// them (for benchmarks and the tests that reach each stage). Each thread counts its own calls.
 struct FallbackCounts {
+    /// Decided without GMP: the sum of the three stages below.
     unsigned long long expansion = 0;
+    /// Decided by GMP rationals (an input beyond the expansions' range, or compare_crossings).
     unsigned long long gmp = 0;
+    /// Exact differences whose two rounded products differ: their order is the sign.
+    unsigned long long ordered = 0;
+    /// The leading terms and a rounded tail, farther from zero than the bound on what was rounded or dropped.
+    unsigned long long bounded = 0;
+    /// The complete exact sum.
+    unsigned long long complete = 0;
 };
 FallbackCounts fallback_counts();
 

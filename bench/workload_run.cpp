@@ -1,0 +1,90 @@
+// One bench workload through one kernel, once, and what the exact predicates' fallbacks did: the program
+// callgrind counts instructions per query on (README, "Benchmarks"), the queries' loop in run_queries alone:
+//
+//   valgrind --tool=callgrind --toggle-collect='*run_queries*' ricochet_workload circle-circle robust 50000 1
+//
+//   ricochet_workload WORKLOAD [KERNEL] [N] [SEED]   defaults: robust, 50000 queries, seed 1
+//
+// WORKLOAD is a static test (point-circle, circle-circle, point-rect, rect-rect) or a sweep workload (uniform,
+// far, end-on-wall, at-endpoint, grazing, tiny-v, huge-v) of src/workloads.cpp, N queries of it from SEED.
+// Exit status 2 for an unknown workload or kernel, or a count or seed that is not a number.
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "ricochet/kernel.hpp"
+#include "ricochet/predicates.hpp"
+#include "workloads.hpp"
+
+using namespace ricochet;
+using namespace ricochet::bench;
+
+namespace {
+
+/// The static queries, answered by kernel k: how many are inside or overlapping.
+[[gnu::noinline]] long run_queries(const StaticWorkload& w, KernelId k) {
+    long yes = 0;
+    for (const StaticQuery& q : w.queries) {
+        switch (q.kind) {
+            case StaticKind::point_circle: yes += point_in_circle(k, q.p, q.a); break;
+            case StaticKind::circle_circle: yes += circles_overlap(k, q.a, q.b); break;
+            case StaticKind::point_rect: yes += point_in_rect(k, q.p, q.ra); break;
+            case StaticKind::rect_rect: yes += rects_overlap(k, q.ra, q.rb); break;
+        }
+    }
+    return yes;
+}
+
+/// The sweep queries, answered by kernel k: how many hit.
+[[gnu::noinline]] long run_queries(const SweepWorkload& w, KernelId k) {
+    long hits = 0;
+    for (const SweepQuery& q : w.queries) hits += sweep(k, q.bs, q.v, q.wall).hit();
+    return hits;
+}
+
+std::optional<std::uint64_t> number(const char* s) {
+    try {
+        std::size_t used = 0;
+        const unsigned long long v = std::stoull(s, &used);
+        if (s[used] != '\0') return std::nullopt;
+        return v;
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
+
+int usage(const std::string& what) {
+    fmt::print(stderr, "ricochet_workload: error: {}\nusage: ricochet_workload WORKLOAD [KERNEL] [N] [SEED]\n", what);
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2 || argc > 5) return usage("expected a workload, then optionally a kernel, a count and a seed");
+    const std::string name = argv[1];
+    const std::optional<KernelId> kernel = parse_kernel(argc > 2 ? argv[2] : "robust");
+    if (!kernel) return usage(fmt::format("unknown kernel '{}' (one of {})", argv[2], kernel_names()));
+    const std::optional<std::uint64_t> n = argc > 3 ? number(argv[3]) : 50000;
+    if (!n || *n == 0) return usage(fmt::format("the count must be a positive number, not '{}'", argv[3]));
+    const std::optional<std::uint64_t> seed = argc > 4 ? number(argv[4]) : 1;
+    if (!seed) return usage(fmt::format("the seed must be a number, not '{}'", argv[4]));
+
+    std::optional<long> answers;
+    for (const StaticWorkload& w : static_workloads(*n, *seed))
+        if (w.name == name) answers = run_queries(w, *kernel);
+    if (!answers)
+        for (const SweepWorkload& w : sweep_workloads(*n, *seed))
+            if (w.name == name) answers = run_queries(w, *kernel);
+    if (!answers) return usage(fmt::format("unknown workload '{}'", name));
+
+    const exact::FallbackCounts f = exact::fallback_counts();
+    fmt::print("{} {}: {} queries from seed {}, {} yes or hit; filter declined {}: ordered {}, bounded {}, "
+               "complete {}, gmp {}\n",
+               name, kernel_name(*kernel), *n, *seed, *answers, f.expansion + f.gmp, f.ordered, f.bounded,
+               f.complete, f.gmp);
+    return 0;
+}
