@@ -1,4 +1,4 @@
-// Issue 2's acceptance table: for generated near-degenerate sweeps (end point on the wall, aimed at
+// The four kernels' acceptance table: for generated near-degenerate sweeps (end point on the wall, aimed at
 // a wall's end point ± a few ulps, grazing, far from the origin), how many hit decisions each kernel
 // gets wrong against the exact kernel. Exit status 1 if robust gets any wrong.
 //
