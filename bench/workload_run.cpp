@@ -6,8 +6,11 @@
 //   ricochet_workload WORKLOAD [KERNEL] [N] [SEED]   defaults: robust, 50000 queries, seed 1
 //
 // WORKLOAD is a static test (point-circle, circle-circle, point-rect, rect-rect) or a sweep workload (uniform,
-// far, end-on-wall, at-endpoint, grazing, tiny-v, huge-v) of src/workloads.cpp, N queries of it from SEED.
+// far, end-on-wall, at-endpoint, grazing, tiny-v, huge-v) of src/workloads.cpp, N queries of it from SEED; or a
+// closed box (box, box-turned, box-far-1e6, box-far-1e12: N ball-frames, 8 balls of `ricochet bench --quick`'s
+// box stepped N/8 frames each, the loop in run_frames alone:  --toggle-collect='*run_frames*').
 // Exit status 2 for an unknown workload or kernel, or a count or seed that is not a number.
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -45,6 +48,23 @@ namespace {
     return hits;
 }
 
+/// The closed box's balls, stepped by kernel k for frames frames each: how many bounces.
+[[gnu::noinline]] long run_frames(const BoxWorkload& box, std::vector<Ball> balls, std::uint64_t frames, KernelId k) {
+    const std::vector<Wall> walls = make_box(box.offset, box.angle);
+    std::vector<HitEvent> hits;
+    StepScratch scratch;
+    long bounces = 0;
+    for (Ball& b : balls) {
+        BallMemory memory;
+        for (std::uint64_t f = 0; f < frames; ++f) {
+            hits.clear();
+            step_ball(k, b, memory, walls, hits, scratch);
+            bounces += static_cast<long>(hits.size());
+        }
+    }
+    return bounces;
+}
+
 std::optional<std::uint64_t> number(const char* s) {
     try {
         std::size_t used = 0;
@@ -79,6 +99,13 @@ int main(int argc, char** argv) {
     if (!answers)
         for (const SweepWorkload& w : sweep_workloads(*n, *seed))
             if (w.name == name) answers = run_queries(w, *kernel);
+    for (const BoxWorkload& box : box_workloads())
+        if (!answers && box.name == name) {
+            // 8 balls, as `ricochet bench --quick`, from SEED + 2 as the bench draws its boxes from its seed + 2.
+            constexpr std::uint64_t k_balls = 8;
+            const std::vector<Ball> balls = make_balls(box.offset, box.angle, k_balls, *seed + 2);
+            answers = run_frames(box, balls, std::max<std::uint64_t>(*n / k_balls, 1), *kernel);
+        }
     if (!answers) return usage(fmt::format("unknown workload '{}'", name));
 
     const exact::FallbackCounts f = exact::fallback_counts();

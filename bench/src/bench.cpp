@@ -222,28 +222,6 @@ std::vector<Row> bench_statics(const Methods& ms, const StaticWorkload& wl, int 
     return rows;
 }
 
-/// A closed box: the square [−1, 1]² turned by angle and moved to offset; walls share corner doubles.
-std::vector<Wall> make_box(Vec2 offset, double angle) {
-    const double c = std::cos(angle), s = std::sin(angle);
-    auto corner = [&](double x, double y) { return offset + Vec2{c * x - s * y, s * x + c * y}; };
-    const Vec2 a = corner(-1, -1), b = corner(1, -1), cc = corner(1, 1), d = corner(-1, 1);
-    return {{a, b}, {b, cc}, {cc, d}, {d, a}};
-}
-
-/// Balls inside the box (a margin of 0.1 from the walls), speeds 0.05..3 per frame.
-std::vector<Ball> make_balls(Vec2 offset, double angle, std::size_t n, std::uint64_t seed) {
-    Rng r(seed);
-    const double c = std::cos(angle), s = std::sin(angle);
-    std::vector<Ball> out;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double x = r.uniform(-0.9, 0.9), y = r.uniform(-0.9, 0.9);
-        const double sp = std::pow(10.0, r.uniform(std::log10(0.05), std::log10(3.0)));
-        const double th = r.uniform(0.0, 2 * std::numbers::pi);
-        out.push_back({offset + Vec2{c * x - s * y, s * x + c * y}, {sp * std::cos(th), sp * std::sin(th)}});
-    }
-    return out;
-}
-
 /// A peer has no stepper: the naive one a game developer writes around a ray cast (earliest hit over
 /// every wall but the one just left, reflect with v' = v − 2(v·n̂)n̂ in double, go on).
 void naive_frame(const Method& m, Ball& ball, std::span<const Wall> walls, std::vector<Vec2>& path) {
@@ -319,17 +297,6 @@ Row box_run(const Method& m, const std::string& name, Vec2 offset, double angle,
     }
     row.ns = secs * 1e9 / static_cast<double>(row.n);
     return row;
-}
-
-struct Box {
-    std::string name;
-    Vec2 offset;
-    double angle;
-};
-const std::vector<Box>& boxes() {
-    static const std::vector<Box> b = {{"box", {0, 0}, 0.0}, {"box-turned", {0, 0}, 0.3}, {"box-far-1e6", {1e6, -3e5}, 0.3},
-                                       {"box-far-1e12", {1e12, 3e11}, 0.3}};
-    return b;
 }
 
 /// Extra figures: batched decisions, exact sweep with its bounce.
@@ -521,7 +488,7 @@ int run_bench(const Options& opt) {
     const std::vector<SweepWorkload> sweeps = sweep_workloads(sz.queries, opt.seed);
     const std::vector<StaticWorkload> statics = static_workloads(sz.queries, opt.seed + 1);
     // Progress on stderr, a line as each workload starts: the table comes only at the end.
-    const std::size_t steps = sweeps.size() + statics.size() + boxes().size() + 1;
+    const std::size_t steps = sweeps.size() + statics.size() + box_workloads().size() + 1;
     std::size_t step = 0;
     auto starting = [&](std::string_view what, const std::string& name) {
         fmt::print(stderr, "bench: [{}/{}] {} {}\n", ++step, steps, what, name);
@@ -534,7 +501,7 @@ int run_bench(const Options& opt) {
         starting("static", wl.name);
         for (Row& r : bench_statics(ms, wl, sz.reps)) rows.push_back(std::move(r));
     }
-    for (const Box& b : boxes()) {
+    for (const BoxWorkload& b : box_workloads()) {
         starting("closed box", b.name);
         std::vector<Row> group;
         for (const auto& m : ms) {

@@ -216,4 +216,32 @@ std::vector<StaticWorkload> static_workloads(std::size_t n, std::uint64_t seed) 
     return out;
 }
 
+const std::vector<BoxWorkload>& box_workloads() {
+    static const std::vector<BoxWorkload> b = {{"box", {0, 0}, 0.0},
+                                               {"box-turned", {0, 0}, 0.3},
+                                               {"box-far-1e6", {1e6, -3e5}, 0.3},
+                                               {"box-far-1e12", {1e12, 3e11}, 0.3}};
+    return b;
+}
+
+std::vector<Wall> make_box(Vec2 offset, double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    auto corner = [&](double x, double y) { return offset + Vec2{c * x - s * y, s * x + c * y}; };
+    const Vec2 a = corner(-1, -1), b = corner(1, -1), cc = corner(1, 1), d = corner(-1, 1);
+    return {{a, b}, {b, cc}, {cc, d}, {d, a}};
+}
+
+std::vector<Ball> make_balls(Vec2 offset, double angle, std::size_t n, std::uint64_t seed) {
+    Rng r(seed);
+    const double c = std::cos(angle), s = std::sin(angle);
+    std::vector<Ball> out;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = r.uniform(-0.9, 0.9), y = r.uniform(-0.9, 0.9);
+        const double sp = std::pow(10.0, r.uniform(std::log10(0.05), std::log10(3.0)));
+        const double th = r.uniform(0.0, 2 * std::numbers::pi);
+        out.push_back({offset + Vec2{c * x - s * y, s * x + c * y}, {sp * std::cos(th), sp * std::sin(th)}});
+    }
+    return out;
+}
+
 }  // namespace ricochet::bench

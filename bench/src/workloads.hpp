@@ -71,6 +71,19 @@ SweepWorkload angle_workload(double angle, std::size_t n, std::uint64_t seed);
 /// nearest a point of w) or "grazing" (every leg crossing w's line by 1e-12 of its length).
 SweepWorkload one_wall_workload(const std::string& kind, const Wall& w, std::size_t n, std::uint64_t seed);
 
+/// A closed box: the square [−1, 1]² turned by angle and moved to offset, with balls inside.
+struct BoxWorkload {
+    std::string name;
+    Vec2 offset;
+    double angle = 0.0;
+};
+/// The closed boxes `ricochet bench` runs: box, box-turned, box-far-1e6, box-far-1e12.
+const std::vector<BoxWorkload>& box_workloads();
+/// A box's four walls; consecutive walls share their corner doubles.
+std::vector<Wall> make_box(Vec2 offset, double angle);
+/// n balls inside the box (a margin of 0.1 from the walls), speeds 0.05..3 per frame, from seed.
+std::vector<Ball> make_balls(Vec2 offset, double angle, std::size_t n, std::uint64_t seed);
+
 /// A query from a start and an end point: v = Be − Bs; false if fl(Bs + v) ≠ Be (the caller retries).
 bool make_query(Vec2 bs, Vec2 be, const Wall& w, SweepQuery& out);
 

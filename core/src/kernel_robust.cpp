@@ -103,12 +103,16 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
         bool found = false;
         std::uint32_t best = 0;
         int best_sq = 0, best_sb = 0;
+        // b's side of the wall bounced off, once its leg test has decided it (2: not tried).
+        int bounced_sb = 2;
         for (std::uint32_t i : detail::candidates(walls, index, q, b, scratch.candidates, scratch.all_walls)) {
             const Leg leg = test_leg(q, b, walls[i]);
             if (traced != nullptr) {
                 scratch.trace->decisions.push_back({i, leg.miss});
                 ++traced->decision_count;
             }
+            // q ≠ b here, so a test of a wall with a normal decided sb.
+            if (&walls[i] == bounced.wall && leg.miss != Miss::degenerate) bounced_sb = leg.sb;
             if (leg.miss != Miss::none) continue;
             if (found) {
                 const int c = exact::compare_crossings(q, b, walls[i], walls[best]);
@@ -123,16 +127,16 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
             // No wall meets q → b, so no wall is crossed and none is touched from a side. Straight on from a
             // bounce the ball stays on the side it met that wall from: an end point rounded just across its
             // line (beyond an end) is walked back.
-            const Vec2 end = bounced.wall != nullptr && exact::side(b, *bounced.wall) == -bounced.from
-                                 ? detail::make_safe({.q = q, .r = b, .memory = memory, .walls = walls, .index = index,
-                                                      .scratch = scratch, .keep = {bounced}})
-                                 : b;
-            // A contact stays while the ball slides along its wall's line on the closed segment.
-            BallMemory kept;
-            if (end != b) {
-                // Walked back: work out afresh which walls the new end lies on.
-                detail::arrive(q, end, memory, walls, index, scratch, kept);
-            }
+            if (bounced.wall != nullptr && bounced_sb == 2) bounced_sb = exact::side(b, *bounced.wall);
+            const detail::SafePoint safe =
+                bounced.wall != nullptr && bounced_sb == -bounced.from
+                    ? detail::make_safe({.q = q, .r = b, .memory = memory, .walls = walls, .index = index,
+                                         .scratch = scratch, .keep = {bounced}})
+                    : detail::SafePoint{b, {}};
+            const Vec2 end = safe.x;
+            // Walked back: the walls the new end lies on, worked out afresh. Else a contact stays while the ball
+            // slides along its wall's line on the closed segment.
+            BallMemory kept = end != b ? safe.arrived : BallMemory{};
             for (std::uint8_t k = 0; k < memory.count && end == b; ++k) {
                 const Wall& w = walls[memory.contacts[k].wall];
                 if (exact::side(end, w) == 0 && detail::on_closed_segment(end, w)) kept.contacts[kept.count++] = memory.contacts[k];
@@ -146,13 +150,12 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
             traced->hit = best;
             traced->hit_t = s;
         }
-        const Vec2 x = detail::make_safe({.q = q, .r = best_sb == 0 ? b : q + s * (b - q), .memory = memory,
-                                          .walls = walls, .index = index, .scratch = scratch,
-                                          .keep = {detail::Keep{&walls[best], best_sq}, bounced}});
+        const auto [x, arrived] =
+            detail::make_safe({.q = q, .r = best_sb == 0 ? b : q + s * (b - q), .memory = memory, .walls = walls,
+                               .index = index, .scratch = scratch,
+                               .keep = {detail::Keep{&walls[best], best_sq}, bounced}});
         bounced = {&walls[best], best_sq};
         bounced_wall = best;
-        BallMemory arrived;
-        detail::arrive(q, x, memory, walls, index, scratch, arrived);  // make_safe guarantees it fits
         now += s * rest;
         hits.push_back({best, now, x});
         // Bounce off the wall hit, then off each other wall met here whose far side v' still points

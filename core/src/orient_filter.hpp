@@ -18,9 +18,10 @@ inline int orient(Vec2 a, Vec2 b, Vec2 c) {
     const double l = (a.x - c.x) * (b.y - c.y);
     const double r = (a.y - c.y) * (b.x - c.x);
     const double sum = std::fabs(l) + std::fabs(r);
-    // Shewchuk's bound k_ccw; below k_tiny a product may have underflowed, and an overflowed sum declines too.
-    // fl(l − r) has the sign of l − r, which is (l > r) − (l < r).
-    if (sum >= k_tiny && std::isfinite(sum) && std::fabs(l - r) > k_ccw * sum) return (l > r) - (l < r);
+    // Shewchuk's bound k_ccw; below k_tiny a product may have underflowed. An overflowed sum declines without a
+    // test of its own: k_ccw·∞ = ∞, and |l − r| (∞ or NaN) is not greater. fl(l − r) has the sign of l − r,
+    // which is (l > r) − (l < r).
+    if (sum >= k_tiny && std::fabs(l - r) > k_ccw * sum) return (l > r) - (l < r);
     // Both products have an exactly-zero factor (x − y = 0 exactly iff x = y): the area is exactly 0.
     if ((a.x == c.x || b.y == c.y) && (a.y == c.y || b.x == c.x)) return 0;
     return orient_exact(a, b, c, l, r);

@@ -35,65 +35,70 @@ const Contact* find_contact(const BallMemory& memory, std::uint32_t w) {
     return nullptr;
 }
 
-bool arrive(Vec2 q, Vec2 r, const BallMemory& before, std::span<const Wall> walls, const WallIndex* index,
-            StepScratch& scratch, BallMemory& out) {
-    if (q == r) {
-        out = before;
-        return true;
+namespace {
+
+/// The arrival rule for one wall w (index i), given the sides sq and sr of q and r: a wall whose closed
+/// segment holds r and whose line q is off becomes a contact with q's side; a wall q → r runs along keeps
+/// the contact before had on it (sliding along it), if any. False if out is full.
+bool arrive_at(std::uint32_t i, const Wall& w, Vec2 r, int sq, int sr, const BallMemory& before, BallMemory& out) {
+    if (sr != 0 || !on_closed_segment(r, w)) return true;
+    // Arriving along the wall's line: keep the side it had come from if it was lying on this wall
+    // already (sliding along it), else there is nothing to remember.
+    Contact c{i, static_cast<std::int8_t>(sq)};
+    if (sq == 0) {
+        const Contact* kept = find_contact(before, i);
+        if (kept == nullptr) return true;
+        c = *kept;
     }
-    out.count = 0;
-    for (std::uint32_t i : candidates(walls, index, q, r, scratch.touching, scratch.all_walls)) {
-        const Wall& w = walls[i];
-        if (exact::side(r, w) != 0 || !on_closed_segment(r, w)) continue;
-        const int from = exact::side(q, w);
-        // Arriving along the wall's line: keep the side it had come from if it was lying on this wall
-        // already (sliding along it), else there is nothing to remember.
-        if (from == 0) {
-            const Contact* kept = find_contact(before, i);
-            if (kept == nullptr) continue;
-            if (out.count == out.contacts.size()) return false;
-            out.contacts[out.count++] = *kept;
-            continue;
-        }
-        if (out.count == out.contacts.size()) return false;
-        out.contacts[out.count++] = {i, static_cast<std::int8_t>(from)};
-    }
-    // Deterministic order, whatever order the index answered in.
-    std::sort(out.contacts.begin(), out.contacts.begin() + out.count,
-              [](const Contact& a, const Contact& b) { return a.wall < b.wall; });
+    if (out.count == out.contacts.size()) return false;
+    out.contacts[out.count++] = c;
     return true;
 }
 
+}  // namespace
+
 bool piece_allowed(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wall> walls, const WallIndex* index,
-                   StepScratch& scratch) {
-    if (q == r) return true;
+                   StepScratch& scratch, BallMemory& arrived) {
+    if (q == r) {
+        arrived = memory;
+        return true;
+    }
     for (std::uint8_t k = 0; k < memory.count; ++k) {
         const Contact& c = memory.contacts[k];
         if (exact::side(r, walls[c.wall]) == -c.side) return false;
     }
+    arrived = BallMemory{};
     for (std::uint32_t i : candidates(walls, index, q, r, scratch.candidates, scratch.all_walls)) {
         const Wall& w = walls[i];
         const int sq = exact::side(q, w);
         const int sr = exact::side(r, w);
-        if (sq * sr >= 0) continue;
-        // Strictly opposite sides: the piece crosses the line; it tunnels if P0 and P1 are not
-        // strictly on one side of the line q → r.
-        if (exact::orient(q, r, w.p0) * exact::orient(q, r, w.p1) <= 0) return false;
+        if (sq * sr < 0) {
+            // Strictly opposite sides: the piece crosses the line; it tunnels if P0 and P1 are not
+            // strictly on one side of the line q → r.
+            if (exact::orient(q, r, w.p0) * exact::orient(q, r, w.p1) <= 0) return false;
+            continue;
+        }
+        if (!arrive_at(i, w, r, sq, sr, memory, arrived)) return false;
     }
-    BallMemory arrived;
-    return arrive(q, r, memory, walls, index, scratch, arrived);
+    // Deterministic order, whatever order the index answered in.
+    std::sort(arrived.contacts.begin(), arrived.contacts.begin() + arrived.count,
+              [](const Contact& a, const Contact& b) { return a.wall < b.wall; });
+    return true;
 }
 
-Vec2 make_safe(const SafePiece& piece) {
+SafePoint make_safe(const SafePiece& piece) {
     const Vec2 q = piece.q, r = piece.r;
+    SafePoint out{r, {}};
     const auto ok = [&](Vec2 c) {
         // A nearly parallel leg can round a point just past a line while the piece to it passes the line
         // beyond the wall's end: no tunnel, but the ball would sit on a wall's far side after bouncing off it.
         for (const Keep& k : piece.keep)
             if (k.wall != nullptr && k.from != 0 && exact::side(c, *k.wall) == -k.from) return false;
-        return piece_allowed(q, c, piece.memory, piece.walls, piece.index, piece.scratch);
+        if (!piece_allowed(q, c, piece.memory, piece.walls, piece.index, piece.scratch, out.arrived)) return false;
+        out.x = c;
+        return true;
     };
-    if (ok(r)) return r;
+    if (ok(r)) return out;
     // Walk back from r towards q: first by 1, 2, 4, … ulps of the piece's largest coordinate M, as
     // fractions g of the piece (one ulp of M is about g = 2^-52·M / |d|∞ of it), so a point rounded a few
     // ulps across a line comes back within a few ulps (the `accuracy` check holds robust's hit points to
@@ -108,10 +113,11 @@ Vec2 make_safe(const SafePiece& piece) {
     // loop runs at most 60 times.
     for (double g = std::max(m * 0x1p-52 / d_inf, 0x1p-60); g < 0.5; g *= 2.0) {
         const Vec2 c = q + (1.0 - g) * d;
-        if (c != r && ok(c)) return c;
+        if (c != r && ok(c)) return out;
     }
-    const Vec2 half = q + 0.5 * d;
-    return ok(half) ? half : q;
+    if (ok(q + 0.5 * d)) return out;
+    // q itself, where the ball already is: the piece q → q arrives with the contacts it has.
+    return {q, piece.memory};
 }
 
 }  // namespace ricochet::detail

@@ -166,21 +166,57 @@ TEST(Promise, RobustBounceMatchesExactForWellConditionedHits) {
     EXPECT_GT(checked, 5000);
 }
 
+/// A memory with one contact: wall w, met from side.
+BallMemory arrived_on(std::uint32_t w, int side) {
+    BallMemory m;
+    m.contacts[0] = {w, static_cast<std::int8_t>(side)};
+    m.count = 1;
+    return m;
+}
+
 TEST(Promise, APieceThroughAWallsEndPointIsNotAllowed) {
     // q → r crosses the line y = 0 from below to above exactly through P0 = (1, 0), the end of the closed
     // segment: kernel.hpp's no-tunnelling definition counts that, so make_safe may not accept r.
     const std::vector<Wall> walls = {{{1, 0}, {5, 0}}};
     StepScratch scratch;
     const BallMemory none;
-    EXPECT_FALSE(detail::piece_allowed({0, -1}, {2, 1}, none, walls, nullptr, scratch));
+    BallMemory arrived;
+    EXPECT_FALSE(detail::piece_allowed({0, -1}, {2, 1}, none, walls, nullptr, scratch, arrived));
     EXPECT_TRUE(truth::PathFollower(walls, std::vector<Ball>{{{0, -1}, {}}}).advance(0, {2, 1}) == 0);
     // Just beside the end point it passes beyond the wall: allowed, and no tunnel.
-    EXPECT_TRUE(detail::piece_allowed({0, -1}, {1.5, 1}, none, walls, nullptr, scratch));
+    EXPECT_TRUE(detail::piece_allowed({0, -1}, {1.5, 1}, none, walls, nullptr, scratch, arrived));
     EXPECT_TRUE(truth::PathFollower(walls, std::vector<Ball>{{{0, -1}, {}}}).advance(0, {1.5, 1}) == -1);
     // Through the other end, P1 = (5, 0), and with the wall's ends swapped: the same.
-    EXPECT_FALSE(detail::piece_allowed({4, -1}, {6, 1}, none, walls, nullptr, scratch));
+    EXPECT_FALSE(detail::piece_allowed({4, -1}, {6, 1}, none, walls, nullptr, scratch, arrived));
     const std::vector<Wall> swapped = {{{5, 0}, {1, 0}}};
-    EXPECT_FALSE(detail::piece_allowed({0, -1}, {2, 1}, none, swapped, nullptr, scratch));
+    EXPECT_FALSE(detail::piece_allowed({0, -1}, {2, 1}, none, swapped, nullptr, scratch, arrived));
+}
+
+TEST(Promise, AnAllowedPieceSaysWhichWallsItArrivesOn) {
+    // The wall y = 0 from (1, 0) to (5, 0): n = (e_y, −e_x) = (0, −4), so q = (3, −1) is on its outer side (+1).
+    const std::vector<Wall> walls = {{{1, 0}, {5, 0}}, {{3, 0}, {3, 5}}};
+    StepScratch scratch;
+    const BallMemory none;
+    BallMemory arrived;
+    // Ending on the segment, from outside: a contact with the wall, on the side it came from; the second wall's
+    // end point (3, 0) is the same point, and q = (3, −1) lies on that wall's line: no contact there.
+    ASSERT_TRUE(detail::piece_allowed({3, -1}, {3, 0}, none, walls, nullptr, scratch, arrived));
+    ASSERT_EQ(arrived.count, 1);
+    EXPECT_EQ(arrived.contacts[0].wall, 0u);
+    EXPECT_EQ(arrived.contacts[0].side, 1);
+    // Ending on the line beyond the segment's end: no contact.
+    ASSERT_TRUE(detail::piece_allowed({7, -1}, {7, 0}, none, walls, nullptr, scratch, arrived));
+    EXPECT_EQ(arrived.count, 0);
+    // Sliding along the first wall from a contact keeps it; a piece that does not move keeps the memory as it is.
+    ASSERT_TRUE(detail::piece_allowed({3, 0}, {4, 0}, arrived_on(0, 1), walls, nullptr, scratch, arrived));
+    ASSERT_EQ(arrived.count, 1);
+    EXPECT_EQ(arrived.contacts[0].side, 1);
+    ASSERT_TRUE(detail::piece_allowed({4, 0}, {4, 0}, arrived_on(1, -1), walls, nullptr, scratch, arrived));
+    ASSERT_EQ(arrived.count, 1);
+    EXPECT_EQ(arrived.contacts[0].wall, 1u);
+    // Sliding along a wall the ball was not on: nothing to remember.
+    ASSERT_TRUE(detail::piece_allowed({1.5, 0}, {2.5, 0}, none, walls, nullptr, scratch, arrived));
+    EXPECT_EQ(arrived.count, 0);
 }
 
 TEST(Promise, TheAcceptedRangeIncludesItsLimit) {

@@ -28,7 +28,6 @@ struct StepTrace;  // step_trace.hpp
 /// Scratch space reused across calls to step_ball (keeps the hot loop free of allocation).
 struct StepScratch {
     std::vector<std::uint32_t> candidates;
-    std::vector<std::uint32_t> touching;
     std::vector<std::uint32_t> all_walls;  ///< 0, 1, …, n − 1: every wall, when there is no index
     /// If set, step_ball fills it with the frame's legs, decisions and reflections (appending; the caller
     /// clears it). Unset, a step pays one null test per leg and per reflection.
