@@ -95,7 +95,7 @@ TEST(SceneLog, EveryMalformedKindNamesItsPlace) {
     const std::vector<Bad> cases = {
         {"unknown directive", "ricochet 1\nwal 0 0 1 1\n", "2:1: error: unknown directive 'wal'"},
         {"missing token", "ricochet 1\nwall 0 0 1\n", "2:11: error: 'wall' needs X0 Y0 X1 Y1: missing Y1"},
-        {"extra token", "ricochet 1\nball 0 0 1 1 7\n", "2:14: error: unexpected '7' after 'ball' (X Y VX VY expected)"},
+        {"extra token", "ricochet 1\nball 0 0 1 1 1 7\n", "2:16: error: unexpected '7' after 'ball' (X Y VX VY [R] expected)"},
         {"bad number", "ricochet 1\nball 0 0x 1 1\n", "2:8: error: bad Y: '0x' is not a number"},
         {"plus sign", "ricochet 1\nball +1 0 1 1\n", "2:6: error: bad X: '+1' is not a number"},
         {"double minus", "ricochet 1\nball --1 0 1 1\n", "2:6: error: bad X: '--1' is not a number"},
