@@ -68,6 +68,22 @@ void World::append_overlaps(std::vector<Event>& out) const {
     for (std::size_t i = 0; i < balls_.size(); ++i) {
         const auto ball = static_cast<std::uint32_t>(i);
         const Vec2 p = balls_[i].pos;
+        const double R = balls_[i].r;
+        if (is_disc(balls_[i])) {
+            // A disc overlaps a circle when |p − c| ≤ R + r (circles_overlap), and a rectangle when the rectangle's
+            // point nearest to p, clamp(p) (exact: each coordinate is p's or an edge's), is within R of p. Every
+            // shape is tried: the static index answers for points.
+            for (std::uint32_t k = 0; k < circles_.size(); ++k)
+                if (circles_overlap(kernel_, Circle{p, R}, circles_[k]))
+                    out.push_back({Event::Kind::overlap, frame_, ball, Event::Shape::circle, k, {}, {}});
+            for (std::uint32_t k = 0; k < rects_.size(); ++k) {
+                const Rect& r = rects_[k];
+                const Vec2 near{std::clamp(p.x, r.left, r.right), std::clamp(p.y, r.bottom, r.top)};
+                if (point_in_circle(kernel_, near, Circle{p, R}))
+                    out.push_back({Event::Kind::overlap, frame_, ball, Event::Shape::rect, k, {}, {}});
+            }
+            continue;
+        }
         const auto circle = [&](std::uint32_t k) {
             if (point_in_circle(kernel_, p, circles_[k]))
                 out.push_back({Event::Kind::overlap, frame_, ball, Event::Shape::circle, k, {}, {}});

@@ -113,7 +113,7 @@ TEST(DiscFormat, OnlyChecksDefinedForDiscsMayBeListed) {
         }
     }
     // The whole-log checks of the expect lines come first.
-    EXPECT_EQ(diag("ricochet 1\ncheck speed\nbumper 0 0 1\nexpect state 0 0 0 0 0 0\n"),
+    EXPECT_EQ(diag("ricochet 1\ncheck oracle\nbumper 0 0 1\nexpect state 0 0 0 0 0 0\n"),
               "t.scene:4:16: error: expect state for ball 0 but the log has 0 balls");
 }
 
@@ -136,6 +136,14 @@ TEST(DiscFormat, AKernelThatCannotStepThemRefusesTheScene) {
     const Scene bumper = parse_ok("ricochet 1\nframes 1\nball 0 0 1 1\nbumper 3 3 1\n");
     for (KernelId k : k_all_kernels) {
         const std::string name(kernel_name(k));
+        if (k == KernelId::robust) {
+            // robust steps both (disc/robust_disc.cpp).
+            EXPECT_EQ(unsupported_scene(k, disc.balls, 0), std::nullopt);
+            EXPECT_EQ(unsupported_scene(k, bumper.balls, 1), std::nullopt);
+            EXPECT_NO_THROW(World(disc, k));
+            EXPECT_NO_THROW(World(bumper, k));
+            continue;
+        }
         EXPECT_EQ(unsupported_scene(k, disc.balls, 0), "kernel '" + name + "' steps point balls only: ball 1 has radius 0.5");
         EXPECT_EQ(unsupported_scene(k, bumper.balls, 1),
                   "kernel '" + name + "' does not step bumpers: the scene has 1 (bumper 0 first)");
@@ -153,9 +161,9 @@ TEST(DiscFormat, AKernelThatCannotStepThemRefusesTheScene) {
 
 TEST(DiscFormat, RunCheckedRefusesAnUndefinedCheckInsteadOfSkippingIt) {
     const Scene disc = parse_ok("ricochet 1\nframes 1\nball 0 0 1 1 0.5\n");
-    const Check speed[] = {Check::speed};
-    EXPECT_EQ(refusal(disc, KernelId::robust, speed), "check 'speed' is not defined for discs and bumpers yet");
-    EXPECT_THROW(run_checked(disc, KernelId::robust, 1, speed), UnsupportedScene);
+    const Check oracle[] = {Check::oracle};
+    EXPECT_EQ(refusal(disc, KernelId::robust, oracle), "check 'oracle' is not defined for discs and bumpers yet");
+    EXPECT_THROW(run_checked(disc, KernelId::robust, 1, oracle), UnsupportedScene);
 }
 
 }  // namespace

@@ -25,12 +25,13 @@ enum class Check : std::uint8_t {
     bounce_side,
     accuracy,
     event_order,
+    penetration,
 };
 /// Every check, in the order of the enumeration.
-inline constexpr std::array<Check, 14> k_all_checks = {
-    Check::no_tunnel, Check::symmetry,    Check::boundary,    Check::speed,      Check::deterministic,
+inline constexpr std::array<Check, 15> k_all_checks = {
+    Check::no_tunnel, Check::symmetry,    Check::boundary,    Check::speed,       Check::deterministic,
     Check::oracle,    Check::swap,        Check::translation, Check::broad_phase, Check::round_trip,
-    Check::no_escape, Check::bounce_side, Check::accuracy,    Check::event_order};
+    Check::no_escape, Check::bounce_side, Check::accuracy,    Check::event_order, Check::penetration};
 /// The check's name as logs spell it ("no-tunnel", …).
 std::string_view check_name(Check c);
 /// The check called name, or nothing.

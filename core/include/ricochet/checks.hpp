@@ -105,10 +105,19 @@
 //                  hits and bumps (none at frame 0), then its state, then every overlap, ball-major, circles before
 //                  rects, each by index and once; each event carries its frame's number and names a ball,
 //                  wall, bumper, circle or rect of the scene (a state index 0 and no shape, a hit or bump no shape).
+//   penetration    Bounded penetration, with δ = 0: for each ball of radius R and each wall (reach ρ = R) and
+//                  bumper of radius r (reach ρ = R + r, the exact sum), once a printed point of the ball's path
+//                  (its start, a hit or bump point, a state) is at least ρ from it, every later piece of the path
+//                  (closed segment between consecutive printed points) is at least ρ from it: the wall's closed
+//                  segment, the bumper's centre. Decided exactly on the printed doubles (truth::clear_of_wall,
+//                  truth::clear_of_circle). A ball that starts closer is held to an obstacle only from its first
+//                  printed point that is clear of it. Point balls among walls alone (ρ = 0) always hold.
 //
 // Discs and bumpers: in a scene with a disc or a bumper only the checks defined_for_discs (check.hpp) names are
-// defined, each as written above: deterministic, broad-phase, round-trip, event-order (a bump names a bumper of
-// the scene and no shape). run_checked refuses any other (UnsupportedScene), the reader rejects its `check` line.
+// defined: no-tunnel, speed, no-escape (each as written above, read for the disc's centre: its printed path, its
+// velocity; m counts the bounces off bumpers and the corner reflections too), deterministic, broad-phase,
+// round-trip, event-order (a bump names a bumper of the scene and no shape) and penetration. run_checked refuses
+// any other (UnsupportedScene), the reader rejects its `check` line.
 //
 // speed, oracle and accuracy read the frame's StepTrace: each ball is stepped again from its state and memory before
 // the frame with a trace (the same wall index); that step must end in the run's state bit for bit, else
