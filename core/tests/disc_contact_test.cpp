@@ -154,6 +154,23 @@ TEST(DiscContact, TiesAreExact) {
     EXPECT_EQ(compare(joint, of(k_floor), *f, of(higher), *h), 1);
 }
 
+TEST(DiscContact, AnAcuteWedgeMeetsBothFacesAtOnce) {
+    // The wedge (0, 0)→(100, 3) and (100, −3)→(0, 0), a disc of R = 1 down its axis from (90, 0) to (0, 0).
+    // A: n = (3, −100), n·(q − P0) = 270, n·d = −270; B: n = (3, 100), n·(q − (100, −3)) = −30 + 300 = 270,
+    // n·d = −270: the same t_f = (270 − √10009)/270 ≈ 0.6295 on both faces (x ≈ 33.3, inside both), an exact tie.
+    const Wall a{{0, 0}, {100, 3}}, b{{100, -3}, {0, 0}};
+    const Leg leg{{90, 0}, {0, 0}, 1.0};
+    const auto ca = first_contact(leg, a), cb = first_contact(leg, b);
+    ASSERT_TRUE(ca && cb);
+    EXPECT_EQ(ca->part, Part::face);
+    EXPECT_EQ(cb->part, Part::face);
+    EXPECT_EQ(compare(leg, of(a), *ca, of(b), *cb), 0);
+    EXPECT_NEAR(contact_time(leg, of(a), *ca), (270 - std::sqrt(10009.0)) / 270, 1e-15);
+    // One ulp off the axis (y = 2^−1074 up) reaches the lower face B last: A first.
+    const Leg up{{90, 4.9406564584124654e-324}, {0, 4.9406564584124654e-324}, 1.0};
+    EXPECT_EQ(compare(up, of(a), *first_contact(up, a), of(b), *first_contact(up, b)), -1);
+}
+
 TEST(DiscContact, FarFromTheOriginAndAtExtremeScales) {
     // The face example moved by 2^40 and scaled by 2^±200: the same exact answers (all exact in doubles).
     for (const double scale : {0x1p-200, 1.0, 0x1p200}) {
@@ -248,6 +265,14 @@ TEST(DiscContact, ClearanceIsExact) {
     EXPECT_FALSE(piece_clear({5, 3}, {5, -3}, 1.0, of(k_floor)));
     EXPECT_TRUE(crosses({5, 3}, {5, -3}, k_floor));
     EXPECT_FALSE(crosses({-5, 3}, {-5, -3}, k_floor));
+    // touches (a point ball's piece reaching a wall): an end on the segment, along its line, a point on it.
+    EXPECT_TRUE(touches({5, 3}, {5, 0}, k_floor));
+    EXPECT_FALSE(touches({5, 3}, {5, 4.9406564584124654e-324}, k_floor));
+    EXPECT_TRUE(touches({-3, 0}, {0, 0}, k_floor));
+    EXPECT_FALSE(touches({-3, 0}, {-4.9406564584124654e-324, 0}, k_floor));
+    EXPECT_TRUE(touches({10, 0}, {10, 0}, k_floor));
+    EXPECT_FALSE(touches({11, 0}, {11, 0}, k_floor));
+    EXPECT_TRUE(touches({11, -1}, {9, 1}, k_floor));
     // Around the end: (−0.6, 0.8) is exactly 1 from P0.
     EXPECT_EQ(point_clear({-0.6, 0.8}, 1.0, of(k_floor)),
               mpq_class(-0.6) * mpq_class(-0.6) + mpq_class(0.8) * mpq_class(0.8) >= 1);
