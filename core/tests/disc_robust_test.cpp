@@ -305,6 +305,14 @@ TEST(DiscRobust, PenetrationCatchesAPieceTooClose) {
     deep.balls = {{{5, 0.5}, {}, 1}};
     EXPECT_EQ(penetration_verdict(deep, {{state(1, {5, 0.25})}, {state(2, {5, 1})}}), "");
     EXPECT_NE(penetration_verdict(deep, {{state(1, {5, 1})}, {state(2, {5, 0.75})}}), "");
+    // A point ball and a bumper: r from the centre, exactly; a wall holds nothing for it (R = 0).
+    Scene point_bumper = s;
+    point_bumper.balls = {{{25, 20}, {}, 0}};
+    EXPECT_EQ(penetration_verdict(point_bumper, {{state(1, {22, 20})}, {hit(2, {30, 10}), state(2, {6, 10})},
+                                                 {state(3, {5, -3})}}),
+              "");
+    EXPECT_NE(penetration_verdict(point_bumper, {{state(1, {std::nextafter(22.0, 0.0), 20})}}), "");
+    EXPECT_NE(penetration_verdict(point_bumper, {{state(1, {22, 22})}, {state(2, {18, 18})}}), "");
     // Point balls among walls alone: nothing to hold.
     Scene point = s;
     point.bumpers.clear();
