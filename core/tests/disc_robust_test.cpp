@@ -243,6 +243,39 @@ TEST(DiscRobust, BumpersInABoxHoldEveryCheck) {
     EXPECT_GT(point_hits, 20);
 }
 
+TEST(DiscRobust, GridScenesFullOfTiesHoldEveryCheck) {
+    // Everything on a grid of halves, so that exact ties are everywhere: chains of walls sharing end points
+    // (straight, diagonal, 3-4-5), bumpers on grid points (radius 0 too), balls starting at exactly their radius
+    // from a wall or inside reach, moving along walls or into corners; point balls among bumpers too.
+    std::mt19937 rng(11);
+    const auto pick = [&](int n) { return static_cast<int>(rng() % static_cast<unsigned>(n)); };
+    const Vec2 dirs[] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}, {2, 1}, {3, 4}};
+    const Vec2 vels[] = {{1, 0}, {0, 1}, {1, 1}, {-1, 0}, {0, -1}, {-1, -1}, {2, 1}, {-3, 4}, {0.5, 0}, {0.75, 1}};
+    const double radii[] = {0, 0.5, 1, 0.25, 0.125};
+    int hits = 0, bumps = 0;
+    for (int i = 0; i < 150; ++i) {
+        Scene s;
+        s.frames = 20;
+        s.walls = {{{0, 0}, {0, 8}}, {{0, 8}, {8, 8}}, {{8, 8}, {8, 0}}, {{8, 0}, {0, 0}}};
+        for (int k = pick(11); k > 0; --k) {
+            const Vec2 at{static_cast<double>(pick(9)), static_cast<double>(pick(9))}, d = dirs[pick(6)];
+            for (int j = pick(3); j >= 0; --j) s.walls.push_back({at + j * d, at + (j + 1) * d});
+        }
+        for (int k = pick(5); k > 0; --k)
+            s.bumpers.push_back({{static_cast<double>(pick(9)), static_cast<double>(pick(9))}, 0.5 * pick(4)});
+        for (int k = 1 + pick(4); k > 0; --k)
+            s.balls.push_back({{0.5 * pick(17), 0.5 * pick(17)}, std::array{1.0, 2.0, 0.5, 3.0}[pick(4)] * vels[pick(10)],
+                               radii[pick(5)]});
+        EXPECT_EQ(checked(s), "") << i;
+        for (const Event& e : run_scene(s, KernelId::robust, s.frames)) {
+            hits += e.kind == Event::Kind::hit;
+            bumps += e.kind == Event::Kind::bump;
+        }
+    }
+    EXPECT_GT(hits, 1000);
+    EXPECT_GT(bumps, 100);
+}
+
 TEST(DiscRobust, HugeAndTinyRadii) {
     // A radius near the accepted limit in a box of that size, and one of 2^−1000 in a box of size 1.
     Scene huge;
