@@ -67,6 +67,7 @@ void register_record(CLI::App& app) {
         }
         Scene scene = std::get<Scene>(std::move(parsed));
         check_work_or_exit(opt->log, scene, scene.frames, opt->max_work);
+        check_supported_or_exit(opt->log, scene, scene.kernel, scene.checks);
         stage_plugin_run(scene.kernel, fmt::format("recording {}", opt->log));
         // The run is one call into the core, with no frame to stop at; nothing is written yet, so a signal
         // may end the process there and then.

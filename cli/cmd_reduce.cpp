@@ -22,9 +22,11 @@ namespace ricochet::cli {
 
 namespace {
 
-/// "10000 walls, 1 balls, 0 circles, 0 rects, 17 frames".
+/// "10000 walls, 1 balls, 0 circles, 0 rects, 17 frames" (", N bumpers" before the frames when there are any).
 std::string describe(const SceneSize& s) {
-    return fmt::format("{} walls, {} balls, {} circles, {} rects, {} frames", s.walls, s.balls, s.circles, s.rects, s.frames);
+    const std::string bumpers = s.bumpers > 0 ? fmt::format(", {} bumpers", s.bumpers) : "";
+    return fmt::format("{} walls, {} balls, {} circles, {} rects{}, {} frames", s.walls, s.balls, s.circles, s.rects,
+                       bumpers, s.frames);
 }
 
 }  // namespace
@@ -74,6 +76,7 @@ void register_reduce(CLI::App& app) {
         }
         // Each try runs at most the log's own frames and entities.
         check_work_or_exit(opt->log, scene, scene.frames, opt->max_work);
+        check_supported_or_exit(opt->log, scene, options.kernel.value_or(scene.kernel), scene.checks);
 
         const auto start = std::chrono::steady_clock::now();
         std::optional<StopOnSignal> stop;

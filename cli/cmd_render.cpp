@@ -83,6 +83,7 @@ void register_render(CLI::App& app) {
             r.last_frame = b;
         }
         check_work_or_exit(opt->log, scene, scene.frames, opt->max_work);
+        check_supported_or_exit(opt->log, scene, scene.kernel, scene.checks);
         RenderResult result;
         // Nothing is written before the run ends, so a signal during it may end the process there and then.
         std::optional<ExitOnSignal> exit_on_signal;

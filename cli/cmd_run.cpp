@@ -23,7 +23,7 @@ void register_run(CLI::App& app) {
         std::uint64_t max_work = k_default_max_work;
     };
     auto opt = std::make_shared<Options>();
-    CLI::App* sub = app.add_subcommand("run", "print a log's run: state/hit/overlap lines, frame 0 = initial state");
+    CLI::App* sub = app.add_subcommand("run", "print a log's run: state/hit/bump/overlap lines, frame 0 = initial state");
     sub->add_option("LOG", opt->log, "scene log")->required();
     sub->add_option("--kernel", opt->kernel, "override the log's kernel: a kernel's name, or plugin:PATH (ricochet/plugin.h)");
     sub->add_option("--frames", opt->frames, "override the log's frame count")
@@ -37,6 +37,8 @@ void register_run(CLI::App& app) {
         stage_plugin_run(k, fmt::format("running {}", opt->log));
         const std::int64_t frames = opt->frames >= 0 ? opt->frames : scene.frames;
         check_work_or_exit(opt->log, scene, frames, opt->max_work);
+        // `run` asserts no check: only the kernel must be able to step the scene.
+        check_supported_or_exit(opt->log, scene, k, {});
         World world(scene, k);
         std::vector<Event> events;
         std::string out;

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -59,6 +60,9 @@ void write_file_holding_signals(const std::string& path, std::string_view text, 
                                 std::optional<StopOnSignal>& stop);
 /// Reads a log, or prints its diagnostic on stderr and throws Exit{2}.
 Scene load_scene_or_exit(const std::filesystem::path& path);
+/// Refuses, before anything runs, a scene that kernel k cannot step with these checks (checks.hpp, refusal):
+/// "LOG: error: kernel 'box2d' steps point balls only: ball 0 has radius 0.5" on stderr and Exit{2}.
+void check_supported_or_exit(const std::string& log, const Scene& scene, KernelId k, std::span<const Check> checks);
 /// The kernel a --kernel spec names (a registered name, or plugin:PATH, loaded: kernel_spec.hpp), or a
 /// diagnostic on stderr and Exit{2}.
 KernelId kernel_or_exit(const std::string& spec);
@@ -73,7 +77,7 @@ void stage_plugin_run(KernelId k, std::string doing);
 /// One log's verdict in a replay.
 struct LogVerdict {
     std::string path;                   ///< as given or found under a folder
-    std::string status;                 ///< passed, failed, unreadable, over-budget or missing
+    std::string status;                 ///< passed, failed, unreadable, over-budget, unsupported or missing
     std::string message;                ///< the line's text: what it checked, or why it failed
     std::optional<std::uint64_t> hash;  ///< the run hash, if it ran
 };

@@ -28,6 +28,13 @@ Scene load_scene_or_exit(const std::filesystem::path& path) {
     return std::get<Scene>(std::move(result));
 }
 
+void check_supported_or_exit(const std::string& log, const Scene& scene, KernelId k, std::span<const Check> checks) {
+    if (const auto why = refusal(scene, k, checks)) {
+        fmt::print(stderr, "{}: error: {}\n", log, *why);
+        throw Exit{2};
+    }
+}
+
 void write_file_holding_signals(const std::string& path, std::string_view text, std::optional<ExitOnSignal>& running,
                                 std::optional<StopOnSignal>& stop) {
     std::string error;
@@ -138,6 +145,17 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             fmt::print(stderr, "ricochet: error: {}\n", error);
             if (!hashes_only) write_stdout(fmt::format("FAIL {}: not run (over --max-work)\n", log.string()));
             s.logs.push_back({log.string(), "over-budget", error, std::nullopt});
+            s.bad_input = true;
+            ++s.failed;
+            continue;
+        }
+        // A kernel that cannot step the log's discs or bumpers, or a check with no meaning for them: bad input.
+        if (const auto why = refusal(scene, scene.kernel, scene.checks)) {
+            progress.clear();
+            const std::string error = fmt::format("{}: error: {}", log.string(), *why);
+            fmt::print(stderr, "{}\n", error);
+            if (!hashes_only) write_stdout(fmt::format("FAIL {}: not run (unsupported)\n", log.string()));
+            s.logs.push_back({log.string(), "unsupported", error, std::nullopt});
             s.bad_input = true;
             ++s.failed;
             continue;

@@ -71,6 +71,10 @@ int main(int argc, char** argv) {
         code = app.exit(e) == 0 ? 0 : 2;
     } catch (const ricochet::cli::Exit& e) {
         code = e.code;
+    } catch (const ricochet::UnsupportedScene& e) {
+        // Every command asks first (check_supported_or_exit); a scene refused deeper in is bad input all the same.
+        fmt::print(stderr, "ricochet: error: {}\n", e.what());
+        code = 2;
     } catch (const ricochet::cli::OutputError& e) {
         return ricochet::cli::report_output_error(e.error);
     } catch (const std::system_error& e) {

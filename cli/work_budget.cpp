@@ -23,14 +23,15 @@ std::uint64_t saturating_mul(std::uint64_t a, std::uint64_t b) {
 std::uint64_t estimated_work(const Scene& scene, std::int64_t frames) {
     // Degenerate: a negative frame count steps nothing.
     if (frames <= 0) return 0;
-    const std::uint64_t entities = std::uint64_t{scene.walls.size()} + scene.circles.size() + scene.rects.size() + 1;
+    const std::uint64_t entities = std::uint64_t{scene.walls.size()} + scene.circles.size() + scene.rects.size() +
+                                    scene.bumpers.size() + 1;
     return saturating_mul(saturating_mul(static_cast<std::uint64_t>(frames), scene.balls.size()), entities);
 }
 
 void add_max_work_option(CLI::App& command, std::uint64_t& max_work) {
     command
         .add_option("--max-work", max_work,
-                    fmt::format("refuse a log whose frames × balls × (walls + circles + rects + 1) is over N (default {}; "
+                    fmt::format("refuse a log whose frames × balls × (walls + circles + rects + bumpers + 1) is over N (default {}; "
                                 "0: no bound)",
                                 k_default_max_work))
         ->option_text("N")
@@ -41,9 +42,10 @@ std::string work_over_budget(const std::string& log, const Scene& scene, std::in
     const std::uint64_t work = estimated_work(scene, frames);
     if (max_work == 0 || work <= max_work) return {};
     return fmt::format(
-        "{}: too much work: {} frames × {} balls × ({} walls + {} circles + {} rects + 1) = {} is over the bound of {}; "
-        "raise it with --max-work N (0: no bound)",
-        log, frames, scene.balls.size(), scene.walls.size(), scene.circles.size(), scene.rects.size(), work, max_work);
+        "{}: too much work: {} frames × {} balls × ({} walls + {} circles + {} rects + {} bumpers + 1) = {} is over the "
+        "bound of {}; raise it with --max-work N (0: no bound)",
+        log, frames, scene.balls.size(), scene.walls.size(), scene.circles.size(), scene.rects.size(),
+        scene.bumpers.size(), work, max_work);
 }
 
 void check_work_or_exit(const std::string& log, const Scene& scene, std::int64_t frames, std::uint64_t max_work) {

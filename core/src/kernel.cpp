@@ -113,24 +113,59 @@ bool rects_overlap(KernelId k, const Rect& a, const Rect& b) { return kernel_ops
 Sweep sweep(KernelId k, Vec2 bs, Vec2 v, const Wall& w) { return kernel_ops(k).sweep(bs, v, w); }
 Vec2 reflect(KernelId k, Vec2 v, const Wall& w) { return kernel_ops(k).reflect(v, w); }
 
-FrameStatus step_ball(KernelId k, Ball& ball, BallMemory& memory, std::span<const Wall> walls,
-                      std::vector<HitEvent>& hits, StepScratch& scratch, const WallIndex* index) {
+std::optional<std::string> unsupported_scene(KernelId k, std::span<const Ball> balls, std::size_t bumpers) {
+    const KernelOps& ops = kernel_ops(k);
+    for (std::size_t i = 0; i < balls.size(); ++i)
+        if (is_disc(balls[i]) && ops.step_disc == nullptr)
+            return fmt::format("kernel '{}' steps point balls only: ball {} has radius {}", ops.name, i, balls[i].r);
+    if (bumpers > 0 && !ops.steps_bumpers)
+        return fmt::format("kernel '{}' does not step bumpers: the scene has {} (bumper 0 first)", ops.name, bumpers);
+    return std::nullopt;
+}
+
+namespace {
+
+/// One frame of ball by step, on copies, so that a frame which leaves the range changes nothing.
+template <class Step>
+FrameStatus step_in_range(Ball& ball, BallMemory& memory, std::vector<HitEvent>& hits, Step&& step) {
     const auto ok = [](const Ball& b) {
         return in_range(b.pos.x) && in_range(b.pos.y) && in_range(b.vel.x) && in_range(b.vel.y);
     };
     if (!ok(ball)) return FrameStatus::out_of_range;
-    // Work on copies so that a frame which leaves the range changes nothing.
     Ball next = ball;
     BallMemory next_memory = memory;
     const std::size_t first_hit = hits.size();
-    const FrameStatus status = kernel_ops(k).step_ball(next, next_memory, walls, hits, scratch, index);
+    const FrameStatus status = step(next, next_memory);
     if (!ok(next)) {
         hits.resize(first_hit);
         return FrameStatus::out_of_range;
     }
+    // A kernel writes the state back as {pos, vel}: the radius is the ball's, not the kernel's.
+    next.r = ball.r;
     ball = next;
     memory = next_memory;
     return status;
+}
+
+}  // namespace
+
+FrameStatus step_ball(KernelId k, Ball& ball, BallMemory& memory, std::span<const Wall> walls,
+                      std::vector<HitEvent>& hits, StepScratch& scratch, const WallIndex* index) {
+    return step_in_range(ball, memory, hits, [&](Ball& b, BallMemory& m) {
+        return kernel_ops(k).step_ball(b, m, walls, hits, scratch, index);
+    });
+}
+
+FrameStatus step_ball(KernelId k, Ball& ball, BallMemory& memory, const Obstacles& obstacles,
+                      std::vector<HitEvent>& hits, StepScratch& scratch) {
+    // A point ball among walls alone: the point kernels' own step, bit for bit as before radii existed.
+    if (!is_disc(ball) && obstacles.bumpers.empty())
+        return step_ball(k, ball, memory, obstacles.walls, hits, scratch, obstacles.index);
+    if (auto why = unsupported_scene(k, std::span<const Ball>(&ball, 1), obstacles.bumpers.size()))
+        throw UnsupportedScene(*why);
+    return step_in_range(ball, memory, hits, [&](Ball& b, BallMemory& m) {
+        return kernel_ops(k).step_disc(b, m, obstacles, hits, scratch);
+    });
 }
 
 }  // namespace ricochet

@@ -19,7 +19,16 @@ struct RobustKernel {
     static Vec2 reflect(Vec2 v, const Wall& w);
     static FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> walls,
                                  std::vector<HitEvent>& hits, StepScratch& scratch, const WallIndex* index);
+    /// A disc among walls and bumpers, or a point ball in a scene with bumpers (disc/robust_disc.cpp): exact
+    /// contacts (disc/contact.hpp), rounded points walked back until the piece to them stays clear of every wall.
+    static FrameStatus step_disc(Ball& ball, BallMemory& memory, const Obstacles& obstacles,
+                                 std::vector<HitEvent>& hits, StepScratch& scratch);
+    /// step_disc bounces balls off bumpers too.
+    static constexpr bool k_steps_bumpers = true;
 };
+
+/// v reflected about the direction n ≠ 0: v − 2(v·n̂)n̂, robust's reflection (the speed bound of limits.hpp).
+Vec2 reflect_about(Vec2 v, Vec2 n);
 
 }  // namespace ricochet
 

@@ -33,10 +33,11 @@ Side RobustKernel::classify(Vec2 p, const Wall& w) { return side_from_sign(exact
 bool RobustKernel::point_in_circle(Vec2 p, const Circle& c) { return exact::point_circle(p, c) <= 0; }
 bool RobustKernel::circles_overlap(const Circle& a, const Circle& b) { return exact::circle_circle(a, b) <= 0; }
 
-Vec2 RobustKernel::reflect(Vec2 v, const Wall& w) {
-    const Vec2 n = normal(w);
+Vec2 RobustKernel::reflect(Vec2 v, const Wall& w) { return reflect_about(v, normal(w)); }
+
+Vec2 reflect_about(Vec2 v, Vec2 n) {
     const double big = std::max(std::fabs(n.x), std::fabs(n.y));
-    // Degenerate: a zero-length wall has no normal.
+    // Degenerate: a zero-length wall (a zero vector) has no normal.
     if (big == 0.0) return v;
     // m = n·2^-k with its larger component in [1, 2): exact, and m·m can neither overflow nor underflow,
     // so n̂ = m/|m| is good to a few ulps for walls of any length. sqrt is correctly rounded: the same

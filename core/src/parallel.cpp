@@ -9,7 +9,8 @@ namespace ricochet::detail {
 ParallelStepper::ParallelStepper(unsigned threads) : threads_(std::max(1u, threads)), parts_(threads_) {}
 
 void ParallelStepper::run_part(unsigned p, KernelId k, std::span<Ball> balls, std::span<BallMemory> memories,
-                               std::span<const Wall> walls, const WallIndex* index, const WallGrid* prefetch) {
+                               const Obstacles& obstacles, const WallGrid* prefetch) {
+    const std::span<const Wall> walls = obstacles.walls;
     Part& part = parts_[p];
     part.hits.clear();
     // Fetch the cells of the balls a few steps ahead, in three stages (the cell's entry, its wall list,
@@ -22,13 +23,13 @@ void ParallelStepper::run_part(unsigned p, KernelId k, std::span<Ball> balls, st
             if (i + k_ahead < part.end) prefetch->prefetch(balls[i + k_ahead].pos, 2, walls);
         }
         const auto first = static_cast<std::uint32_t>(part.hits.size());
-        status_[i] = step_ball(k, balls[i], memories[i], walls, part.hits, part.scratch, index);
+        status_[i] = step_ball(k, balls[i], memories[i], obstacles, part.hits, part.scratch);
         ball_hits_[i] = {p, first, static_cast<std::uint32_t>(part.hits.size())};
     }
 }
 
 void ParallelStepper::step(KernelId k, std::span<Ball> balls, std::span<BallMemory> memories,
-                           std::span<const Wall> walls, const WallIndex* index, const WallGrid* prefetch) {
+                           const Obstacles& obstacles, const WallGrid* prefetch) {
     const std::size_t n = balls.size();
     status_.assign(n, FrameStatus::ok);
     ball_hits_.assign(n, BallHits{});
@@ -39,15 +40,15 @@ void ParallelStepper::step(KernelId k, std::span<Ball> balls, std::span<BallMemo
     }
     if (threads_ == 1 || n < 2 * threads_) {
         // Too few balls to share: one thread does it all (same results, no thread start-up).
-        for (unsigned p = 0; p < threads_; ++p) run_part(p, k, balls, memories, walls, index, prefetch);
+        for (unsigned p = 0; p < threads_; ++p) run_part(p, k, balls, memories, obstacles, prefetch);
         return;
     }
     {
         std::vector<std::jthread> workers;
         workers.reserve(threads_ - 1);
         for (unsigned p = 1; p < threads_; ++p)
-            workers.emplace_back([&, p] { run_part(p, k, balls, memories, walls, index, prefetch); });
-        run_part(0, k, balls, memories, walls, index, prefetch);
+            workers.emplace_back([&, p] { run_part(p, k, balls, memories, obstacles, prefetch); });
+        run_part(0, k, balls, memories, obstacles, prefetch);
     }  // jthreads join here
 }
 

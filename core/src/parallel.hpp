@@ -19,10 +19,11 @@ public:
     explicit ParallelStepper(unsigned threads = 1);
     /// Threads used.
     unsigned threads() const { return threads_; }
-    /// Steps ball i with memory i for every i. index may be null (every wall is tried). prefetch, if
-    /// given, is the grid behind index: its cells are fetched a few balls ahead (results unchanged).
-    void step(KernelId k, std::span<Ball> balls, std::span<BallMemory> memories, std::span<const Wall> walls,
-              const WallIndex* index, const WallGrid* prefetch);
+    /// Steps ball i with memory i for every i among the obstacles (obstacles.index may be null: every wall
+    /// is tried). prefetch, if given, is the grid behind the index: its cells are fetched a few balls ahead
+    /// (results unchanged).
+    void step(KernelId k, std::span<Ball> balls, std::span<BallMemory> memories, const Obstacles& obstacles,
+              const WallGrid* prefetch);
     /// Ball i's hits in the last step, in order.
     std::span<const HitEvent> hits(std::size_t i) const;
     /// Ball i's status in the last step.
@@ -39,7 +40,7 @@ private:
         std::uint32_t part = 0, first = 0, last = 0;
     };
     void run_part(unsigned p, KernelId k, std::span<Ball> balls, std::span<BallMemory> memories,
-                  std::span<const Wall> walls, const WallIndex* index, const WallGrid* prefetch);
+                  const Obstacles& obstacles, const WallGrid* prefetch);
     unsigned threads_;
     std::vector<Part> parts_;
     // Per ball, reset every step, so that a ball no part stepped (a wrong partition) reads as a ball that

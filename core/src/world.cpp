@@ -31,9 +31,11 @@ World::World(const Scene& scene, KernelId kernel, WorldOptions options)
       walls_(scene.walls),
       circles_(scene.circles),
       rects_(scene.rects),
+      bumpers_(scene.bumpers),
       balls_(scene.balls),
       memories_(scene.balls.size()),
       stepper_(std::make_unique<detail::ParallelStepper>(options.threads)) {
+    if (auto why = unsupported_scene(kernel, balls_, bumpers_.size())) throw UnsupportedScene(*why);
     if (options.broad_phase == BroadPhase::none) return;
     // The exact kernel always tries every wall: a wall index would be built for nothing.
     if (kernel != KernelId::exact && !walls_.empty()) {
@@ -66,6 +68,22 @@ void World::append_overlaps(std::vector<Event>& out) const {
     for (std::size_t i = 0; i < balls_.size(); ++i) {
         const auto ball = static_cast<std::uint32_t>(i);
         const Vec2 p = balls_[i].pos;
+        const double R = balls_[i].r;
+        if (is_disc(balls_[i])) {
+            // A disc overlaps a circle when |p − c| ≤ R + r (circles_overlap), and a rectangle when the rectangle's
+            // point nearest to p, clamp(p) (exact: each coordinate is p's or an edge's), is within R of p. Every
+            // shape is tried: the static index answers for points.
+            for (std::uint32_t k = 0; k < circles_.size(); ++k)
+                if (circles_overlap(kernel_, Circle{p, R}, circles_[k]))
+                    out.push_back({Event::Kind::overlap, frame_, ball, Event::Shape::circle, k, {}, {}});
+            for (std::uint32_t k = 0; k < rects_.size(); ++k) {
+                const Rect& r = rects_[k];
+                const Vec2 near{std::clamp(p.x, r.left, r.right), std::clamp(p.y, r.bottom, r.top)};
+                if (point_in_circle(kernel_, near, Circle{p, R}))
+                    out.push_back({Event::Kind::overlap, frame_, ball, Event::Shape::rect, k, {}, {}});
+            }
+            continue;
+        }
         const auto circle = [&](std::uint32_t k) {
             if (point_in_circle(kernel_, p, circles_[k]))
                 out.push_back({Event::Kind::overlap, frame_, ball, Event::Shape::circle, k, {}, {}});
@@ -97,7 +115,7 @@ void World::start(std::vector<Event>& out) const {
 std::optional<StepError> World::step(std::vector<Event>& out) {
     ++frame_;
     bounce_limited_ = 0;
-    stepper_->step(kernel_, balls_, memories_, walls_, wall_index(), prefetch_ ? &*grid_ : nullptr);
+    stepper_->step(kernel_, balls_, memories_, Obstacles{walls_, bumpers_, wall_index()}, prefetch_ ? &*grid_ : nullptr);
     std::optional<StepError> error;
     for (std::size_t i = 0; i < balls_.size(); ++i) {
         const auto ball = static_cast<std::uint32_t>(i);
@@ -106,7 +124,8 @@ std::optional<StepError> World::step(std::vector<Event>& out) {
         if (status == FrameStatus::out_of_range && !error) error = StepError{frame_, ball, status, balls_[i]};
         if (status == FrameStatus::bounce_limit) ++bounce_limited_;
         for (const HitEvent& h : stepper_->hits(i))
-            out.push_back({Event::Kind::hit, frame_, ball, Event::Shape::none, h.wall, h.point, {}});
+            out.push_back({h.bumper ? Event::Kind::bump : Event::Kind::hit, frame_, ball, Event::Shape::none, h.wall,
+                           h.point, {}});
         out.push_back({Event::Kind::state, frame_, ball, Event::Shape::none, 0, balls_[i].pos, balls_[i].vel});
     }
     append_overlaps(out);

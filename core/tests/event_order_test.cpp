@@ -14,6 +14,9 @@ Event state(std::int64_t f, std::uint32_t ball) { return {Event::Kind::state, f,
 Event hit(std::int64_t f, std::uint32_t ball, std::uint32_t wall) {
     return {Event::Kind::hit, f, ball, Event::Shape::none, wall, {}, {}};
 }
+Event bump(std::int64_t f, std::uint32_t ball, std::uint32_t bumper) {
+    return {Event::Kind::bump, f, ball, Event::Shape::none, bumper, {}, {}};
+}
 Event overlap(std::int64_t f, std::uint32_t ball, Event::Shape shape, std::uint32_t k) {
     return {Event::Kind::overlap, f, ball, shape, k, {}, {}};
 }
@@ -42,6 +45,20 @@ TEST(EventOrder, TheSpecsOrderHolds) {
                              overlap(0, 1, K::circle, 1)}),
               "");
     EXPECT_EQ(verdict(s, 3, {hit(3, 0, 1), hit(3, 0, 0), state(3, 0), state(3, 1), overlap(3, 1, K::rect, 0)}), "");
+}
+
+TEST(EventOrder, BumpsGoWithHitsInTheOrderTheyHappened) {
+    Scene s = two_balls();
+    s.bumpers = {{{5, 5}, 1}};
+    EXPECT_EQ(verdict(s, 2, {hit(2, 0, 1), bump(2, 0, 0), hit(2, 0, 0), state(2, 0), bump(2, 1, 0), state(2, 1)}), "");
+    const auto has = [](const std::string& m, const char* what) { return m.find(what) != std::string::npos; };
+    EXPECT_TRUE(has(verdict(s, 0, {bump(0, 0, 0), state(0, 0), state(0, 1)}), "frame 0 has no bumps"));
+    EXPECT_TRUE(has(verdict(s, 1, {bump(1, 0, 1), state(1, 0), state(1, 1)}), "names a bumper of the scene"));
+    EXPECT_TRUE(has(verdict(s, 1, {bump(1, 1, 0), state(1, 0), state(1, 1)}), "ball 0's events come next"));
+    EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), state(1, 1), bump(1, 1, 0)}), "after the states come only overlaps"));
+    Event shaped = bump(1, 0, 0);
+    shaped.shape = K::circle;
+    EXPECT_TRUE(has(verdict(s, 1, {shaped, state(1, 0), state(1, 1)}), "names a bumper of the scene and no shape"));
 }
 
 TEST(EventOrder, EachBreakIsNamed) {

@@ -19,9 +19,13 @@ constexpr std::size_t k_from_limit = 64;
 constexpr std::int64_t k_frame_limit = 10'000'000;
 
 constexpr std::array<std::string_view, 4> k_kernels = {"lecture-float", "lecture-double", "robust", "exact"};
-constexpr std::array<std::string_view, 14> k_checks = {
-    "no-tunnel",   "symmetry",    "boundary",   "speed",     "deterministic", "oracle",   "swap",
-    "translation", "broad-phase", "round-trip", "no-escape", "bounce-side",   "accuracy", "event-order"};
+constexpr std::array<std::string_view, 15> k_checks = {
+    "no-tunnel",   "symmetry",    "boundary",   "speed",     "deterministic", "oracle",   "swap",       "translation",
+    "broad-phase", "round-trip",  "no-escape",  "bounce-side", "accuracy",    "event-order", "penetration"};
+
+/// The checks "Checks" defines for a log with discs or bumpers.
+constexpr std::array<std::string_view, 8> k_disc_checks = {"no-tunnel",  "speed",     "deterministic", "broad-phase",
+                                                           "round-trip", "no-escape", "event-order",   "penetration"};
 
 template <std::size_t N>
 bool one_of(const std::array<std::string_view, N>& names, std::string_view s) {
@@ -125,12 +129,25 @@ private:
             numbers(t, 4);
         } else if (d == "ball") {
             entity(balls_, "balls");
-            numbers(t, 4);
+            // "Discs and bumpers": X Y VX VY and an optional radius R ≥ 0; R > 0 makes the ball a disc.
+            if (t.size() == 6) {
+                numbers(t, 5);
+                const double r = number(t[5]);
+                if (r < 0.0) reject("negative radius");
+                if (r > 0.0 && first_solid_ == 0) first_solid_ = line_;
+            } else {
+                numbers(t, 4);
+            }
         } else if (d == "circle") {
             entity(circles_, "circles");
             numbers(t, 3);
             // −0 is zero; any other negative radius is an error.
             if (number(t[3]) < 0.0) reject("negative radius");
+        } else if (d == "bumper") {
+            entity(bumpers_, "bumpers");
+            numbers(t, 3);
+            if (number(t[3]) < 0.0) reject("negative radius");
+            if (first_solid_ == 0) first_solid_ = line_;
         } else if (d == "rect") {
             entity(rects_, "rects");
             numbers(t, 4);
@@ -141,6 +158,7 @@ private:
             const std::string_view c = check_name(t[1]);
             if (one_of_listed(c)) reject("check listed twice");
             checks_.push_back(c);
+            check_lines_.push_back(line_);
         } else if (d == "expect") {
             expect(t);
         } else if (d == "found") {
@@ -200,14 +218,21 @@ private:
             if (!one_of_listed(failure_->check)) throw Rejection{failure_->line, "expect failure: the check is not listed"};
             if (failure_->frame > frames_) throw Rejection{failure_->line, "expect failure: after the last frame"};
         }
+        // "Discs and bumpers", "Checks": with a disc or a bumper, only the checks defined for them may be listed.
+        if (first_solid_ != 0)
+            for (std::size_t i = 0; i < checks_.size(); ++i)
+                if (!one_of(k_disc_checks, checks_[i]))
+                    throw Rejection{check_lines_[i], "a check not defined for discs and bumpers"};
     }
 
     int line_ = 0;
     bool header_ = false, kernel_ = false, frames_seen_ = false, hash_seen_ = false, failure_seen_ = false,
          found_seen_ = false;
     std::int64_t frames_ = 0;
-    std::size_t walls_ = 0, balls_ = 0, circles_ = 0, rects_ = 0, froms_ = 0, states_seen_ = 0;
+    std::size_t walls_ = 0, balls_ = 0, circles_ = 0, rects_ = 0, bumpers_ = 0, froms_ = 0, states_seen_ = 0;
+    int first_solid_ = 0;  // the line of the first disc or bumper, 0 if none
     std::vector<std::string_view> checks_;
+    std::vector<int> check_lines_;
     std::vector<Reference> states_;
     std::optional<Reference> found_, failure_;
 };

@@ -74,7 +74,10 @@ TEST(GrammarAcceptor, DirectiveNames) {
 TEST(GrammarAcceptor, Arities) {
     accepted(h + "wall 0 0 1 1\nball 0 0 1 1\ncircle 0 0 0\nrect 0 0 0 0\n");
     rejected_at(h + "wall 0 0 1\n", 2);
-    rejected_at(h + "ball 0 0 1 1 7\n", 2);
+    accepted(h + "ball 0 0 1 1 7\n");  // a disc of radius 7
+    rejected_at(h + "ball 0 0 1 1 7 8\n", 2);
+    rejected_at(h + "bumper 0 0\n", 2);
+    rejected_at(h + "bumper 0 0 1 1\n", 2);
     rejected_at(h + "circle 0 0\n", 2);
     rejected_at(h + "rect 0 0 1 1 1\n", 2);
     rejected_at(h + "kernel\n", 2);
@@ -97,7 +100,7 @@ TEST(GrammarAcceptor, KernelNames) {
 TEST(GrammarAcceptor, CheckNames) {
     std::string all = h;
     for (const char* c : {"no-tunnel", "symmetry", "boundary", "speed", "deterministic", "oracle", "swap", "translation",
-                          "broad-phase", "round-trip", "no-escape", "bounce-side", "accuracy", "event-order"})
+                          "broad-phase", "round-trip", "no-escape", "bounce-side", "accuracy", "event-order", "penetration"})
         all += std::string("check ") + c + "\n";
     accepted(all);
     rejected_at(h + "check speedy\n", 2);
@@ -184,6 +187,22 @@ TEST(GrammarAcceptor, RadiusNotNegative) {
     rejected_at(h + "circle 0 0 -4e-324\n", 2);
 }
 
+TEST(GrammarAcceptor, DiscsAndBumpers) {
+    accepted(h + "ball 0 0 1 1 0\nball 0 0 1 1 -0\nball 0 0 1 1 0.5\nbumper 0 0 0\nbumper 0 0 -0\nbumper 1 1 2\n");
+    rejected_at(h + "ball 0 0 1 1 -1\n", 2);
+    rejected_at(h + "ball 0 0 1 1 nan\n", 2);
+    rejected_at(h + "ball 0 0 1 1 1e78\n", 2);
+    rejected_at(h + "bumper 0 0 -4e-324\n", 2);
+    // Only the checks defined for discs and bumpers: an error at the first other check line, after the whole-log
+    // checks of the expect lines.
+    accepted(h + "ball 0 0 1 1 0.5\ncheck deterministic\ncheck broad-phase\ncheck round-trip\ncheck event-order\n");
+    accepted(h + "bumper 0 0 1\ncheck no-tunnel\ncheck speed\ncheck no-escape\ncheck penetration\n");
+    accepted(h + "ball 0 0 1 1 0\ncheck oracle\ncheck penetration\n");  // R = 0: a point ball
+    rejected_at(h + "check boundary\nball 0 0 1 1 0.5\n", 2);
+    rejected_at(h + "check round-trip\ncheck oracle\nbumper 0 0 1\ncheck boundary\n", 3);
+    rejected_at(h + "check oracle\nbumper 0 0 1\nexpect state 0 1 0 0 0 0\n", 4);
+}
+
 TEST(GrammarAcceptor, RectCorners) {
     accepted(h + "rect 0 0 0 0\nrect -1 -1 1 1\nrect 0 -0 -0 0\n");
     rejected_at(h + "rect 2 0 1 1\n", 2);
@@ -202,7 +221,8 @@ TEST(GrammarAcceptor, OnceOnlyDirectives) {
 
 TEST(GrammarAcceptor, RepeatableDirectives) {
     accepted(h + "frames 1\nwall 0 0 1 1\nwall 0 0 1 1\nball 0 0 1 1\nball 0 0 1 1\ncircle 0 0 1\ncircle 0 0 1\n"
-                 "rect 0 0 1 1\nrect 0 0 1 1\nexpect state 1 1 0 0 0 0\nexpect state 1 1 0 0 0 0\nfrom a\nfrom a\n");
+                 "rect 0 0 1 1\nrect 0 0 1 1\nbumper 0 0 1\nbumper 0 0 1\nexpect state 1 1 0 0 0 0\n"
+                 "expect state 1 1 0 0 0 0\nfrom a\nfrom a\n");
 }
 
 TEST(GrammarAcceptor, ExpectStateNamesAnExistingBallAndFrame) {

@@ -19,22 +19,31 @@ h='ricochet 1'
 # set by CTest from the build: bench/peers).
 kernels='lecture-float, lecture-double, robust, exact'
 for k in ${RICOCHET_PEER_KERNELS:-}; do kernels="$kernels, $k"; done
+# The checks defined for discs and bumpers (check.hpp, defined_for_discs), as the refusal lists them.
+disc_checks='no-tunnel, speed, deterministic, broad-phase, round-trip, no-escape, event-order, penetration'
 case "$kind" in
   unknown-directive) printf '%s\nwal 0 0 1 1\n' "$h" >"$f"; want='2:1: error: unknown directive '\''wal'\''' ;;
   missing-token)     printf '%s\nwall 0 0 1\n' "$h" >"$f"; want='2:11: error: '\''wall'\'' needs X0 Y0 X1 Y1: missing Y1' ;;
-  extra-token)       printf '%s\nball 0 0 1 1 7\n' "$h" >"$f"; want='2:14: error: unexpected '\''7'\'' after '\''ball'\'' (X Y VX VY expected)' ;;
+  extra-token)       printf '%s\nball 0 0 1 1 7 8\n' "$h" >"$f"; want='2:16: error: unexpected '\''8'\'' after '\''ball'\'' (X Y VX VY [R] expected)' ;;
   bad-number)        printf '%s\nball 0 0x 1 1\n' "$h" >"$f"; want='2:8: error: bad Y: '\''0x'\'' is not a number' ;;
   nan)               printf '%s\nball nan 0 1 1\n' "$h" >"$f"; want='2:6: error: X nan is outside the accepted range (finite, magnitude at most 2^256)' ;;
   inf)               printf '%s\ncircle 0 0 -inf\n' "$h" >"$f"; want='2:12: error: R -inf is outside the accepted range (finite, magnitude at most 2^256)' ;;
   out-of-range)      printf '%s\nwall 0 0 1e78 0\n' "$h" >"$f"; want='2:10: error: X1 1e78 is outside the accepted range (finite, magnitude at most 2^256)' ;;
   overflow)          printf '%s\nwall 0 0 1e400 0\n' "$h" >"$f"; want='2:10: error: bad X1: '\''1e400'\'' is out of the range of a double' ;;
   negative-radius)   printf '%s\ncircle 0 0 -1\n' "$h" >"$f"; want='2:12: error: negative radius -1' ;;
+  ball-negative-radius) printf '%s\nball 0 0 1 1 -0.5\n' "$h" >"$f"; want='2:14: error: negative radius -0.5' ;;
+  ball-radius-inf)   printf '%s\nball 0 0 1 1 inf\n' "$h" >"$f"; want='2:14: error: R inf is outside the accepted range (finite, magnitude at most 2^256)' ;;
+  ball-radius-out-of-range) printf '%s\nball 0 0 1 1 1e78\n' "$h" >"$f"; want='2:14: error: R 1e78 is outside the accepted range (finite, magnitude at most 2^256)' ;;
+  bumper-negative-radius) printf '%s\nbumper 0 0 -1\n' "$h" >"$f"; want='2:12: error: negative radius -1' ;;
+  disc-undefined-check) printf '%s\ncheck boundary\nball 0 0 1 1 0.5\n' "$h" >"$f"; want="2:7: error: check 'boundary' is not defined for discs and bumpers yet (the ball on line 3 has a radius); the checks defined for them: $disc_checks" ;;
+  bumper-undefined-check) printf '%s\nbumper 0 0 1\ncheck event-order\ncheck oracle\n' "$h" >"$f"; want="4:7: error: check 'oracle' is not defined for discs and bumpers yet (line 2 has a bumper); the checks defined for them: $disc_checks" ;;
+  bumper-missing-token) printf '%s\nbumper 0 0\n' "$h" >"$f"; want='2:11: error: '\''bumper'\'' needs X Y R: missing R' ;;
   left-gt-right)     printf '%s\nrect 2 0 1 1\n' "$h" >"$f"; want='2:6: error: left 2 is greater than right 1' ;;
   bottom-gt-top)     printf '%s\nrect 0 2 1 1\n' "$h" >"$f"; want='2:8: error: bottom 2 is greater than top 1' ;;
   negative-frames)   printf '%s\nframes -3\n' "$h" >"$f"; want='2:8: error: negative frame count -3' ;;
   absurd-frames)     printf '%s\nframes 99999999999\n' "$h" >"$f"; want='2:8: error: frame count 99999999999 is over the limit of 10000000' ;;
   unknown-kernel)    printf '%s\nkernel fast\n' "$h" >"$f"; want="2:8: error: unknown kernel 'fast' ($kernels)" ;;
-  unknown-check)     printf '%s\ncheck speedy\n' "$h" >"$f"; want='2:7: error: unknown check '\''speedy'\'' (no-tunnel, symmetry, boundary, speed, deterministic, oracle, swap, translation, broad-phase, round-trip, no-escape, bounce-side, accuracy, event-order)' ;;
+  unknown-check)     printf '%s\ncheck speedy\n' "$h" >"$f"; want='2:7: error: unknown check '\''speedy'\'' (no-tunnel, symmetry, boundary, speed, deterministic, oracle, swap, translation, broad-phase, round-trip, no-escape, bounce-side, accuracy, event-order, penetration)' ;;
   future-version)    printf 'ricochet 2\n' >"$f"; want='1:10: error: format version 2 is newer than this reader (it reads version 1)' ;;
   missing-header)    printf 'wall 0 0 1 1\n' >"$f"; want='1:1: error: expected the header '\''ricochet 1'\'' before '\''wall'\''' ;;
   duplicate-header)  printf '%s\n%s\n' "$h" "$h" >"$f"; want='2:1: error: duplicate header '\''ricochet'\''' ;;

@@ -16,12 +16,16 @@ struct Scene;
 inline bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 /// Both components the same bits.
 inline bool same_bits(Vec2 a, Vec2 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y); }
-/// Position and velocity the same bits.
-inline bool same_bits(const Ball& a, const Ball& b) { return same_bits(a.pos, b.pos) && same_bits(a.vel, b.vel); }
+/// Position, velocity and radius the same bits.
+inline bool same_bits(const Ball& a, const Ball& b) {
+    return same_bits(a.pos, b.pos) && same_bits(a.vel, b.vel) && same_bits(a.r, b.r);
+}
 /// Both end points the same bits.
 inline bool same_bits(const Wall& a, const Wall& b) { return same_bits(a.p0, b.p0) && same_bits(a.p1, b.p1); }
 /// Centre and radius the same bits.
 inline bool same_bits(const Circle& a, const Circle& b) { return same_bits(a.c, b.c) && same_bits(a.r, b.r); }
+/// Centre and radius the same bits.
+inline bool same_bits(const Bumper& a, const Bumper& b) { return same_bits(a.c, b.c) && same_bits(a.r, b.r); }
 /// Every side the same bits.
 inline bool same_bits(const Rect& a, const Rect& b) {
     return same_bits(a.left, b.left) && same_bits(a.bottom, b.bottom) && same_bits(a.right, b.right) &&

@@ -25,15 +25,20 @@ enum class Check : std::uint8_t {
     bounce_side,
     accuracy,
     event_order,
+    penetration,
 };
 /// Every check, in the order of the enumeration.
-inline constexpr std::array<Check, 14> k_all_checks = {
-    Check::no_tunnel, Check::symmetry,    Check::boundary,    Check::speed,      Check::deterministic,
+inline constexpr std::array<Check, 15> k_all_checks = {
+    Check::no_tunnel, Check::symmetry,    Check::boundary,    Check::speed,       Check::deterministic,
     Check::oracle,    Check::swap,        Check::translation, Check::broad_phase, Check::round_trip,
-    Check::no_escape, Check::bounce_side, Check::accuracy,    Check::event_order};
+    Check::no_escape, Check::bounce_side, Check::accuracy,    Check::event_order, Check::penetration};
 /// The check's name as logs spell it ("no-tunnel", …).
 std::string_view check_name(Check c);
 /// The check called name, or nothing.
 std::optional<Check> parse_check(std::string_view name);
+/// True if check c is defined for a scene with discs (balls of radius > 0) or bumpers (checks.hpp says how it
+/// reads there). A log that asks for another check in such a scene is refused at its `check` line, and
+/// run_checked refuses to run it (UnsupportedScene, world.hpp): a check is never skipped in silence.
+bool defined_for_discs(Check c);
 
 }  // namespace ricochet

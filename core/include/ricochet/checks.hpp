@@ -102,9 +102,22 @@
 //                  none to check (its B_i is its exact crossing, rounded once); nor has a plug-in's frame step
 //                  (plugin.h), which shows no legs.
 //   event-order    Every frame's events come in the order docs/scene-log.md gives: per ball in index order its
-//                  hits (none at frame 0), then its state, then every overlap, ball-major, circles before
+//                  hits and bumps (none at frame 0), then its state, then every overlap, ball-major, circles before
 //                  rects, each by index and once; each event carries its frame's number and names a ball,
-//                  wall, circle or rect of the scene (a state index 0 and no shape, a hit no shape).
+//                  wall, bumper, circle or rect of the scene (a state index 0 and no shape, a hit or bump no shape).
+//   penetration    Bounded penetration, with δ = 0: for each ball of radius R and each wall (reach ρ = R) and
+//                  bumper of radius r (reach ρ = R + r, the exact sum), once a printed point of the ball's path
+//                  (its start, a hit or bump point, a state) is at least ρ from it, every later piece of the path
+//                  (closed segment between consecutive printed points) is at least ρ from it: the wall's closed
+//                  segment, the bumper's centre. Decided exactly on the printed doubles (truth::clear_of_wall,
+//                  truth::clear_of_circle). A ball that starts closer is held to an obstacle only from its first
+//                  printed point that is clear of it. Point balls among walls alone (ρ = 0) always hold.
+//
+// Discs and bumpers: in a scene with a disc or a bumper only the checks defined_for_discs (check.hpp) names are
+// defined: no-tunnel, speed, no-escape (each as written above, read for the disc's centre: its printed path, its
+// velocity; m counts the bounces off bumpers and the corner reflections too), deterministic, broad-phase,
+// round-trip, event-order (a bump names a bumper of the scene and no shape) and penetration. run_checked refuses
+// any other (UnsupportedScene), the reader rejects its `check` line.
 //
 // speed, oracle and accuracy read the frame's StepTrace: each ball is stepped again from its state and memory before
 // the frame with a trace (the same wall index); that step must end in the run's state bit for bit, else
@@ -181,7 +194,13 @@ struct CheckOptions {
     WorldOptions world{};
 };
 
-/// Runs frames 0..frames of scene under kernel, asserting checks on every frame. After the first failure
+/// Why run_checked refuses scene under kernel with checks (the kernel cannot step its discs or bumpers, or a
+/// check is not defined for them), or nothing: what it throws as UnsupportedScene, for a caller to ask first.
+std::optional<std::string> refusal(const Scene& scene, KernelId kernel, std::span<const Check> checks);
+
+/// Runs frames 0..frames of scene under kernel, asserting checks on every frame. Throws UnsupportedScene
+/// (kernel.hpp) before stepping if the kernel cannot step the scene or a check is not defined for it
+/// (defined_for_discs, check.hpp). After the first failure
 /// the remaining checks are skipped but the run goes on (the hash covers the whole run) unless
 /// options.stop_after ends it. The run's World
 /// and the checks' own worlds step with options.world (by default as `ricochet run` does), except

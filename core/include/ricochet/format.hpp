@@ -3,14 +3,18 @@
 //
 //   Vec2     (x, y)
 //   Wall     x0 y0 x1 y1        the scene-log `wall` arguments (docs/scene-log.md)
-//   Ball     x y vx vy          the `ball` arguments
+//   Ball     x y vx vy [r]      the `ball` arguments; r only when its bits are not +0 (a point ball prints
+//                               as before radii existed, and an `expect state` has no radius)
 //   Circle   x y r              the `circle` arguments
+//   Bumper   x y r              the `bumper` arguments
 //   Rect     left bottom right top
-//   Event    its `ricochet run` line, no newline: state F I X Y VX VY | hit F I W X Y | overlap F I circle|rect K
+//   Event    its `ricochet run` line, no newline: state F I X Y VX VY | hit F I W X Y | bump F I K X Y |
+//            overlap F I circle|rect K
 //   Side     outside | inside | on
 //   KernelId, Miss, Check       kernel_name, miss_name, check_name (width and fill specs work: "{:15}")
 #pragma once
 
+#include <cmath>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -69,12 +73,23 @@ struct fmt::formatter<ricochet::Wall> : ricochet::detail::PlainFormatter {
     }
 };
 
-/// x y vx vy.
+/// x y vx vy, then r unless it is +0 (so a point ball and a state print as they always did; −0 is kept).
 template <>
 struct fmt::formatter<ricochet::Ball> : ricochet::detail::PlainFormatter {
     template <class Context>
     auto format(const ricochet::Ball& b, Context& ctx) const {
-        return fmt::format_to(ctx.out(), "{} {} {} {}", b.pos.x, b.pos.y, b.vel.x, b.vel.y);
+        auto out = fmt::format_to(ctx.out(), "{} {} {} {}", b.pos.x, b.pos.y, b.vel.x, b.vel.y);
+        if (b.r != 0.0 || std::signbit(b.r)) out = fmt::format_to(out, " {}", b.r);
+        return out;
+    }
+};
+
+/// x y r.
+template <>
+struct fmt::formatter<ricochet::Bumper> : ricochet::detail::PlainFormatter {
+    template <class Context>
+    auto format(const ricochet::Bumper& c, Context& ctx) const {
+        return fmt::format_to(ctx.out(), "{} {} {}", c.c.x, c.c.y, c.r);
     }
 };
 
@@ -106,6 +121,8 @@ struct fmt::formatter<ricochet::Event> : ricochet::detail::PlainFormatter {
             return fmt::format_to(ctx.out(), "state {} {} {} {} {} {}", e.frame, e.ball, e.pos.x, e.pos.y, e.vel.x, e.vel.y);
         if (e.kind == Kind::hit)
             return fmt::format_to(ctx.out(), "hit {} {} {} {} {}", e.frame, e.ball, e.index, e.pos.x, e.pos.y);
+        if (e.kind == Kind::bump)
+            return fmt::format_to(ctx.out(), "bump {} {} {} {} {}", e.frame, e.ball, e.index, e.pos.x, e.pos.y);
         return fmt::format_to(ctx.out(), "overlap {} {} {} {}", e.frame, e.ball,
                               e.shape == ricochet::Event::Shape::circle ? "circle" : "rect", e.index);
     }

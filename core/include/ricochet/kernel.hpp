@@ -48,6 +48,8 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <stdexcept>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -62,6 +64,21 @@
 
 namespace ricochet {
 
+/// What a ball is stepped among when it has a radius or the scene has bumpers (step_disc below).
+struct Obstacles {
+    std::span<const Wall> walls;
+    std::span<const Bumper> bumpers;
+    const WallIndex* index = nullptr;  ///< over the walls, or null: every wall is tried
+};
+
+/// A scene a kernel cannot step (a disc or a bumper for a kernel that steps point balls among walls only), or
+/// a check a scene leaves undefined (check.hpp, defined_for_discs): World and run_checked refuse it with this,
+/// before stepping anything. The only exception the core throws on a well-formed scene.
+class UnsupportedScene : public std::invalid_argument {
+public:
+    using std::invalid_argument::invalid_argument;
+};
+
 /// One kernel's implementation: the same functions as the free functions below, without the KernelId.
 /// The registry holds one of these per kernel; it is the only place a kernel's name or id maps to code.
 struct KernelOps {
@@ -75,6 +92,14 @@ struct KernelOps {
     Vec2 (*reflect)(Vec2 v, const Wall& w);
     FrameStatus (*step_ball)(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
                              StepScratch& scratch, const WallIndex* index);
+    /// Steps a disc (a ball of radius > 0) among walls and bumpers, or a point ball in a scene with bumpers; a
+    /// hit off a bumper is a HitEvent with bumper set. A point ball among walls alone always goes to step_ball,
+    /// so that it keeps its bits. Null for a kernel that steps point balls among walls only (the peers,
+    /// plug-ins): World refuses a scene with discs or bumpers for it. A kernel type gives it as K::step_disc.
+    FrameStatus (*step_disc)(Ball& ball, BallMemory& memory, const Obstacles& obstacles, std::vector<HitEvent>& hits,
+                             StepScratch& scratch) = nullptr;
+    /// True if step_disc also handles bumpers (K::k_steps_bumpers); false: discs among walls only.
+    bool steps_bumpers = false;
     /// The kernel's stated bound on | |v′| − |v| | per reflection: speed_rel_bound·|v| + speed_abs_bound
     /// (the `speed` check, checks.hpp). A kernel type states it as K::k_speed_rel_bound and
     /// K::k_speed_abs_bound; one that states none is held to robust's (limits.hpp).
@@ -104,6 +129,8 @@ constexpr KernelOps make_kernel_ops(std::string_view name) {
         ops.speed_abs_bound = K::k_speed_abs_bound;
     }
     if constexpr (requires { K::k_failures_documented; }) ops.failures_documented = K::k_failures_documented;
+    if constexpr (requires { &K::step_disc; }) ops.step_disc = &K::step_disc;
+    if constexpr (requires { K::k_steps_bumpers; }) ops.steps_bumpers = K::k_steps_bumpers;
     return ops;
 }
 
@@ -143,6 +170,16 @@ bool rects_overlap(KernelId k, const Rect& a, const Rect& b);
 Sweep sweep(KernelId k, Vec2 bs, Vec2 v, const Wall& w);
 /// The lecture's bounce: v' = v − 2(v·n̂)n̂ (kernel precision; exact rounds the rational result).
 Vec2 reflect(KernelId k, Vec2 v, const Wall& w);
+
+/// Why kernel k cannot step these balls among walls and `bumpers` bumpers ("kernel 'box2d' steps point balls
+/// only: ball 0 has radius 0.5"), or nothing if it can.
+std::optional<std::string> unsupported_scene(KernelId k, std::span<const Ball> balls, std::size_t bumpers);
+
+/// Steps one ball through one frame among walls and bumpers: a point ball with no bumpers exactly as step_ball
+/// below (the same bits), anything else with the kernel's step_disc. Throws UnsupportedScene if the kernel
+/// cannot (unsupported_scene). The ball keeps its radius; out of range as step_ball below.
+FrameStatus step_ball(KernelId k, Ball& ball, BallMemory& memory, const Obstacles& obstacles,
+                      std::vector<HitEvent>& hits, StepScratch& scratch);
 
 /// Steps one ball through one frame among walls: earliest hit, bounce, search again from the hit
 /// point for the rest of the frame. Appends the frame's hits to hits. With an index, only the walls it

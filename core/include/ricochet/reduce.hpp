@@ -43,8 +43,9 @@ struct SceneSize {
     std::size_t circles = 0;  ///< static circles
     std::size_t rects = 0;    ///< static rectangles
     std::int64_t frames = 0;  ///< frames stepped
-    /// walls + balls + circles + rects.
-    std::size_t entities() const { return walls + balls + circles + rects; }
+    std::size_t bumpers = 0;  ///< bumpers
+    /// walls + balls + circles + rects + bumpers.
+    std::size_t entities() const { return walls + balls + circles + rects + bumpers; }
     /// The sizes of scene.
     static SceneSize of(const Scene& scene);
     friend bool operator==(const SceneSize&, const SceneSize&) = default;
@@ -54,7 +55,8 @@ struct SceneSize {
 struct ReduceProgress {
     std::uint64_t tries = 0;  ///< candidate scenes run so far (every run_checked counts)
     SceneSize size;           ///< the smallest failing scene so far
-    std::string_view pass;    ///< the pass under way: "balls", "frames", "walls", "circles", "rects", "numbers"
+    std::string_view pass;    ///< the pass under way: "balls", "frames", "walls", "circles", "rects", "bumpers",
+                              ///< "numbers"
 };
 
 /// Options for reduce_log.
@@ -98,7 +100,7 @@ struct ReduceRefusal {
 /// frames cut to the failing frame; balls (the failing ball alone first, then delta debugging: chunks
 /// from all of them halving down to one); frames cut from the front (every ball started from its state
 /// at a later frame); walls (for no-tunnel the wall the path went through alone, then with the walls the
-/// balls hit, then delta debugging); circles; rects; then each number in turn replaced by a simpler one
+/// balls hit, then delta debugging); circles; rects; bumpers; then each number in turn replaced by a simpler one
 /// (0, an integer, fewer significant digits, a dyadic fraction k/2^j, without its sign: fewer characters
 /// in the log). Never throws on a valid scene.
 std::variant<ReducedLog, ReduceRefusal> reduce_log(const Scene& log, const ReduceOptions& options = {});

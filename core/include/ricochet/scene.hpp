@@ -1,6 +1,6 @@
-// Scene: everything a scene log holds, walls, point balls, static circles and rectangles, the checks
-// and the expectations. Stepped frame by frame by a kernel into events (world.hpp); the same scene
-// gives the same events, bit for bit, on every run.
+// Scene: everything a scene log holds, walls, balls (points or discs), bumpers, static circles and
+// rectangles, the checks and the expectations. Stepped frame by frame by a kernel into events
+// (world.hpp); the same scene gives the same events, bit for bit, on every run.
 #pragma once
 
 #include <cstdint>
@@ -27,6 +27,7 @@ struct Scene {
     std::vector<Ball> balls;
     std::vector<Circle> circles;
     std::vector<Rect> rects;
+    std::vector<Bumper> bumpers;                ///< solid circles balls bounce off
     std::vector<Check> checks;                  ///< in order of appearance, no duplicates
     std::optional<std::uint64_t> expect_hash;
     std::vector<ExpectState> expect_states;
@@ -35,5 +36,14 @@ struct Scene {
     std::vector<std::string> provenance;        ///< the words after each `from`, verbatim
     friend bool operator==(const Scene&, const Scene&) = default;  ///< by value (same_bits compares bits)
 };
+
+/// True if the scene has a disc (a ball of radius > 0) or a bumper: the checks defined_for_discs leaves
+/// out (check.hpp) are refused for it.
+inline bool has_discs_or_bumpers(const Scene& scene) {
+    if (!scene.bumpers.empty()) return true;
+    for (const Ball& b : scene.balls)
+        if (is_disc(b)) return true;
+    return false;
+}
 
 }  // namespace ricochet

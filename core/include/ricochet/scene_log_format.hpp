@@ -51,7 +51,7 @@ enum class ExpectLines {
 SceneOrDiagnostic parse_scene_log(std::string_view text, std::string_view filename,
                                   ExpectLines expect_lines = ExpectLines::checked);
 
-/// The canonical text of a scene: header, `from` lines, kernel, frames, walls, balls, circles, rects,
+/// The canonical text of a scene: header, `from` lines, kernel, frames, walls, balls, circles, rects, bumpers,
 /// checks, found, expect hash, expect failure, expect states; numbers in shortest round-trip form.
 /// parse_scene_log(write_scene_log(s)) gives s back bit for bit.
 std::string write_scene_log(const Scene& scene);

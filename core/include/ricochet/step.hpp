@@ -9,11 +9,12 @@
 
 namespace ricochet {
 
-/// A bounce during a frame: the wall, the frame time t_i and the point B_i.
+/// A bounce during a frame: the wall (or bumper), the frame time t_i and the point B_i (the ball's centre).
 struct HitEvent {
-    std::uint32_t wall = 0;
+    std::uint32_t wall = 0;  ///< the wall, or the bumper when bumper is set
     double t = 0.0;
     Vec2 point;
+    bool bumper = false;     ///< the ball bounced off bumper `wall`, not a wall (a `bump` event)
 };
 
 /// How a frame ended for one ball.

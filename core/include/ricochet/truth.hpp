@@ -40,6 +40,14 @@ bool rects_overlap(const Rect& a, const Rect& b);
 /// general: it is bracketed by a 256-bit square root widened by 2^−200 relative (the only rounding).
 /// False when any of v, w, b, a has a non-finite component. The other functions take finite doubles only.
 bool speed_within(Vec2 v, Vec2 w, int m, double b, double a);
+/// The closed segment a → b (a point if a = b) stays at least R from wall w's closed segment (a point if w has
+/// no length): the least distance between the two, exactly, against R (the `penetration` check). R = 0 holds
+/// whatever the segments do.
+bool clear_of_wall(Vec2 a, Vec2 b, const Wall& w, double R);
+/// The closed segment a → b stays at least R + r from c (a bumper of radius r met by a ball of radius R),
+/// exactly, with R + r not rounded.
+bool clear_of_circle(Vec2 a, Vec2 b, Vec2 c, double R, double r);
+
 /// sign(a × b) of two directions, exactly.
 int cross_sign(Vec2 a, Vec2 b);
 /// sign(a · b), exactly.

@@ -1,5 +1,5 @@
 // World: a scene's balls stepped frame by frame by one kernel into events, in the order of
-// docs/scene-log.md: per frame, per ball its hits in order then its state; then the overlaps of
+// docs/scene-log.md: per frame, per ball its hits and bumps in order then its state; then the overlaps of
 // every ball (ball-major, circles before rects, each in index order) after all balls have moved.
 // Frame 0 is the initial states followed by the initial overlaps.
 //
@@ -71,6 +71,7 @@ class ParallelStepper;
 class World {
 public:
     /// Copies the scene's entities and initial balls and builds the indices options and kernel call for.
+    /// Throws UnsupportedScene (kernel.hpp) if the kernel cannot step the scene's discs or bumpers.
     World(const Scene& scene, KernelId kernel, WorldOptions options = {});
     /// Frees the stepper.
     ~World();
@@ -95,6 +96,8 @@ public:
     std::uint64_t bounce_limited() const { return bounce_limited_; }
     /// The scene's walls.
     std::span<const Wall> walls() const { return walls_; }
+    /// The scene's bumpers.
+    std::span<const Bumper> bumpers() const { return bumpers_; }
     /// The wall index in use, or null (BroadPhase::none, no walls, or the exact kernel).
     const WallIndex* wall_index() const;
     /// What this world skips for its scene, one clause each, for a run to print.
@@ -107,6 +110,7 @@ private:
     std::vector<Wall> walls_;
     std::vector<Circle> circles_;
     std::vector<Rect> rects_;
+    std::vector<Bumper> bumpers_;
     std::vector<Ball> balls_;
     std::vector<BallMemory> memories_;
     std::optional<WallGrid> grid_;
@@ -118,7 +122,8 @@ private:
     std::uint64_t bounce_limited_ = 0;
 };
 
-/// Every event of frames 0..frames under kernel. Throws StepFailure if a ball leaves the accepted range.
+/// Every event of frames 0..frames under kernel. Throws StepFailure if a ball leaves the accepted range, and
+/// UnsupportedScene as World does.
 std::vector<Event> run_scene(const Scene& scene, KernelId kernel, std::int64_t frames, WorldOptions options = {});
 
 }  // namespace ricochet

@@ -22,14 +22,18 @@ public:
         };
         std::size_t j = 0;
         const auto at = [&](Event::Kind k) { return j < f.events.size() && f.events[j].kind == k; };
-        // Per ball in index order: its hits (none at frame 0), then its state.
+        // Per ball in index order: its hits and bumps in the order they happened (none at frame 0), then its
+        // state.
         for (std::uint32_t b = 0; b < balls; ++b) {
-            for (; at(Event::Kind::hit); ++j) {
+            for (; at(Event::Kind::hit) || at(Event::Kind::bump); ++j) {
                 const Event& e = f.events[j];
-                if (f.index == 0) return fail(j, e.ball, "frame 0 has no hits");
+                const bool hit = e.kind == Event::Kind::hit;
+                if (f.index == 0) return fail(j, e.ball, hit ? "frame 0 has no hits" : "frame 0 has no bumps");
                 if (e.ball != b) return fail(j, e.ball, fmt::format("ball {}'s events come next", b));
-                if (e.index >= scene_.walls.size() || e.shape != Event::Shape::none)
+                if (hit && (e.index >= scene_.walls.size() || e.shape != Event::Shape::none))
                     return fail(j, e.ball, "a hit names a wall of the scene and no shape");
+                if (!hit && (e.index >= scene_.bumpers.size() || e.shape != Event::Shape::none))
+                    return fail(j, e.ball, "a bump names a bumper of the scene and no shape");
                 if (e.frame != f.index) return fail(j, e.ball, "not this frame's number");
             }
             if (!at(Event::Kind::state))

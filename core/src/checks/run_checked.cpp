@@ -29,6 +29,7 @@ Scene mirror_x(const Scene& scene) {
         b.vel.x = -b.vel.x;
     }
     for (Circle& c : m.circles) c.c.x = -c.c.x;
+    for (Bumper& c : m.bumpers) c.c.x = -c.c.x;
     for (Rect& r : m.rects) r = {-r.right, r.bottom, -r.left, r.top};
     return m;
 }
@@ -52,6 +53,7 @@ std::unique_ptr<FrameCheck> make_check(Check c, const Scene& scene, KernelId ker
         case Check::bounce_side: return make_bounce_side(scene, kernel, world);
         case Check::accuracy: return make_accuracy(scene, kernel, world);
         case Check::event_order: return make_event_order(scene, kernel, world);
+        case Check::penetration: return make_penetration(scene, kernel, world);
     }
     return nullptr;
 }
@@ -110,8 +112,9 @@ private:
             traces_[i].clear();
             hits_.clear();
             scratch_.trace = &traces_[i];
-            traces_[i].stopped_at_limit = step_ball(kernel_, ball, memory, scene_.walls, hits_, scratch_,
-                                                    world.wall_index()) == FrameStatus::bounce_limit;
+            traces_[i].stopped_at_limit =
+                step_ball(kernel_, ball, memory, Obstacles{scene_.walls, scene_.bumpers, world.wall_index()}, hits_,
+                          scratch_) == FrameStatus::bounce_limit;
             scratch_.trace = nullptr;
             const Ball now = world.balls()[i];
             if (!same_bits(ball, now))
@@ -134,9 +137,18 @@ private:
 }  // namespace
 }  // namespace checks
 
+std::optional<std::string> refusal(const Scene& scene, KernelId kernel, std::span<const Check> checks) {
+    if (has_discs_or_bumpers(scene))
+        for (Check c : checks)
+            if (!defined_for_discs(c)) return fmt::format("check '{}' is not defined for discs and bumpers yet", c);
+    return unsupported_scene(kernel, scene.balls, scene.bumpers.size());
+}
+
 CheckedRun run_checked(const Scene& scene, KernelId kernel, std::int64_t frames, std::span<const Check> checks,
                        const CheckOptions& options) {
     CheckedRun run;
+    // A check without a meaning for the scene is refused, never skipped.
+    if (auto why = refusal(scene, kernel, checks)) throw UnsupportedScene(*why);
     World world(scene, kernel, options.world);
     std::optional<checks::Checker> checker;
     if (!checks.empty()) checker.emplace(scene, kernel, checks, options.world);

@@ -107,6 +107,55 @@ bool speed_within(Vec2 v, Vec2 w, int m, double b, double a) {
 
 namespace {
 
+/// |p − X|² for the point X of the closed segment a → b nearest to p: X = a + u·(b − a) with u the projection
+/// (p − a)·e/(e·e) clamped to [0, 1] (u = 0 for a segment of no length), all in rationals.
+mpq_class distance2_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+    const mpq_class ex = Q(b.x) - Q(a.x), ey = Q(b.y) - Q(a.y);
+    const mpq_class px = Q(p.x) - Q(a.x), py = Q(p.y) - Q(a.y);
+    const mpq_class ee = ex * ex + ey * ey;
+    mpq_class u = 0;
+    if (sgn(ee) != 0) {
+        u = (px * ex + py * ey) / ee;
+        if (u < 0) u = 0;
+        if (u > 1) u = 1;
+    }
+    const mpq_class dx = px - u * ex, dy = py - u * ey;
+    return dx * dx + dy * dy;
+}
+
+/// Every coordinate of the boxes of a → b and of c → d apart by more than reach, decided on doubles with a
+/// margin (a computed gap g > 0 is at least g/(1 + 2^−53) exactly): no point of one is within reach of the
+/// other. False says nothing.
+bool boxes_apart(Vec2 a, Vec2 b, Vec2 c, Vec2 d, double reach) {
+    const double limit = reach * (1.0 + 0x1p-48);
+    return std::min(c.x, d.x) - std::max(a.x, b.x) > limit || std::min(a.x, b.x) - std::max(c.x, d.x) > limit ||
+           std::min(c.y, d.y) - std::max(a.y, b.y) > limit || std::min(a.y, b.y) - std::max(c.y, d.y) > limit;
+}
+
+}  // namespace
+
+bool clear_of_wall(Vec2 a, Vec2 b, const Wall& w, double R) {
+    if (R == 0.0 || boxes_apart(a, b, w.p0, w.p1, R)) return true;
+    // Two closed segments that intersect are 0 apart: a proper crossing (each strictly splits the other's ends)
+    // or an end point on the other segment (the distances below are then 0).
+    if (a != b && w.p0 != w.p1 && orient(a, b, w.p0) * orient(a, b, w.p1) < 0 &&
+        orient(w.p0, w.p1, a) * orient(w.p0, w.p1, b) < 0)
+        return false;
+    // Otherwise the least distance is from an end point of one to the other segment.
+    const mpq_class r2 = Q(R) * Q(R);
+    return distance2_to_segment(a, w.p0, w.p1) >= r2 && distance2_to_segment(b, w.p0, w.p1) >= r2 &&
+           distance2_to_segment(w.p0, a, b) >= r2 && distance2_to_segment(w.p1, a, b) >= r2;
+}
+
+bool clear_of_circle(Vec2 a, Vec2 b, Vec2 c, double R, double r) {
+    // (R + r)·(1 + 2^−52) is above R + r however the sum rounds.
+    if (boxes_apart(a, b, c, c, (R + r) * (1.0 + 0x1p-52))) return true;
+    const mpq_class rho = Q(R) + Q(r);
+    return distance2_to_segment(c, a, b) >= rho * rho;
+}
+
+namespace {
+
 /// A leg a → b and wall w, exactly: whether the crossing is well-conditioned, and then its leg fraction s,
 /// |d|∞ and ε·M.
 struct ExactCrossing {

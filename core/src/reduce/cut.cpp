@@ -84,6 +84,7 @@ void cut_walls(Trials& trials) {
 void cut_statics(Trials& trials) {
     cut_chunks(trials, &Scene::circles, "circles");
     cut_chunks(trials, &Scene::rects, "rects");
+    cut_chunks(trials, &Scene::bumpers, "bumpers");
 }
 
 }  // namespace ricochet::detail::reduce

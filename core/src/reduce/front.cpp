@@ -20,7 +20,9 @@ void cut_front_frames(Trials& trials) {
             for (const Event& e : events) {
                 const auto at = starts.find(e.frame);
                 // A frame's states come ball by ball in index order (docs/scene-log.md).
-                if (e.kind == Event::Kind::state && at != starts.end()) at->second.push_back(Ball{e.pos, e.vel});
+                // A state has no radius: each ball keeps its own.
+                if (e.kind == Event::Kind::state && at != starts.end() && at->second.size() < balls)
+                    at->second.push_back(Ball{e.pos, e.vel, trials.current().scene.balls[at->second.size()].r});
             }
         },
         "frames");

@@ -41,8 +41,8 @@ double to_digits(double x, int digits) {
 }
 
 /// The entities whose numbers the pass simplifies, each with its numbers' count.
-enum class Kind { ball, wall, circle, rect };
-constexpr std::array k_kinds = {Kind::ball, Kind::wall, Kind::circle, Kind::rect};
+enum class Kind { ball, wall, circle, rect, bumper };
+constexpr std::array k_kinds = {Kind::ball, Kind::wall, Kind::circle, Kind::rect, Kind::bumper};
 
 std::size_t count(const Scene& s, Kind kind) {
     switch (kind) {
@@ -50,19 +50,21 @@ std::size_t count(const Scene& s, Kind kind) {
         case Kind::wall: return s.walls.size();
         case Kind::circle: return s.circles.size();
         case Kind::rect: return s.rects.size();
+        case Kind::bumper: return s.bumpers.size();
     }
     return 0;
 }
 
-/// Number j of entity i of kind, in the log's order (`ball X Y VX VY`, `wall X0 Y0 X1 Y1`, `circle X Y R`,
-/// `rect LEFT BOTTOM RIGHT TOP`); j < arity(kind).
+/// Number j of entity i of kind, in the log's order (`ball X Y VX VY R`, `wall X0 Y0 X1 Y1`, `circle X Y R`,
+/// `rect LEFT BOTTOM RIGHT TOP`, `bumper X Y R`); j < arity(kind). A ball's R is 0 for a point ball, which
+/// nothing simplifies further.
 /// (S: Scene or const Scene.)
 template <class S>
 auto& number(S& s, Kind kind, std::size_t i, int j) {
     switch (kind) {
         case Kind::ball: {
             auto& b = s.balls[i];
-            return j == 0 ? b.pos.x : j == 1 ? b.pos.y : j == 2 ? b.vel.x : b.vel.y;
+            return j == 0 ? b.pos.x : j == 1 ? b.pos.y : j == 2 ? b.vel.x : j == 3 ? b.vel.y : b.r;
         }
         case Kind::wall: {
             auto& w = s.walls[i];
@@ -72,17 +74,23 @@ auto& number(S& s, Kind kind, std::size_t i, int j) {
             auto& c = s.circles[i];
             return j == 0 ? c.c.x : j == 1 ? c.c.y : c.r;
         }
+        case Kind::bumper: {
+            auto& c = s.bumpers[i];
+            return j == 0 ? c.c.x : j == 1 ? c.c.y : c.r;
+        }
         case Kind::rect: break;
     }
     auto& r = s.rects[i];
     return j == 0 ? r.left : j == 1 ? r.bottom : j == 2 ? r.right : r.top;
 }
 
-int arity(Kind kind) { return kind == Kind::circle ? 3 : 4; }
+int arity(Kind kind) { return kind == Kind::circle || kind == Kind::bumper ? 3 : kind == Kind::ball ? 5 : 4; }
 
 /// True if entity i of kind is one a log may hold: R ≥ 0, LEFT ≤ RIGHT and BOTTOM ≤ TOP (docs/scene-log.md).
 bool valid(const Scene& s, Kind kind, std::size_t i) {
     if (kind == Kind::circle) return s.circles[i].r >= 0.0;
+    if (kind == Kind::bumper) return s.bumpers[i].r >= 0.0;
+    if (kind == Kind::ball) return s.balls[i].r >= 0.0;
     if (kind == Kind::rect) return s.rects[i].left <= s.rects[i].right && s.rects[i].bottom <= s.rects[i].top;
     return true;
 }

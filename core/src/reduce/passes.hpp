@@ -14,7 +14,7 @@ void cut_balls(Trials& trials);
 /// Walls: for no-tunnel the wall the path went through alone, then with the walls the failing ball hit in
 /// the failing frame, then with every wall any ball hit; then delta debugging (cut.cpp).
 void cut_walls(Trials& trials);
-/// Circles, then rects: delta debugging (cut.cpp).
+/// Circles, then rects, then bumpers: delta debugging (cut.cpp).
 void cut_statics(Trials& trials);
 
 /// Frames from the front: every ball started from its state at frame F − L, for L = 0, 1, 2, 4, … below the

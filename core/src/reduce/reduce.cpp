@@ -11,7 +11,8 @@
 namespace ricochet {
 
 SceneSize SceneSize::of(const Scene& scene) {
-    return {scene.walls.size(), scene.balls.size(), scene.circles.size(), scene.rects.size(), scene.frames};
+    return {scene.walls.size(), scene.balls.size(), scene.circles.size(), scene.rects.size(), scene.frames,
+            scene.bumpers.size()};
 }
 
 std::variant<ReducedLog, ReduceRefusal> reduce_log(const Scene& log, const ReduceOptions& options) {
@@ -40,6 +41,7 @@ std::variant<ReducedLog, ReduceRefusal> reduce_log(const Scene& log, const Reduc
     bare.balls = log.balls;
     bare.circles = log.circles;
     bare.rects = log.rects;
+    bare.bumpers = log.bumpers;
     bare.checks = target.checks;
     std::optional<Failing> start = judge(bare, kernel, target);
     // A guard: a check's verdict does not depend on the other checks listed, so C alone breaks where it broke

@@ -1,0 +1,513 @@
+// A disc's first contact with a wall or a circle, decided exactly (contact.hpp), and the exact clearance
+// tests the robust kernel walks its rounded points back with.
+#include "contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "arith.hpp"
+#include "ricochet/line.hpp"
+#include "ricochet/predicates.hpp"
+
+namespace ricochet::disc {
+namespace {
+
+// ---------------------------------------------------------------------------------------------------------------
+// Vectors over a number type, and the frames that turn doubles into numbers.
+
+template <class T>
+struct P2 {
+    T x, y;
+};
+template <class T>
+P2<T> operator-(const P2<T>& a, const P2<T>& b) {
+    return {a.x - b.x, a.y - b.y};
+}
+template <class T>
+T dot(const P2<T>& a, const P2<T>& b) {
+    return a.x * b.x + a.y * b.y;
+}
+template <class T>
+T cross(const P2<T>& a, const P2<T>& b) {
+    return a.x * b.y - a.y * b.x;
+}
+/// n = (e_y, −e_x)
+template <class T>
+P2<T> perp(const P2<T>& e) {
+    return {e.y, -e.x};
+}
+
+/// Doubles as Approx numbers, relative to an origin o (the decision's own point: the leg's start) and scaled
+/// by 2^−k so that the largest length is near 1: no product overflows or underflows for ordinary inputs, and
+/// a far translation costs no precision beyond the subtraction's own rounding.
+struct ApproxFrame {
+    using T = Approx;
+    Vec2 o;
+    double s = 1.0;
+    /// Chooses the scale from the lengths the decision involves (their magnitudes, roughly).
+    ApproxFrame(Vec2 origin, std::initializer_list<double> lengths) : o(origin) {
+        double m = 0.0;
+        for (double x : lengths) m = std::fmax(m, std::fabs(x));
+        if (m > 0.0 && std::isfinite(m)) s = std::ldexp(1.0, -std::ilogb(m));
+    }
+    Approx scaled(Approx a) const { return {a.v * s, a.e * s + k_eta}; }
+    /// p − o
+    P2<Approx> point(Vec2 p) const {
+        return {scaled(approx(p.x) - approx(o.x)), scaled(approx(p.y) - approx(o.y))};
+    }
+    /// a − b
+    P2<Approx> vector(Vec2 a, Vec2 b) const {
+        return {scaled(approx(a.x) - approx(b.x)), scaled(approx(a.y) - approx(b.y))};
+    }
+    Approx length(double x) const { return scaled(approx(x)); }
+    static Approx constant(double x) { return approx(x); }
+};
+
+/// Doubles as exact integers at the common scale 2^k of every double the decision reads.
+struct ZFrame {
+    using T = Z;
+    Vec2 o;
+    int k = 0;
+    ZFrame(Vec2 origin, const Scale& scale) : o(origin), k(scale.exponent()) {}
+    P2<Z> point(Vec2 p) const { return {exact(p.x, k) - exact(o.x, k), exact(p.y, k) - exact(o.y, k)}; }
+    P2<Z> vector(Vec2 a, Vec2 b) const { return {exact(a.x, k) - exact(b.x, k), exact(a.y, k) - exact(b.y, k)}; }
+    Z length(double x) const { return exact(x, k); }
+    static Z constant(double x) { return Z(x); }
+};
+
+/// Evaluates decision(frame) on the filter's frame, then, only if it could not tell, on the exact one.
+template <class Decision>
+auto decide(Vec2 origin, std::initializer_list<double> lengths, std::initializer_list<Vec2> points,
+            std::initializer_list<double> numbers, Decision&& decision) {
+    if (auto r = decision(ApproxFrame(origin, lengths))) return *r;
+    Scale scale;
+    for (Vec2 p : points) scale.add(p);
+    for (double x : numbers) scale.add(x);
+    return *decision(ZFrame(origin, scale));
+}
+
+/// |a|∞
+double inf_norm(Vec2 a) { return std::fmax(std::fabs(a.x), std::fabs(a.y)); }
+
+// ---------------------------------------------------------------------------------------------------------------
+// Entry times.
+
+/// t = (a + b·√c)/d with d > 0 and c ≥ 0.
+template <class T>
+struct Root {
+    T a, b, c, d;
+};
+
+/// The leg and the obstacle in a frame: d = b − q, R, and the obstacle's numbers relative to q.
+template <class F>
+struct Setup {
+    using T = typename F::T;
+    P2<T> d;
+    T R;
+    // a wall: its ends, e = P1 − P0, n, n·n, n·(q − P0), n·d
+    P2<T> p0, p1, e, n;
+    T nn, nw, nd;
+    // a circle: its centre and ρ = R + r
+    P2<T> c;
+    T rho;
+
+    Setup(const F& f, const Leg& leg, const Obstacle& o) : d(f.point(leg.b)), R(f.length(leg.R)) {
+        if (o.wall != nullptr) {
+            p0 = f.point(o.wall->p0);
+            p1 = f.point(o.wall->p1);
+            e = f.vector(o.wall->p1, o.wall->p0);
+            n = perp(e);
+            nn = dot(n, n);
+            nw = -dot(n, p0);  // n·(q − P0), q the origin
+            nd = dot(n, d);
+        } else {
+            c = f.point(o.c);
+            rho = R + f.length(o.r);
+        }
+    }
+    /// The centre of a circle part (a cap's end point) relative to q, and its radius.
+    const P2<T>& centre(Part part) const { return part == Part::cap0 ? p0 : part == Part::cap1 ? p1 : c; }
+    const T& radius(Part part) const { return part == Part::circle ? rho : R; }
+};
+
+/// The entry time of contact ct as a Root (contact.hpp's t_f and t_c).
+template <class F>
+Root<typename F::T> root(const Setup<F>& s, const Contact& ct) {
+    using T = typename F::T;
+    if (ct.at_start) return {F::constant(0), F::constant(0), F::constant(0), F::constant(1)};
+    if (ct.part == Part::face) {
+        // t_f = (s·n·w − R·√(n·n)) / (−s·n·d)
+        const T side = F::constant(ct.side);
+        return {side * s.nw, -s.R, s.nn, -(side * s.nd)};
+    }
+    // t_c = (−β − √Δ)/a, β = d·(q − P), γ = |q − P|² − ρ², Δ = β² − a·γ
+    const P2<T>& p = s.centre(ct.part);
+    const T& rho = s.radius(ct.part);
+    const T beta = -dot(s.d, p);
+    const T a = dot(s.d, s.d);
+    const T gamma = dot(p, p) - rho * rho;
+    return {-beta, F::constant(-1), beta * beta - a * gamma, a};
+}
+
+/// sign(t1 − t2) = sign(d2·a1 − d1·a2 + d2·b1·√c1 − d1·b2·√c2), d1, d2 > 0.
+template <class T>
+std::optional<int> compare_roots(const Root<T>& r1, const Root<T>& r2) {
+    return sign3(r2.d * r1.a - r1.d * r2.a, r2.d * r1.b, r1.c, -(r1.d * r2.b), r2.c);
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// First contacts.
+
+/// Does the leg, starting outside the circle of radius ρ around p (relative to q), enter it? The roots of
+/// a·t² + 2β·t + γ, γ > 0: an entry needs β < 0 (approaching), Δ = β² − aγ > 0 (a secant, not a tangent) and
+/// the smaller root ≤ 1: g(1) = |b − P|² − ρ² ≤ 0, or, g(1) > 0 with both roots on one side of 1, the vertex
+/// −β/a < 1.
+template <class T>
+std::optional<bool> circle_entered(const P2<T>& d, const P2<T>& p, const T& rho) {
+    const T beta = -dot(d, p);
+    const auto sb = sign(beta);
+    if (!sb) return std::nullopt;
+    if (*sb >= 0) return false;
+    const T a = dot(d, d);
+    const T rho2 = rho * rho;
+    const auto sdelta = sign(beta * beta - a * (dot(p, p) - rho2));
+    if (!sdelta) return std::nullopt;
+    if (*sdelta <= 0) return false;
+    const P2<T> bp = d - p;
+    const auto g1 = sign(dot(bp, bp) - rho2);
+    if (!g1) return std::nullopt;
+    if (*g1 <= 0) return true;
+    const auto vertex = sign(a + beta);
+    if (!vertex) return std::nullopt;
+    return *vertex > 0;
+}
+
+/// A decided answer that may be "no contact".
+using Answer = std::optional<Contact>;
+
+/// The circle of radius ρ around c (relative to q) against the leg: contact.hpp's rules. at_centre: q is c.
+template <class F>
+std::optional<Answer> circle_contact(const Setup<F>& s, Part part, bool at_centre) {
+    using T = typename F::T;
+    const P2<T>& p = s.centre(part);
+    const T& rho = s.radius(part);
+    const auto reach = sign(dot(p, p) - rho * rho);
+    if (!reach) return std::nullopt;
+    if (*reach <= 0) {
+        // Degenerate: at the centre there is no normal.
+        if (at_centre) return Answer{};
+        // Within reach: a hit at t = 0 if moving closer, d·(q − P) < 0; else leaving, no hit this leg.
+        const auto closer = sign(-dot(s.d, p));
+        if (!closer) return std::nullopt;
+        if (*closer < 0) return Answer{Contact{part, 0, true}};
+        return Answer{};
+    }
+    const auto in = circle_entered(s.d, p, rho);
+    if (!in) return std::nullopt;
+    if (*in) return Answer{Contact{part, 0, false}};
+    return Answer{};
+}
+
+template <class F>
+std::optional<Answer> wall_contact(const F& f, const Leg& leg, const Wall& w) {
+    using T = typename F::T;
+    const Setup<F> s(f, leg, Obstacle{&w, {}, 0.0});
+    // Degenerate: a zero-length wall is a point, met by its cap.
+    if (w.p0 == w.p1) return circle_contact(s, Part::cap0, leg.q == w.p0);
+    // q's nearest part of the segment: (q − P0)·e ≤ 0 the cap at P0, (q − P1)·e ≥ 0 the cap at P1, else the face.
+    Part nearest = Part::face;
+    const auto u0 = sign(-dot(s.p0, s.e));
+    if (!u0) return std::nullopt;
+    if (*u0 <= 0) {
+        nearest = Part::cap0;
+    } else {
+        const auto u1 = sign(-dot(s.p1, s.e));
+        if (!u1) return std::nullopt;
+        if (*u1 >= 0) nearest = Part::cap1;
+    }
+    const auto side = sign(s.nw);
+    if (!side) return std::nullopt;
+    const T R2nn = s.R * s.R * s.nn;
+    if (nearest != Part::face) {
+        // Within reach of that cap: its rules (a centre at the end point has no normal).
+        const auto reach = sign(dot(s.centre(nearest), s.centre(nearest)) - s.R * s.R);
+        if (!reach) return std::nullopt;
+        if (*reach <= 0) return circle_contact(s, nearest, leg.q == (nearest == Part::cap0 ? w.p0 : w.p1));
+    } else {
+        // Within reach of the face: distance² = (n·w)²/(n·n) ≤ R².
+        const auto reach = sign(s.nw * s.nw - R2nn);
+        if (!reach) return std::nullopt;
+        if (*reach <= 0) {
+            // Degenerate: a centre on the segment itself has no normal.
+            if (*side == 0) return Answer{};
+            // Moving closer: s·(n·d) < 0, a hit at t = 0; else leaving.
+            const auto closer = sign(F::constant(*side) * s.nd);
+            if (!closer) return std::nullopt;
+            if (*closer < 0) return Answer{Contact{Part::face, static_cast<std::int8_t>(*side), true}};
+            return Answer{};
+        }
+    }
+    // q is outside the capsule: the earliest of the face entry and the cap entries.
+    std::optional<Contact> best;
+    std::optional<Root<T>> best_root;
+    const auto consider = [&](const Contact& c) -> bool {
+        const Root<T> r = root(s, c);
+        if (best) {
+            const auto order = compare_roots(r, *best_root);
+            if (!order) return false;
+            // Ties keep the earlier part: face, cap P0, cap P1.
+            if (*order >= 0) return true;
+        }
+        best = c;
+        best_root = r;
+        return true;
+    };
+    if (*side != 0) {
+        const T sd = F::constant(*side);
+        // Outside the band's slab (on a cap's side of an end, q may lie inside it): (n·w)² > R²(n·n).
+        std::optional<int> outside = 1;
+        if (nearest != Part::face) outside = sign(s.nw * s.nw - R2nn);
+        if (!outside) return std::nullopt;
+        // Approaching the face: s·(n·d) < 0.
+        std::optional<int> closer = 1;
+        if (*outside > 0) closer = sign(sd * s.nd);
+        if (!closer) return std::nullopt;
+        if (*outside > 0 && *closer < 0) {
+            // Reaching it within the leg: s·n·(b − P0) ≤ R·|n|, n·(b − P0) = n·d + n·w.
+            const auto reach = sign2(sd * (s.nd + s.nw), -s.R, s.nn);
+            if (!reach) return std::nullopt;
+            if (*reach <= 0) {
+                // Inside the ends: 0 ≤ (X(t_f) − P0)·e and (X(t_f) − P1)·e ≤ 0; times −s·n·d > 0 and with
+                // (w·e)(n·d) − (n·w)(d·e) = −(e·e)(w × d): s(e·e)(w × d) − R|n|(d·e) against 0, w = q − P_k.
+                const T ee = dot(s.e, s.e);
+                const T de = dot(s.d, s.e);
+                const P2<T> w0{-s.p0.x, -s.p0.y}, w1{-s.p1.x, -s.p1.y};
+                const auto lower = sign2(sd * ee * cross(w0, s.d), -(s.R * de), s.nn);
+                if (!lower) return std::nullopt;
+                if (*lower >= 0) {
+                    const auto upper = sign2(sd * ee * cross(w1, s.d), -(s.R * de), s.nn);
+                    if (!upper) return std::nullopt;
+                    if (*upper <= 0 && !consider(Contact{Part::face, static_cast<std::int8_t>(*side), false}))
+                        return std::nullopt;
+                }
+            }
+        }
+    }
+    for (const Part cap : {Part::cap0, Part::cap1}) {
+        // q is outside both cap discs (outside the capsule).
+        const auto in = circle_entered(s.d, s.centre(cap), s.R);
+        if (!in) return std::nullopt;
+        if (*in && !consider(Contact{cap, 0, false})) return std::nullopt;
+    }
+    return Answer{best};
+}
+
+/// A wall and the leg are apart by more than R in x or in y: no contact, decided on doubles with margin (a
+/// computed gap of g > 0 means an exact gap ≥ g/(1 + ε)).
+bool apart(const Leg& leg, Vec2 lo, Vec2 hi, double reach) {
+    const double limit = reach * (1.0 + 0x1p-50);
+    const Vec2 llo{std::fmin(leg.q.x, leg.b.x), std::fmin(leg.q.y, leg.b.y)};
+    const Vec2 lhi{std::fmax(leg.q.x, leg.b.x), std::fmax(leg.q.y, leg.b.y)};
+    return lo.x - lhi.x > limit || llo.x - hi.x > limit || lo.y - lhi.y > limit || llo.y - hi.y > limit;
+}
+
+}  // namespace
+
+std::optional<Contact> first_contact(const Leg& leg, const Wall& w) {
+    // Degenerate: a leg with no length does not move.
+    if (leg.q == leg.b) return std::nullopt;
+    if (apart(leg, {std::fmin(w.p0.x, w.p1.x), std::fmin(w.p0.y, w.p1.y)},
+              {std::fmax(w.p0.x, w.p1.x), std::fmax(w.p0.y, w.p1.y)}, leg.R))
+        return std::nullopt;
+    const Vec2 d = leg.b - leg.q;
+    return decide(leg.q, {inf_norm(d), inf_norm(w.p0 - leg.q), inf_norm(w.p1 - leg.q), leg.R},
+                  {leg.q, leg.b, w.p0, w.p1}, {leg.R}, [&](const auto& f) { return wall_contact(f, leg, w); });
+}
+
+std::optional<Contact> first_contact(const Leg& leg, Vec2 c, double r) {
+    // Degenerate: a leg with no length does not move.
+    if (leg.q == leg.b) return std::nullopt;
+    // |R + r| as rounded up a little: a margin for the sum's rounding.
+    if (apart(leg, c, c, (leg.R + r) * (1.0 + 0x1p-50))) return std::nullopt;
+    const Vec2 d = leg.b - leg.q;
+    const Obstacle o{nullptr, c, r};
+    return decide(leg.q, {inf_norm(d), inf_norm(c - leg.q), leg.R, r}, {leg.q, leg.b, c}, {leg.R, r},
+                  [&](const auto& f) {
+                      using F = std::decay_t<decltype(f)>;
+                      return circle_contact(Setup<F>(f, leg, o), Part::circle, leg.q == c);
+                  });
+}
+
+int compare(const Leg& leg, const Obstacle& a, const Contact& ca, const Obstacle& b, const Contact& cb) {
+    if (ca.at_start || cb.at_start) return (ca.at_start ? 0 : 1) - (cb.at_start ? 0 : 1);
+    // One circle met twice (walls sharing an end point, or a bumper of radius 0 there): the same quadratic.
+    const auto centre = [](const Obstacle& o, const Contact& c) {
+        return c.part == Part::cap0 ? o.wall->p0 : c.part == Part::cap1 ? o.wall->p1 : o.c;
+    };
+    const auto radius = [](const Obstacle& o, const Contact& c) { return c.part == Part::circle ? o.r : 0.0; };
+    if (ca.part != Part::face && cb.part != Part::face && centre(a, ca) == centre(b, cb) && radius(a, ca) == radius(b, cb))
+        return 0;
+    const Vec2 d = leg.b - leg.q;
+    double m = std::fmax(inf_norm(d), leg.R);
+    Scale scale;
+    scale.add(leg.q);
+    scale.add(leg.b);
+    scale.add(leg.R);
+    for (const Obstacle* o : {&a, &b}) {
+        if (o->wall != nullptr) {
+            m = std::fmax(m, std::fmax(inf_norm(o->wall->p0 - leg.q), inf_norm(o->wall->p1 - leg.q)));
+            scale.add(o->wall->p0);
+            scale.add(o->wall->p1);
+        } else {
+            m = std::fmax(m, std::fmax(inf_norm(o->c - leg.q), o->r));
+            scale.add(o->c);
+            scale.add(o->r);
+        }
+    }
+    const auto decision = [&](const auto& f) {
+        using F = std::decay_t<decltype(f)>;
+        return compare_roots(root(Setup<F>(f, leg, a), ca), root(Setup<F>(f, leg, b), cb));
+    };
+    if (auto r = decision(ApproxFrame(leg.q, {m}))) return *r;
+    return *decision(ZFrame(leg.q, scale));
+}
+
+double contact_time(const Leg& leg, const Obstacle& o, const Contact& c) {
+    if (c.at_start) return 0.0;
+    const Vec2 d = leg.b - leg.q;
+    double m = std::fmax(inf_norm(d), leg.R);
+    if (o.wall != nullptr)
+        m = std::fmax(m, std::fmax(inf_norm(o.wall->p0 - leg.q), inf_norm(o.wall->p1 - leg.q)));
+    else
+        m = std::fmax(m, std::fmax(inf_norm(o.c - leg.q), o.r));
+    const ApproxFrame f(leg.q, {m});
+    const Setup<ApproxFrame> s(f, leg, o);
+    double t = 0.0;
+    if (c.part == Part::face) {
+        // t_f = (s·n·w − R·|n|)/(−s·n·d)
+        const double side = c.side;
+        t = (side * s.nw.v - s.R.v * std::sqrt(s.nn.v)) / (-side * s.nd.v);
+    } else {
+        // t_c = (−β − √Δ)/a = γ/(−β + √Δ): the second form has no cancellation (−β > 0).
+        const P2<Approx>& p = s.centre(c.part);
+        const double rho = s.radius(c.part).v;
+        const double beta = -(s.d.x.v * p.x.v + s.d.y.v * p.y.v);
+        const double a = s.d.x.v * s.d.x.v + s.d.y.v * s.d.y.v;
+        const double gamma = p.x.v * p.x.v + p.y.v * p.y.v - rho * rho;
+        t = gamma / (-beta + std::sqrt(std::fmax(beta * beta - a * gamma, 0.0)));
+    }
+    return std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
+}
+
+namespace {
+
+/// Which part of wall w is nearest to p: the face, or a cap (exactly, on (p − P_k)·e).
+Part nearest_part(Vec2 p, const Wall& w) {
+    if (w.p0 == w.p1) return Part::cap0;
+    const auto u = [&](Vec2 end) {
+        return decide(p, {inf_norm(end - p), inf_norm(w.p1 - w.p0)}, {p, w.p0, w.p1}, {}, [&](const auto& f) {
+            return sign(-dot(f.point(end), f.vector(w.p1, w.p0)));  // (p − P_k)·e
+        });
+    };
+    if (u(w.p0) <= 0) return Part::cap0;
+    if (u(w.p1) >= 0) return Part::cap1;
+    return Part::face;
+}
+
+/// sign(v·(p − c)), exactly.
+int dot_sign(Vec2 v, Vec2 p, Vec2 c) {
+    return decide(p, {inf_norm(c - p), inf_norm(v)}, {p, c, v}, {}, [&](const auto& f) {
+        using F = std::decay_t<decltype(f)>;
+        const P2<typename F::T> vv{f.length(v.x), f.length(v.y)};
+        return sign(-dot(vv, f.point(c)));  // v·(p − c), p the origin
+    });
+}
+
+/// Distance from p to the segment a → b at least ρ = R + r, exactly: the cap at the nearer end, or the face:
+/// (e × (p − a))² ≥ ρ²·(e·e).
+bool point_segment_clear(Vec2 p, Vec2 a, Vec2 b, double R, double r) {
+    if (R == 0.0 && r == 0.0) return true;
+    return decide(p, {inf_norm(a - p), inf_norm(b - p), R, r}, {p, a, b}, {R, r}, [&](const auto& f) -> std::optional<bool> {
+        using T = typename std::decay_t<decltype(f)>::T;
+        const P2<T> A = f.point(a), B = f.point(b), e = f.vector(b, a);
+        const T rho = f.length(R) + f.length(r);
+        const T rho2 = rho * rho;
+        // (p − a)·e ≤ 0 ⇔ A·e ≥ 0: the cap at a (a zero-length segment too)
+        const auto ua = sign(dot(A, e));
+        if (!ua) return std::nullopt;
+        if (*ua >= 0) {
+            const auto c = sign(dot(A, A) - rho2);
+            if (!c) return std::nullopt;
+            return *c >= 0;
+        }
+        const auto ub = sign(dot(B, e));
+        if (!ub) return std::nullopt;
+        if (*ub <= 0) {
+            const auto c = sign(dot(B, B) - rho2);
+            if (!c) return std::nullopt;
+            return *c >= 0;
+        }
+        const T x = cross(e, P2<T>{-A.x, -A.y});
+        const auto c = sign(x * x - rho2 * dot(e, e));
+        if (!c) return std::nullopt;
+        return *c >= 0;
+    });
+}
+
+}  // namespace
+
+int normal_sign(Vec2 p, Vec2 v, const Obstacle& o) {
+    if (o.wall == nullptr) return dot_sign(v, p, o.c);
+    const Part part = nearest_part(p, *o.wall);
+    if (part == Part::face) return exact::side(p, *o.wall) * exact::direction_side(v, *o.wall);
+    return dot_sign(v, p, part == Part::cap0 ? o.wall->p0 : o.wall->p1);
+}
+
+Vec2 normal_at(Vec2 p, const Obstacle& o) {
+    if (o.wall == nullptr) return p - o.c;
+    const Part part = nearest_part(p, *o.wall);
+    if (part == Part::face) return static_cast<double>(exact::side(p, *o.wall)) * normal(*o.wall);
+    return p - (part == Part::cap0 ? o.wall->p0 : o.wall->p1);
+}
+
+bool crosses(Vec2 q, Vec2 x, const Wall& w) {
+    // Strictly opposite sides of the line, and the closed segment meets the line q x.
+    if (q == x || w.p0 == w.p1) return false;
+    if (exact::side(q, w) * exact::side(x, w) >= 0) return false;
+    return exact::orient(q, x, w.p0) * exact::orient(q, x, w.p1) <= 0;
+}
+
+bool touches(Vec2 q, Vec2 x, const Wall& w) {
+    // Each segment's line has the other's ends on one closed side each or both: o1·o2 ≤ 0 and o3·o4 ≤ 0; when all
+    // four are 0 the two lie on one line (or are points) and meet iff their boxes do.
+    const int o1 = exact::orient(q, x, w.p0), o2 = exact::orient(q, x, w.p1);
+    const int o3 = exact::orient(w.p0, w.p1, q), o4 = exact::orient(w.p0, w.p1, x);
+    if (o1 * o2 > 0 || o3 * o4 > 0) return false;
+    if (o1 != 0 || o2 != 0 || o3 != 0 || o4 != 0) return true;
+    const auto overlap = [](double a0, double a1, double b0, double b1) {
+        return std::max(std::min(a0, a1), std::min(b0, b1)) <= std::min(std::max(a0, a1), std::max(b0, b1));
+    };
+    return overlap(q.x, x.x, w.p0.x, w.p1.x) && overlap(q.y, x.y, w.p0.y, w.p1.y);
+}
+
+bool point_clear(Vec2 p, double R, const Obstacle& o) {
+    if (o.wall != nullptr) return point_segment_clear(p, o.wall->p0, o.wall->p1, R, 0.0);
+    return point_segment_clear(o.c, p, p, R, o.r);
+}
+
+bool piece_clear(Vec2 q, Vec2 x, double R, const Obstacle& o) {
+    // A circle: its centre's distance to the piece.
+    if (o.wall == nullptr) return point_segment_clear(o.c, q, x, R, o.r);
+    // Degenerate: no reach (a point ball) keeps every distance.
+    if (R == 0.0) return true;
+    const Wall& w = *o.wall;
+    if (q == x) return point_segment_clear(q, w.p0, w.p1, R, 0.0);
+    if (w.p0 == w.p1) return point_segment_clear(w.p0, q, x, R, 0.0);
+    // Two segments are at least R > 0 apart iff they do not cross and each end point is R from the other
+    // segment (touching or overlapping segments have an end point at distance 0).
+    if (crosses(q, x, w)) return false;
+    return point_segment_clear(q, w.p0, w.p1, R, 0.0) && point_segment_clear(x, w.p0, w.p1, R, 0.0) &&
+           point_segment_clear(w.p0, q, x, R, 0.0) && point_segment_clear(w.p1, q, x, R, 0.0);
+}
+
+}  // namespace ricochet::disc
