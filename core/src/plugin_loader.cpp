@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "plugin_table.hpp"
+#include "ricochet/from_chars.hpp"
 #include "ricochet/plugin_guard.hpp"
 #include "shown_text.hpp"
 
@@ -35,7 +36,7 @@ std::optional<double> timeout_from_env(std::string* why) {
     if (env == nullptr || *env == '\0') return k_default_plugin_timeout_s;
     const std::string_view text = env;
     double seconds = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), seconds);
+    const auto [end, ec] = from_chars_double(text.data(), text.data() + text.size(), seconds);
     if (ec != std::errc{} || end != text.data() + text.size() || !(seconds >= 0 && seconds <= k_max_timeout_s)) {
         *why = fmt::format("{}: '{}' is not a number of seconds from 0 (no limit) to {}", k_timeout_env, shown(text),
                            k_max_timeout_s);
