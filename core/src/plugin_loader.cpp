@@ -70,6 +70,13 @@ void destroy_all() {
 /// Loads file (absolute, canonical) into slot: the steps of load_plugin after its checks of the path.
 std::optional<KernelId> load_into(std::size_t slot, const std::filesystem::path& file, std::string* why) {
     const std::string where = fmt::format("plug-in {}", file.string());
+#if defined(__EMSCRIPTEN__)
+    // wasm32 (emscripten): a program built without dynamic linking has no dlopen, and a plug-in would be a wasm
+    // side module anyway, not the shared library plugin.h describes.
+    (void)slot;
+    *why = fmt::format("{}: cannot load it: plug-in kernels need dlopen, which this build (wasm32) does not have", where);
+    return std::nullopt;
+#endif
     guard_name_plugin(slot, "", file.string());
     void* handle = nullptr;
     {
