@@ -1,22 +1,31 @@
 #!/usr/bin/env bash
 # Determinism across architectures: cross-builds `ricochet` for each leg with Debian 12's cross gcc,
-# runs it (i386 natively, aarch64 and s390x under qemu-user) and compares, byte for byte, with a
+# runs it (i386 natively, aarch64 and s390x under qemu-user), or for wasm32 with Debian 12's emscripten
+# (run under node, with the host's files through NODERAWFS), and compares, byte for byte, with a
 # native x86-64 gcc -O0 build:
 #   - `ricochet replay --hashes LOG...` (one "HASH PATH" line per log), and
 #   - per log, `ricochet run LOG` (its standard output and exit status),
+#   - on i386 and wasm32 (reduce_legs below says why not the others yet), per log of replays/lecture/ (each
+#     fails under its lecture kernel), the failure log `ricochet reduce LOG` writes (standard output and
+#     exit status): the harness's own saved logs,
 # for every log in replays/ but those of replays/peers/: they run the peers' Debian libraries (Box2D,
 # Chipmunk), whose bits are the library's, not this build's (Box2D's float code may be compiled with FMA
 # contraction on other architectures), and the cross builds have no Box2D or Chipmunk at all.
+# The wasm32 build has no GMP (Debian has none for emscripten): its exact numbers are Boost.Multiprecision's
+# (-DRICOCHET_BIGNUM=boost), so that leg also compares the two big-number backends over the corpus.
 # A difference fails the leg and names the log, the two builds and the first differing lines.
 #
-#   .ci/cross.sh [LEG...]       legs: i386 aarch64 s390x (default: all three)
+#   .ci/cross.sh [LEG...]       legs: i386 aarch64 s390x wasm32 (default: all four)
 #   .ci/cross.sh --control      control: aarch64 built with -DRICOCHET_CONTROL_CONTRACT=ON (FMA
 #                               contraction allowed); passes only if the corpus tells it apart
 #
 # Installs what a leg is missing (as root, apt-get, non-interactive; `dpkg --add-architecture` for the
 # multiarch dev packages; libssl-dev, for the fuzz campaign's SHA-1, is unpacked aside and linked
-# statically, see openssl_sysroot); a leg whose packages cannot be installed fails with a message,
-# never skips. Leg builds are -O2 (CROSS_OPT), where aarch64 and s390x gcc would contract into FMA.
+# statically, see openssl_sysroot; emscripten, nodejs and the header-only libraries for wasm32); a leg
+# whose packages cannot be installed fails with a message, never skips. Leg builds are -O2 (CROSS_OPT),
+# where aarch64 and s390x gcc would contract into FMA. The wasm32 leg builds `ricochet` without the fuzz
+# campaign (no child processes under node) and without plug-in kernels (no dlopen): `ricochet run` and
+# `replay --hashes`, the commands compared, are whole.
 # Environment: JOBS (default 2), CROSS_PREFIX (leg build folders, default build-cross-),
 # DET_PREFIX (the native reference is ${DET_PREFIX}gcc-O0, configured exactly as .ci/determinism.sh
 # does, so that the two scripts share it; default build-det-), CROSS_OPT (leg flags, default -O2).
@@ -33,12 +42,12 @@ legs=()
 for a in "$@"; do
   case "$a" in
     --control) control=1 ;;
-    i386|aarch64|s390x) legs+=("$a") ;;
-    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
-    *) echo "cross.sh: unknown leg '$a' (legs: i386 aarch64 s390x, or --control)" >&2; exit 2 ;;
+    i386|aarch64|s390x|wasm32) legs+=("$a") ;;
+    -h|--help) sed -n '2,28p' "$0"; exit 0 ;;
+    *) echo "cross.sh: unknown leg '$a' (legs: i386 aarch64 s390x wasm32, or --control)" >&2; exit 2 ;;
   esac
 done
-[ ${#legs[@]} -gt 0 ] || [ $control = 1 ] || legs=(i386 aarch64 s390x)
+[ ${#legs[@]} -gt 0 ] || [ $control = 1 ] || legs=(i386 aarch64 s390x wasm32)
 
 now() { date +%s; }
 say() { echo "cross: $*" >&2; }
@@ -89,6 +98,7 @@ leg_info() {
     i386)    deb=i386;  gnu=i686-linux-gnu;    multi=i386-linux-gnu;    runner=() ;;
     aarch64) deb=arm64; gnu=aarch64-linux-gnu; multi=aarch64-linux-gnu; runner=(qemu-aarch64) ;;
     s390x)   deb=s390x; gnu=s390x-linux-gnu;   multi=s390x-linux-gnu;   runner=(qemu-s390x) ;;
+    wasm32)  deb=;      gnu=;                  multi=;                  runner=(node) ;;
   esac
 }
 
@@ -126,6 +136,29 @@ capture() {
     rc=$?
     echo "# exit $rc" >>"$dir/run/$name"
   done
+  # The harness's own output: the failure log `ricochet reduce` saves for each of replays/lecture/'s logs
+  # (each fails under its lecture kernel), on stdout, with its exit status; on the legs of reduce_legs.
+  [ "${capture_reduce:-1}" = 1 ] || return 0
+  for log in replays/lecture/*.scene; do
+    name=reduce__${log//\//__}
+    "$@" reduce "$log" >"$dir/run/$name" 2>/dev/null </dev/null
+    rc=$?
+    echo "# exit $rc" >>"$dir/run/$name"
+  done
+}
+
+# The legs whose reduced logs are compared. aarch64 and s390x are not, yet: there the reduced
+# float-long-wall-reflect-nan.scene says "(nan, nan)" where x86-64 says "(-nan, -nan)" (an invalid operation's
+# NaN is negative on x86 and positive on ARM and s390x, and fmt prints its sign); the data lines are the same.
+reduce_legs=" i386 wasm32 "
+
+# what NAME: the command and log a captured output file stands for ("run replays/x.scene").
+what() {
+  local f=$1
+  case "$f" in
+    reduce__*) f=${f#reduce__}; echo "reduce ${f//__//}" ;;
+    *) echo "run ${f//__//}" ;;
+  esac
 }
 
 # compare REFDIR LEGDIR REFNAME LEGNAME: 0 if identical; otherwise name each differing output.
@@ -136,19 +169,23 @@ compare() {
     echo "DIFFERS replay --hashes: $an vs $bn; first differing lines:"
     diff "$a/hashes.txt" "$b/hashes.txt" | head -n 6
   fi
+  local b_reduce
+  b_reduce=$(find "$b/run" -name 'reduce__*' | wc -l)
   for f in "$a"/run/*; do
     f=${f##*/}
+    # A leg outside reduce_legs captured no reduced logs.
+    [ "$b_reduce" = 0 ] && [ "${f#reduce__}" != "$f" ] && continue
     if [ ! -f "$b/run/$f" ]; then
-      status=1; echo "MISSING in $bn: run ${f//__//}"; continue
+      status=1; echo "MISSING in $bn: $(what "$f")"; continue
     fi
     if ! cmp -s "$a/run/$f" "$b/run/$f"; then
       status=1
-      echo "DIFFERS run ${f//__//}: $an vs $bn; first differing lines:"
+      echo "DIFFERS $(what "$f"): $an vs $bn; first differing lines:"
       diff "$a/run/$f" "$b/run/$f" | head -n 4
     fi
   done
-  nlogs=$(ls "$a/run" | wc -l)
-  [ $status = 0 ] && say "$bn: replay --hashes and $nlogs run outputs identical to $an"
+  nlogs=$(find "$b/run" -type f -not -name 'reduce__*' | wc -l)
+  [ $status = 0 ] && say "$bn: replay --hashes, $nlogs run outputs and $b_reduce reduced logs identical to $an"
   return $status
 }
 
@@ -173,22 +210,33 @@ leg() {
   local deb gnu multi runner ssl_root t0 t1 t2 t3
   leg_info "$name"
   t0=$(now)
-  local pkgs=(cmake ninja-build pkg-config libcli11-dev
-              "libfmt-dev:$deb" "libgmp-dev:$deb" "libxxhash-dev:$deb")
+  local pkgs=(cmake ninja-build pkg-config libcli11-dev) target_args=()
   case "$name" in
     i386) pkgs+=(gcc-i686-linux-gnu g++-i686-linux-gnu) ;;
     aarch64) pkgs+=(crossbuild-essential-arm64 qemu-user) ;;
     s390x) pkgs+=(crossbuild-essential-s390x qemu-user) ;;
+    # Header-only on the host (cmake/emscripten.cmake): fmt, CLI11, xxhash and Boost.Multiprecision.
+    wasm32) pkgs+=(emscripten nodejs libfmt-dev libxxhash-dev libboost-dev) ;;
   esac
-  if ! add_arch "$deb" || ! ensure "${pkgs[@]}" || ! openssl_sysroot; then
-    echo "FAIL $name: the cross toolchain or the :$deb dev packages could not be installed (see above)"
-    return 1
+  if [ "$name" = wasm32 ]; then
+    if ! ensure "${pkgs[@]}"; then
+      echo "FAIL $name: emscripten, nodejs or the header-only dev packages could not be installed (see above)"
+      return 1
+    fi
+    target_args=(-DCMAKE_CXX_FLAGS="$opt" -DRICOCHET_BIGNUM=boost -DRICOCHET_FUZZ_CAMPAIGN=OFF -DRICOCHET_PEERS=OFF)
+  else
+    pkgs+=("libfmt-dev:$deb" "libgmp-dev:$deb" "libxxhash-dev:$deb")
+    if ! add_arch "$deb" || ! ensure "${pkgs[@]}" || ! openssl_sysroot; then
+      echo "FAIL $name: the cross toolchain or the :$deb dev packages could not be installed (see above)"
+      return 1
+    fi
+    target_args=(-DCMAKE_CXX_FLAGS="$opt -isystem $ssl_root/usr/include/$multi"
+                 -DOPENSSL_INCLUDE_DIR="$ssl_root/usr/include" -DOPENSSL_CRYPTO_LIBRARY="$ssl_root/usr/lib/$multi/libcrypto.a")
   fi
   t1=$(now)
   if [ ! -f "$dir/CMakeCache.txt" ]; then
     if ! cmake -S . -B "$dir" -G Ninja -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/toolchains/$name.cmake" \
-         -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="$opt -isystem $ssl_root/usr/include/$multi" \
-         -DOPENSSL_INCLUDE_DIR="$ssl_root/usr/include" -DOPENSSL_CRYPTO_LIBRARY="$ssl_root/usr/lib/$multi/libcrypto.a" \
+         -DCMAKE_BUILD_TYPE=None "${target_args[@]}" \
          -DRICOCHET_TESTS=OFF -DRICOCHET_BENCH=OFF -DRICOCHET_FUZZ=OFF "$@" >"$out/$name.configure.log" 2>&1; then
       cat "$out/$name.configure.log"; rm -rf "$dir"
       echo "FAIL $name: configure failed"; return 1
@@ -199,12 +247,18 @@ leg() {
     echo "FAIL $name: build failed"; return 1
   fi
   t2=$(now)
-  local bin=("${runner[@]}" "$dir/cli/ricochet")
+  # emscripten writes the program as ricochet.js (node's part) beside ricochet.wasm.
+  local exe=$dir/cli/ricochet
+  [ "$name" = wasm32 ] && exe=$dir/cli/ricochet.js
+  local bin=("${runner[@]}" "$exe")
   if ! "${bin[@]}" --version >/dev/null 2>&1; then
     "${bin[@]}" --version
     echo "FAIL $name: the $name binary does not start (${runner[*]:-natively})"; return 1
   fi
+  capture_reduce=0
+  [ "${reduce_legs/ $name /}" != "$reduce_legs" ] && capture_reduce=1
   capture "$out/$name" "${bin[@]}"
+  capture_reduce=1
   t3=$(now)
   say "$name: packages $((t1 - t0)) s, configure+build $((t2 - t1)) s, runs $((t3 - t2)) s, total $((t3 - t0)) s"
   leg_seconds=$((t3 - t0))
@@ -220,7 +274,9 @@ summary=()
 for l in "${legs[@]}"; do
   say "leg $l"
   leg_seconds=0
-  if leg "$l" && compare "$out/native" "$out/$l" "native-gcc-O0" "$l-gcc$opt"; then
+  build_name="$l-gcc$opt"
+  [ "$l" = wasm32 ] && build_name="wasm32-emscripten$opt-boost"
+  if leg "$l" && compare "$out/native" "$out/$l" "native-gcc-O0" "$build_name"; then
     summary+=("$l: identical (${leg_seconds} s)")
   else
     summary+=("$l: FAILED"); status=1

@@ -41,6 +41,8 @@ void register_help(CLI::App& app);
 void register_completion(CLI::App& app);
 /// `ricochet bench` in a build without bench/ (RICOCHET_BENCH=OFF): says how to get it, exits 1.
 void register_bench_not_built(CLI::App& app);
+/// `ricochet fuzz` in a build without the campaign (RICOCHET_FUZZ_CAMPAIGN=OFF, as on wasm32): says why, exits 1.
+void register_fuzz_not_built(CLI::App& app);
 
 /// The program's help (its usage and the list of commands).
 std::string program_help(const CLI::App& app);

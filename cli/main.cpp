@@ -12,10 +12,12 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "ricochet_fuzz/command.hpp"
 #include "ricochet_peers/peers.hpp"
 #ifdef RICOCHET_HAVE_BENCH
 #include "ricochet_bench/command.hpp"
+#endif
+#ifdef RICOCHET_HAVE_FUZZ_CAMPAIGN
+#include "ricochet_fuzz/command.hpp"
 #endif
 
 namespace {
@@ -46,7 +48,11 @@ int main(int argc, char** argv) {
 #else
     ricochet::cli::register_bench_not_built(app);
 #endif
+#ifdef RICOCHET_HAVE_FUZZ_CAMPAIGN
     ricochet::fuzz::register_fuzz(app);
+#else
+    ricochet::cli::register_fuzz_not_built(app);
+#endif
     ricochet::cli::register_help(app);
     ricochet::cli::register_completion(app);
 

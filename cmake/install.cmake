@@ -25,6 +25,12 @@ if(_ricochet_core_type STREQUAL "STATIC_LIBRARY")
 else()
   set(RICOCHET_CONFIG_NEEDS_XXHASH FALSE)
 endif()
+# GMP is public on the GMP backend (core/CMakeLists.txt); the Boost backend's headers are not in the export.
+if(RICOCHET_BIGNUM_BACKEND STREQUAL "gmp")
+  set(RICOCHET_CONFIG_NEEDS_GMP TRUE)
+else()
+  set(RICOCHET_CONFIG_NEEDS_GMP FALSE)
+endif()
 install(EXPORT ricochetTargets NAMESPACE ricochet:: DESTINATION ${_ricochet_cmake_dir})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/ricochetConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/ricochetConfig.cmake

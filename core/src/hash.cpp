@@ -3,10 +3,11 @@
 
 #include <xxhash.h>
 
-#include <bit>
 #include <cstring>
 
 #include <fmt/format.h>
+
+#include "ricochet/bits.hpp"
 
 namespace ricochet {
 
@@ -24,10 +25,10 @@ void encode_event(const Event& e, unsigned char (&r)[k_event_record_size]) {
     put(r + 4, e.ball, 4);
     put(r + 8, static_cast<std::uint64_t>(e.frame), 8);
     put(r + 16, e.index, 4);
-    put(r + 24, std::bit_cast<std::uint64_t>(e.pos.x), 8);
-    put(r + 32, std::bit_cast<std::uint64_t>(e.pos.y), 8);
-    put(r + 40, std::bit_cast<std::uint64_t>(e.vel.x), 8);
-    put(r + 48, std::bit_cast<std::uint64_t>(e.vel.y), 8);
+    put(r + 24, bits_of(e.pos.x), 8);
+    put(r + 32, bits_of(e.pos.y), 8);
+    put(r + 40, bits_of(e.vel.x), 8);
+    put(r + 48, bits_of(e.vel.y), 8);
 }
 
 RunHasher::RunHasher() : state_(XXH64_createState()) { XXH64_reset(static_cast<XXH64_state_t*>(state_), 0); }

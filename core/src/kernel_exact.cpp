@@ -9,7 +9,7 @@
 // the rest (filter.hpp). In a frame all inputs are scaled to integers at one common scale 2^k
 // (scaled.hpp); the normal n = (e_y, −e_x) is never normalized, so each hit point, t_i and v' is a
 // quotient of integers, carried as numerators over one common positive denominator, reduced only
-// once per bounce (one gcd, not one per operation as mpq does): fractions are compared by
+// once per bounce (one gcd, not one per operation as a rational type does): fractions are compared by
 // cross-multiplication. The frame's leg i is the line
 // p(t) = A + t·dir through its start (frame time now) and its end Be (t = 1), which keeps denominators
 // growing by a sum of sizes per bounce, not a product.
@@ -19,8 +19,7 @@
 #include <optional>
 #include <vector>
 
-#include <gmpxx.h>
-
+#include "exact/bignum.hpp"
 #include "exact/filter.hpp"
 #include "exact/int.hpp"
 #include "exact/printed_path.hpp"
@@ -135,13 +134,13 @@ bool on_segment(const ZFrac& p, const ZWall& w) {
 /// Divides p/d (and extra, over the same d) by the gcd of all its integers. Values are unchanged; done
 /// once per bounce, it keeps sizes from growing with the number of bounces as the products above do.
 void reduce(ZFrac& f, Z* extra = nullptr) {
-    mpz_class g;
-    mpz_gcd(g.get_mpz_t(), f.p.x.v.get_mpz_t(), f.p.y.v.get_mpz_t());
-    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), f.d.v.get_mpz_t());
-    if (extra != nullptr) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), extra->v.get_mpz_t());
+    bignum::Integer g;
+    bignum::gcd(g, f.p.x.v, f.p.y.v);
+    bignum::gcd(g, g, f.d.v);
+    if (extra != nullptr) bignum::gcd(g, g, extra->v);
     if (g == 1) return;
     for (Z* z : {&f.p.x, &f.p.y, &f.d, extra})
-        if (z != nullptr) mpz_divexact(z->v.get_mpz_t(), z->v.get_mpz_t(), g.get_mpz_t());
+        if (z != nullptr) bignum::divexact(z->v, z->v, g);
 }
 
 struct ZContact {
@@ -163,29 +162,18 @@ namespace {
 
 /// Scratch integers for sweep() and reflect(): one leg needs sixteen, none allocated in the steady state.
 struct LegScratch {
-    mpz_t z[16];
-    LegScratch() {
-        for (mpz_t& x : z) mpz_init(x);
-    }
-    ~LegScratch() {
-        for (mpz_t& x : z) mpz_clear(x);
-    }
-    LegScratch(const LegScratch&) = delete;
-    LegScratch& operator=(const LegScratch&) = delete;
+    bignum::Integer z[16];
 };
 LegScratch& leg_scratch() {
     thread_local LegScratch s;
     return s;
 }
-void set_scaled(mpz_t out, double x, int k) {
-    const num::Dyad d = num::split(x);
-    num::set_int64(out, d.m);
-    if (d.m != 0) mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(d.e - k));
-}
+void set_scaled(bignum::Integer& out, double x, int k) { num::scaled_big(out, x, k); }
 /// out = a·b + c·d
-void dot2(mpz_t out, mpz_srcptr a, mpz_srcptr b, mpz_srcptr c, mpz_srcptr d) {
-    mpz_mul(out, a, b);
-    mpz_addmul(out, c, d);
+void dot2(bignum::Integer& out, const bignum::Integer& a, const bignum::Integer& b, const bignum::Integer& c,
+          const bignum::Integer& d) {
+    bignum::mul(out, a, b);
+    bignum::addmul(out, c, d);
 }
 
 }  // namespace
@@ -197,29 +185,29 @@ Sweep sweep(Vec2 bs, Vec2 v, const Wall& w) {
     num::Scale sc;
     for (double x : {bs.x, bs.y, be.x, be.y, w.p0.x, w.p0.y, w.p1.x, w.p1.y}) sc.add(x);
     const int k = sc.exponent();
-    mpz_t* z = leg_scratch().z;
-    mpz_ptr qx = z[0], qy = z[1], dx = z[2], dy = z[3], p0x = z[4], p0y = z[5], nx = z[6], ny = z[7];
-    mpz_ptr ax = z[8], ay = z[9], nt = z[10], nd = z[11], bx = z[12], by = z[13];
+    bignum::Integer* z = leg_scratch().z;
+    bignum::Integer &qx = z[0], &qy = z[1], &dx = z[2], &dy = z[3], &p0x = z[4], &p0y = z[5], &nx = z[6], &ny = z[7];
+    bignum::Integer &ax = z[8], &ay = z[9], &nt = z[10], &nd = z[11], &bx = z[12], &by = z[13];
     set_scaled(qx, bs.x, k);
     set_scaled(qy, bs.y, k);
     set_scaled(dx, be.x, k);
     set_scaled(dy, be.y, k);
-    mpz_sub(dx, dx, qx);  // dir = Be − Bs
-    mpz_sub(dy, dy, qy);
+    bignum::sub(dx, dx, qx);  // dir = Be − Bs
+    bignum::sub(dy, dy, qy);
     set_scaled(p0x, w.p0.x, k);
     set_scaled(p0y, w.p0.y, k);
     set_scaled(nx, w.p1.y, k);  // n = (e_y, −e_x) = (P1y − P0y, P0x − P1x)
-    mpz_sub(nx, nx, p0y);
+    bignum::sub(nx, nx, p0y);
     set_scaled(ny, w.p1.x, k);
-    mpz_sub(ny, p0x, ny);
+    bignum::sub(ny, p0x, ny);
     // t_i = n·(P0 − Bs)/(n·(Be − Bs)) = nt/nd, nd > 0 after fixing signs
-    mpz_sub(ax, p0x, qx);
-    mpz_sub(ay, p0y, qy);
+    bignum::sub(ax, p0x, qx);
+    bignum::sub(ay, p0y, qy);
     dot2(nt, nx, ax, ny, ay);
     dot2(nd, nx, dx, ny, dy);
-    if (mpz_sgn(nd) < 0) {
-        mpz_neg(nt, nt);
-        mpz_neg(nd, nd);
+    if (bignum::sign(nd) < 0) {
+        bignum::neg(nt, nt);
+        bignum::neg(nd, nd);
     }
     // B_i = Bs + t_i·(Be − Bs) = (Bs·nd + nt·(Be − Bs))/nd
     dot2(bx, qx, nd, nt, dx);
@@ -232,30 +220,31 @@ Vec2 reflect(Vec2 v, const Wall& w) {
     num::Scale sc;
     for (double x : {v.x, v.y, w.p0.x, w.p0.y, w.p1.x, w.p1.y}) sc.add(x);
     const int k = sc.exponent();
-    mpz_t* z = leg_scratch().z;
-    mpz_ptr vx = z[0], vy = z[1], nx = z[2], ny = z[3], t = z[4], nn = z[5], vn = z[6], rx = z[7], ry = z[8];
+    bignum::Integer* z = leg_scratch().z;
+    bignum::Integer &vx = z[0], &vy = z[1], &nx = z[2], &ny = z[3], &t = z[4], &nn = z[5], &vn = z[6], &rx = z[7],
+                    &ry = z[8];
     set_scaled(vx, v.x, k);
     set_scaled(vy, v.y, k);
     set_scaled(nx, w.p1.y, k);  // n = (P1y − P0y, P0x − P1x)
     set_scaled(t, w.p0.y, k);
-    mpz_sub(nx, nx, t);
+    bignum::sub(nx, nx, t);
     set_scaled(ny, w.p0.x, k);
     set_scaled(t, w.p1.x, k);
-    mpz_sub(ny, ny, t);
+    bignum::sub(ny, ny, t);
     dot2(nn, nx, nx, ny, ny);
     // Degenerate: a zero-length wall has no normal; v is unchanged (printed as the exact kernel prints).
-    if (mpz_sgn(nn) == 0) {
-        mpz_set_ui(nn, 1);
-        mpz_set_ui(nx, 0);
-        mpz_set_ui(ny, 0);
+    if (bignum::sign(nn) == 0) {
+        bignum::set_int64(nn, 1);
+        bignum::set_int64(nx, 0);
+        bignum::set_int64(ny, 0);
     }
     // v' = v − 2(v·n)/(n·n)·n = (v·(n·n) − 2(v·n)·n)/(n·n)
     dot2(vn, vx, nx, vy, ny);
-    mpz_mul_2exp(vn, vn, 1);
-    mpz_mul(rx, vx, nn);
-    mpz_submul(rx, vn, nx);
-    mpz_mul(ry, vy, nn);
-    mpz_submul(ry, vn, ny);
+    bignum::mul_2exp(vn, vn, 1);
+    bignum::mul(rx, vx, nn);
+    bignum::submul(rx, vn, nx);
+    bignum::mul(ry, vy, nn);
+    bignum::submul(ry, vn, ny);
     return {num::round_quotient(rx, nn, k), num::round_quotient(ry, nn, k)};
 }
 

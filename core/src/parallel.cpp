@@ -4,7 +4,20 @@
 #include <algorithm>
 #include <thread>
 
+// wasm32 as node runs `ricochet` (emscripten without -pthread) has no threads, and its libc++ (13) no
+// std::jthread: there every part runs on the calling thread, in order. The parts are independent (each
+// ball's step reads only the walls), so the results are the same bits.
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+#define RICOCHET_NO_THREADS 1
+#endif
+
 namespace ricochet::detail {
+
+#if defined(RICOCHET_NO_THREADS)
+constexpr bool k_have_threads = false;
+#else
+constexpr bool k_have_threads = true;
+#endif
 
 ParallelStepper::ParallelStepper(unsigned threads) : threads_(std::max(1u, threads)), parts_(threads_) {}
 
@@ -38,11 +51,12 @@ void ParallelStepper::step(KernelId k, std::span<Ball> balls, std::span<BallMemo
         parts_[p].begin = n * p / threads_;
         parts_[p].end = n * (p + 1) / threads_;
     }
-    if (threads_ == 1 || n < 2 * threads_) {
-        // Too few balls to share: one thread does it all (same results, no thread start-up).
+    if (!k_have_threads || threads_ == 1 || n < 2 * threads_) {
+        // Too few balls to share, or no threads: one thread does it all (same results, no thread start-up).
         for (unsigned p = 0; p < threads_; ++p) run_part(p, k, balls, memories, obstacles, prefetch);
         return;
     }
+#if !defined(RICOCHET_NO_THREADS)
     {
         std::vector<std::jthread> workers;
         workers.reserve(threads_ - 1);
@@ -50,6 +64,7 @@ void ParallelStepper::step(KernelId k, std::span<Ball> balls, std::span<BallMemo
             workers.emplace_back([&, p] { run_part(p, k, balls, memories, obstacles, prefetch); });
         run_part(0, k, balls, memories, obstacles, prefetch);
     }  // jthreads join here
+#endif
 }
 
 std::span<const HitEvent> ParallelStepper::hits(std::size_t i) const {

@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <bit>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -23,6 +22,7 @@
 #include <fmt/format.h>
 
 #include "plugin_call.hpp"
+#include "ricochet/bits.hpp"
 
 namespace ricochet {
 namespace detail {
@@ -159,7 +159,7 @@ public:
         x = std::fabs(x);
         if (std::isinf(x)) return add("inf");
         if (x < 0x1p53 && std::trunc(x) == x) return add_count(static_cast<std::uint64_t>(x));
-        const auto bits = std::bit_cast<std::uint64_t>(x);
+        const auto bits = bits_of(x);
         const auto biased = static_cast<int>(bits >> 52);
         std::uint64_t mantissa = bits & ((std::uint64_t{1} << 52) - 1);
         add(biased == 0 ? "0x0" : "0x1");

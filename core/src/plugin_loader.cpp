@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "plugin_table.hpp"
+#include "ricochet/from_chars.hpp"
 #include "ricochet/plugin_guard.hpp"
 #include "shown_text.hpp"
 
@@ -35,7 +36,7 @@ std::optional<double> timeout_from_env(std::string* why) {
     if (env == nullptr || *env == '\0') return k_default_plugin_timeout_s;
     const std::string_view text = env;
     double seconds = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), seconds);
+    const auto [end, ec] = from_chars_double(text.data(), text.data() + text.size(), seconds);
     if (ec != std::errc{} || end != text.data() + text.size() || !(seconds >= 0 && seconds <= k_max_timeout_s)) {
         *why = fmt::format("{}: '{}' is not a number of seconds from 0 (no limit) to {}", k_timeout_env, shown(text),
                            k_max_timeout_s);
@@ -69,6 +70,13 @@ void destroy_all() {
 /// Loads file (absolute, canonical) into slot: the steps of load_plugin after its checks of the path.
 std::optional<KernelId> load_into(std::size_t slot, const std::filesystem::path& file, std::string* why) {
     const std::string where = fmt::format("plug-in {}", file.string());
+#if defined(__EMSCRIPTEN__)
+    // wasm32 (emscripten): a program built without dynamic linking has no dlopen, and a plug-in would be a wasm
+    // side module anyway, not the shared library plugin.h describes.
+    (void)slot;
+    *why = fmt::format("{}: cannot load it: plug-in kernels need dlopen, which this build (wasm32) does not have", where);
+    return std::nullopt;
+#endif
     guard_name_plugin(slot, "", file.string());
     void* handle = nullptr;
     {

@@ -1,14 +1,13 @@
 // Exact predicates: floating-point filter, then the exact path in stages (staged_sign.hpp): when the differences
 // are exact, the order of two rounded products; then the leading terms and a bounded tail; then the complete
-// exact sum; GMP beyond the expansions' range.
+// exact sum; big rationals (exact/bignum.hpp) beyond the expansions' range.
 #include "ricochet/predicates.hpp"
 
 #include <cmath>
 #include <initializer_list>
 #include <optional>
 
-#include <gmpxx.h>
-
+#include "exact/bignum.hpp"
 #include "orient_filter.hpp"
 #include "staged_sign.hpp"
 
@@ -36,7 +35,7 @@ constexpr double k_cross_slack = 1.0 + 8.0 * k_eps;
 thread_local FallbackCounts t_counts;
 
 int sign(double v) { return staged::sign_of(v); }
-int sign(const mpq_class& v) { return sgn(v); }
+int sign(const bignum::Rational& v) { return bignum::sign(v); }
 
 bool expansion_safe(std::initializer_list<double> xs) {
     for (double x : xs) {
@@ -46,20 +45,20 @@ bool expansion_safe(std::initializer_list<double> xs) {
     return true;
 }
 
-/// Counts a sign found without GMP in the given stage's counter, and returns it.
+/// Counts a sign found without big rationals in the given stage's counter, and returns it.
 int counted(int s, unsigned long long FallbackCounts::*stage) {
     ++t_counts.expansion;
     ++(t_counts.*stage);
     return s;
 }
 
-/// Counts a sign found by GMP, and returns it.
-int gmp_sign(const mpq_class& v) {
+/// Counts a sign found by big rationals (FallbackCounts::gmp), and returns it.
+int gmp_sign(const bignum::Rational& v) {
     ++t_counts.gmp;
     return sign(v);
 }
 
-mpq_class q(double x) { return mpq_class(x); }
+bignum::Rational q(double x) { return bignum::rational(x); }
 
 /// sign((A + a)(B + b) − (C + c)(D + d)) in stages 1 and 2 (staged_sign.hpp), with l = fl(A·B), r = fl(C·D).
 [[gnu::always_inline]] inline std::optional<int> det_sign(Split p, Split q, Split u, Split v, double l, double r) {
@@ -105,7 +104,7 @@ Filtered orient_filtered(Vec2 a, Vec2 b, Vec2 c) {
     if (expansion_safe({p.x, p.y, c.c.x, c.c.y, c.r}))
         return counted(staged::complete_squares(two_diff(p.x, c.c.x), two_diff(p.y, c.c.y), {c.r, 0.0}),
                        &FallbackCounts::complete);
-    const mpq_class ex = q(p.x) - q(c.c.x), ey = q(p.y) - q(c.c.y), r = q(c.r);
+    const bignum::Rational ex = q(p.x) - q(c.c.x), ey = q(p.y) - q(c.c.y), r = q(c.r);
     return gmp_sign(ex * ex + ey * ey - r * r);
 }
 
@@ -122,7 +121,7 @@ Filtered orient_filtered(Vec2 a, Vec2 b, Vec2 c) {
     if (expansion_safe({a.c.x, a.c.y, b.c.x, b.c.y, a.r, b.r}))
         return counted(staged::complete_squares(two_diff(a.c.x, b.c.x), two_diff(a.c.y, b.c.y), two_sum(a.r, b.r)),
                        &FallbackCounts::complete);
-    const mpq_class ex = q(a.c.x) - q(b.c.x), ey = q(a.c.y) - q(b.c.y), r = q(a.r) + q(b.r);
+    const bignum::Rational ex = q(a.c.x) - q(b.c.x), ey = q(a.c.y) - q(b.c.y), r = q(a.r) + q(b.r);
     return gmp_sign(ex * ex + ey * ey - r * r);
 }
 
@@ -216,10 +215,10 @@ int compare_crossings(Vec2 a, Vec2 b, const Wall& w1, const Wall& w2) {
                        k_cross_round * (std::fabs(l) + std::fabs(r));
     const double d = l - r;
     if (std::isfinite(err) && std::fabs(d) > k_cross_slack * err) return sign(d) * sa1 * sa2;
-    auto det = [](const Wall& w, Vec2 p) -> mpq_class {
+    auto det = [](const Wall& w, Vec2 p) -> bignum::Rational {
         return (q(w.p0.x) - q(p.x)) * (q(w.p1.y) - q(p.y)) - (q(w.p0.y) - q(p.y)) * (q(w.p1.x) - q(p.x));
     };
-    const mpq_class ea1 = det(w1, a), eb1 = det(w1, b), ea2 = det(w2, a), eb2 = det(w2, b);
+    const bignum::Rational ea1 = det(w1, a), eb1 = det(w1, b), ea2 = det(w2, a), eb2 = det(w2, b);
     return gmp_sign(ea2 * eb1 - ea1 * eb2) * sa1 * sa2;
 }
 

@@ -11,6 +11,7 @@
 #include <xxhash.h>
 
 #include "ricochet/format.hpp"
+#include "ricochet/from_chars.hpp"
 #include "ricochet/hash.hpp"
 #include "shown_text.hpp"
 
@@ -57,7 +58,7 @@ std::optional<double> to_double(std::string_view s, std::string& why) {
         return std::nullopt;
     }
     double v = 0.0;
-    const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), v, format);
+    const auto [end, ec] = from_chars_double(body.data(), body.data() + body.size(), v, format);
     if (ec == std::errc::result_out_of_range) {
         why = fmt::format("'{}' is out of the range of a double", shown(s));
         return std::nullopt;

@@ -1,6 +1,7 @@
 // The exact kernel's arithmetic at its limits: splitting doubles (largest, smallest, subnormal), exact
 // signs where the filter must decline (cancellation, exponents 2^±1074 and up to 2^1023), and rounding
-// of integer quotients against GMP rationals (ties, subnormals, zero, overflow conventions).
+// of integer quotients against big rationals (ties, subnormals, zero, overflow conventions), on the build's
+// big-number backend (exact/bignum.hpp; the Boost variant of this test runs it on Boost.Multiprecision too).
 #include <bit>
 #include <cfloat>
 #include <cmath>
@@ -8,9 +9,10 @@
 #include <random>
 #include <string>
 
-#include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include "bignum_cases.hpp"
+#include "exact/bignum.hpp"
 #include "exact/filter.hpp"
 #include "exact/round.hpp"
 #include "exact/scaled.hpp"
@@ -18,45 +20,42 @@
 namespace ricochet::exact_kernel::num {
 namespace {
 
-TEST(ExactArith, SixtyFourBitIntegersCrossIntoGmpWhole) {
-    // Past 32 bits, where a 32-bit long (i386) would cut them; both signs and INT64_MIN.
+using bignum::Integer;
+using bignum::Rational;
+
+TEST(ExactArith, SixtyFourBitIntegersCrossIntoBigIntegersWhole) {
+    // Past 32 bits, where a 32-bit long (i386, wasm32) would cut them; both signs and INT64_MIN.
     for (const std::int64_t v : {std::int64_t{0}, std::int64_t{1} << 53 | 1, -(std::int64_t{1} << 62) - 7,
                                  INT64_MIN, INT64_MAX}) {
-        mpz_class z;
-        set_int64(z.get_mpz_t(), v);
-        EXPECT_EQ(z.get_str(), std::to_string(v));
+        Integer z;
+        bignum::set_int64(z, v);
+        EXPECT_EQ(bignum::compare(z, Integer(std::to_string(v))), 0) << v;
     }
     // The low 64 bits of |z|, for a 57-bit quotient and one past 64 bits.
-    const mpz_class q("144115188075855875");  // 2^57 + 3
-    EXPECT_EQ(low_uint64(q.get_mpz_t()), (std::uint64_t{1} << 57) + 3);
-    const mpz_class big = (mpz_class(1) << 70) + 5;
-    EXPECT_EQ(low_uint64(big.get_mpz_t()), 5u);
-    EXPECT_EQ(low_uint64(mpz_class(-9).get_mpz_t()), 9u);
-    EXPECT_EQ(low_uint64(mpz_class(0).get_mpz_t()), 0u);
+    const Integer q("144115188075855875");  // 2^57 + 3
+    EXPECT_EQ(bignum::low_uint64(q), (std::uint64_t{1} << 57) + 3);
+    const Integer big = (Integer(1) << 70) + 5;
+    EXPECT_EQ(bignum::low_uint64(big), 5u);
+    EXPECT_EQ(bignum::low_uint64(Integer(-9)), 9u);
+    EXPECT_EQ(bignum::low_uint64(Integer(0)), 0u);
 }
 
 std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
 
-mpq_class exact(double x) { return mpq_class(x); }
+Rational exact(double x) { return bignum::rational(x); }
 
-/// The reference rounding: mpq's truncation, then the nearer of it and its neighbour, ties to even.
-double reference_round(const mpq_class& x) {
-    const double d = x.get_d();
-    const double away = std::nextafter(d, sgn(x) >= 0 ? INFINITY : -INFINITY);
+/// The reference rounding: the truncation (bignum::to_double), then the nearer of it and its neighbour, ties to even.
+double reference_round(const Rational& x) {
+    const double d = bignum::to_double(x);
+    const double away = std::nextafter(d, bignum::sign(x) >= 0 ? INFINITY : -INFINITY);
     if (!std::isfinite(away)) return d;
-    const mpq_class ed = abs(x - mpq_class(d)), ea = abs(mpq_class(away) - x);
+    const Rational ed = abs(Rational(x - exact(d))), ea = abs(Rational(exact(away) - x));
     if (ea < ed || (ea == ed && (bits(away) & 1u) == 0)) return away;
     return d;
 }
 
-double round_of(const mpz_class& n, const mpz_class& d, long k) { return round_quotient(n, d, k); }
-mpq_class value_of(const mpz_class& n, const mpz_class& d, long k) {
-    mpq_class q(n, d);
-    q.canonicalize();
-    if (k >= 0) mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(k));
-    else mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-k));
-    return q;
-}
+double round_of(const Integer& n, const Integer& d, long k) { return round_quotient(n, d, k); }
+Rational value_of(const Integer& n, const Integer& d, long k) { return bignum::rational(n, d) * bignum::pow2(k); }
 
 TEST(ExactArith, SplitIsExactAtTheLimits) {
     for (double x : {DBL_MAX, -DBL_MAX, DBL_MIN, 0x1p-1074, -0x1p-1074, 0x1.8p-1073, 1.0, -3.0, 0x1p256, 0.1}) {
@@ -77,17 +76,17 @@ TEST(ExactArith, SignsAtTheLimitsMatchRationals) {
         const double x = std::ldexp(std::ldexp(static_cast<double>(rng() >> 11), -53), e);
         return (rng() & 1 ? 1 : -1) * (std::isfinite(x) ? x : DBL_MAX);
     };
-    for (int i = 0; i < 200000; ++i) {
+    for (int i = 0; i < test::bignum_cases(200000); ++i) {
         double v[8];
         for (double& x : v) x = any();
         // Force cancellation: the second product equals the first one or a neighbour.
         if (i % 3 == 0) { v[4] = v[0]; v[5] = v[1]; v[6] = v[2]; v[7] = std::nextafter(v[3], i % 2 ? INFINITY : 0.0); }
         if (i % 3 == 1) { v[4] = v[2]; v[5] = v[3]; v[6] = v[0]; v[7] = v[1]; }
-        const mpq_class want = (exact(v[0]) - exact(v[1])) * (exact(v[2]) - exact(v[3])) -
-                               (exact(v[4]) - exact(v[5])) * (exact(v[6]) - exact(v[7]));
-        ASSERT_EQ(det_sign(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]), sgn(want)) << i;
-        const mpq_class dx = exact(v[0]) - exact(v[1]), dy = exact(v[2]) - exact(v[3]), r = exact(v[4]) + exact(v[5]);
-        ASSERT_EQ(circle_sign(v[0], v[1], v[2], v[3], v[4], v[5]), sgn(dx * dx + dy * dy - r * r)) << i;
+        const Rational want = (exact(v[0]) - exact(v[1])) * (exact(v[2]) - exact(v[3])) -
+                              (exact(v[4]) - exact(v[5])) * (exact(v[6]) - exact(v[7]));
+        ASSERT_EQ(det_sign(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]), bignum::sign(want)) << i;
+        const Rational dx = exact(v[0]) - exact(v[1]), dy = exact(v[2]) - exact(v[3]), r = exact(v[4]) + exact(v[5]);
+        ASSERT_EQ(circle_sign(v[0], v[1], v[2], v[3], v[4], v[5]), bignum::sign(Rational(dx * dx + dy * dy - r * r))) << i;
     }
     // Exact cancellations: 3-4-5 on the circle at both ends of the exponent range.
     for (int e : {-1074, -1000, 0, 500, 1020}) {
@@ -104,17 +103,17 @@ TEST(ExactArith, SignsAtTheLimitsMatchRationals) {
 TEST(ExactArith, RoundingMatchesRationals) {
     std::mt19937_64 rng(5);
     const auto big = [&](int bits_) {
-        mpz_class z = 0;
-        for (int b = 0; b < bits_; b += 64) z = (z << 64) + mpz_class(std::to_string(rng()));
-        return mpz_class(z >> static_cast<mp_bitcnt_t>((bits_ + 63) / 64 * 64 - bits_));
+        Integer z = 0;
+        for (int b = 0; b < bits_; b += 64) z = (z << 64) + Integer(std::to_string(rng()));
+        return Integer(z >> static_cast<unsigned>((bits_ + 63) / 64 * 64 - bits_));
     };
     for (int i = 0; i < 200000; ++i) {
-        mpz_class n = big(1 + static_cast<int>(rng() % 300)), d = big(1 + static_cast<int>(rng() % 200));
+        Integer n = big(1 + static_cast<int>(rng() % 300)), d = big(1 + static_cast<int>(rng() % 200));
         if (d == 0) d = 1;
         if (rng() & 1) n = -n;
         // Exact ties and exact doubles: a 54-bit or 53-bit odd numerator over a power of two.
         if (i % 4 == 0) {
-            n = (mpz_class(1) << 53) + (static_cast<unsigned long>(rng() % 4));
+            n = (Integer(1) << 53) + Integer(static_cast<unsigned long>(rng() % 4));
             d = 1;
         }
         const long k = static_cast<long>(rng() % 2400) - 1300;
@@ -124,8 +123,8 @@ TEST(ExactArith, RoundingMatchesRationals) {
     // The conventions: −tiny rounds to +0; past DBL_MAX gives DBL_MAX below 2^1024, infinity from it on.
     EXPECT_EQ(bits(round_of(-1, 1, -1076)), bits(0.0));
     EXPECT_EQ(bits(round_of(-3, 1, -1076)), bits(-0x1p-1074));
-    EXPECT_EQ(round_of(mpz_class(1) << 53, 1, 1023 - 53 + 1) , INFINITY);
-    EXPECT_EQ(round_of((mpz_class(1) << 54) - 1, 1, 1023 - 53), DBL_MAX);
+    EXPECT_EQ(round_of(Integer(1) << 53, 1, 1023 - 53 + 1) , INFINITY);
+    EXPECT_EQ(round_of((Integer(1) << 54) - 1, 1, 1023 - 53), DBL_MAX);
     EXPECT_EQ(round_of(-1, 3, 0), -1.0 / 3.0);
 }
 

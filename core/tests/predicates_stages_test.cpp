@@ -1,4 +1,4 @@
-// The stages of the predicates' exact path (staged_sign.hpp) against GMP: each stage and each early exit reached on
+// The stages of the predicates' exact path (staged_sign.hpp) against big rationals (exact/bignum.hpp): each stage and each early exit reached on
 // inputs worked by hand, each stage's answer checked on its own (whenever it answers, it is right) over fixed-seed
 // random inputs of every kind (boundary points from Pythagorean triples scaled by powers of two and moved by an
 // ulp, magnitudes at the edges of the expansions' range, subnormals, cancellation in every term), and the
@@ -9,8 +9,7 @@
 #include <initializer_list>
 #include <random>
 
-#include <gmpxx.h>
-
+#include "exact/bignum.hpp"
 #include "ricochet/predicates.hpp"
 #include "staged_sign.hpp"
 
@@ -22,9 +21,11 @@ using exact::staged::Split;
 using exact::staged::two_diff;
 using exact::staged::two_sum;
 
-int sign(const mpq_class& v) { return sgn(v); }
-mpq_class q(double x) { return mpq_class(x); }
-mpq_class q(Split s) { return q(s.head) + q(s.tail); }
+using bignum::Rational;
+
+int sign(const Rational& v) { return bignum::sign(v); }
+Rational q(double x) { return bignum::rational(x); }
+Rational q(Split s) { return q(s.head) + q(s.tail); }
 
 /// sign((A + a)(B + b) − (C + c)(D + d)) in rationals.
 int det_gmp(Split p, Split r, Split u, Split v) { return sign(q(p) * q(r) - q(u) * q(v)); }
@@ -342,16 +343,16 @@ TEST(PredicateStages, CirclesAgreeWithGmpNearTheirBoundary) {
             p = {c.c.x + (g.coin() ? a : -b) * s, c.c.y + (g.coin() ? b : -a) * s};
         }
         if (g.coin()) p = {ulps(p.x, g.integer(-2, 2)), ulps(p.y, g.integer(-2, 2))};
-        const mpq_class dx = q(p.x) - q(c.c.x), dy = q(p.y) - q(c.c.y);
+        const Rational dx = q(p.x) - q(c.c.x), dy = q(p.y) - q(c.c.y);
         ASSERT_EQ(exact::point_circle(p, c), sign(dx * dx + dy * dy - q(c.r) * q(c.r))) << i;
         // A second circle touching c at p: centre p + rb·(p − c)/|p − c| rounded, radius rb.
         const double rb = c.r * g.uniform(0, 2);
-        const double len = std::sqrt(static_cast<double>(dx.get_d() * dx.get_d() + dy.get_d() * dy.get_d()));
+        const double len = std::sqrt(static_cast<double>(bignum::to_double(dx) * bignum::to_double(dx) + bignum::to_double(dy) * bignum::to_double(dy)));
         if (!(len > 0)) continue;
-        const Circle b{{ulps(p.x + rb * dx.get_d() / len, g.integer(-1, 1)),
-                        ulps(p.y + rb * dy.get_d() / len, g.integer(-1, 1))},
+        const Circle b{{ulps(p.x + rb * bignum::to_double(dx) / len, g.integer(-1, 1)),
+                        ulps(p.y + rb * bignum::to_double(dy) / len, g.integer(-1, 1))},
                        rb};
-        const mpq_class ex = q(c.c.x) - q(b.c.x), ey = q(c.c.y) - q(b.c.y), rs = q(c.r) + q(b.r);
+        const Rational ex = q(c.c.x) - q(b.c.x), ey = q(c.c.y) - q(b.c.y), rs = q(c.r) + q(b.r);
         ASSERT_EQ(exact::circle_circle(c, b), sign(ex * ex + ey * ey - rs * rs)) << i;
     }
     const auto after = exact::fallback_counts();

@@ -1,19 +1,21 @@
-// The exact predicates against GMP rationals, on random and on near-degenerate inputs, so that the
-// filter and both fallbacks (expansions, GMP) are all exercised and all agree.
+// The exact predicates against big rationals (exact/bignum.hpp: GMP, or Boost.Multiprecision in the Boost variant),
+// on random and on near-degenerate inputs, so that the filter and both fallbacks (expansions, the big rationals
+// counted as FallbackCounts::gmp) are all exercised and all agree.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include <gmpxx.h>
-
+#include "exact/bignum.hpp"
 #include "ricochet/predicates.hpp"
 
 namespace ricochet {
 namespace {
 
-int sign(const mpq_class& v) { return sgn(v); }
-mpq_class q(double x) { return mpq_class(x); }
+using bignum::Rational;
+
+int sign(const Rational& v) { return bignum::sign(v); }
+Rational q(double x) { return bignum::rational(x); }
 
 int orient_gmp(Vec2 a, Vec2 b, Vec2 c) {
     return sign((q(b.x) - q(a.x)) * (q(c.y) - q(a.y)) - (q(b.y) - q(a.y)) * (q(c.x) - q(a.x)));
@@ -92,11 +94,11 @@ TEST(Predicates, CirclesMatchGmp) {
         const double ang = g.uniform(0, 6.283185307179586);
         Vec2 p{c.x + r * std::cos(ang), c.y + r * std::sin(ang)};
         p = {g.ulps(p.x, static_cast<int>(g.rng() % 3) - 1), p.y};
-        const mpq_class dx = q(p.x) - q(c.x), dy = q(p.y) - q(c.y);
+        const Rational dx = q(p.x) - q(c.x), dy = q(p.y) - q(c.y);
         ASSERT_EQ(exact::point_circle(p, {c, r}), sign(dx * dx + dy * dy - q(r) * q(r))) << i;
         const double r2 = s * g.uniform(0, 1);
         const Circle b{{p.x + (i % 2 ? r2 : 0.0), p.y}, r2};
-        const mpq_class ex = q(c.x) - q(b.c.x), ey = q(c.y) - q(b.c.y), rs = q(r) + q(r2);
+        const Rational ex = q(c.x) - q(b.c.x), ey = q(c.y) - q(b.c.y), rs = q(r) + q(r2);
         ASSERT_EQ(exact::circle_circle({c, r}, b), sign(ex * ex + ey * ey - rs * rs)) << i;
     }
     // Inexact differences on the expansion path: 0.1 − (−0.2) and 0.1 + 0.2 both round, to the same double,
@@ -104,7 +106,7 @@ TEST(Predicates, CirclesMatchGmp) {
     // or overlapping (the sum of the radii is inexact too). GMP agrees on all three.
     for (int k = -1; k <= 1; ++k) {
         const Circle a{{0.1, 0}, 0.1}, b{{g.ulps(-0.2, -k), 0}, 0.2};
-        const mpq_class ex = q(a.c.x) - q(b.c.x), rs = q(a.r) + q(b.r);
+        const Rational ex = q(a.c.x) - q(b.c.x), rs = q(a.r) + q(b.r);
         ASSERT_EQ(exact::circle_circle(a, b), sign(ex * ex - rs * rs)) << k;
         ASSERT_EQ(exact::circle_circle(a, b), k) << k;
         // Along y: the x difference is exact, the y one is not.
@@ -112,7 +114,7 @@ TEST(Predicates, CirclesMatchGmp) {
         // The same for a point on the circle of radius 0.3 around (−0.2, 0): 0.1 − (−0.2) rounds.
         const Vec2 pnt{0.1, 0};
         const Circle c{{g.ulps(-0.2, -k), 0}, 0.1 + 0.2};
-        const mpq_class px = q(pnt.x) - q(c.c.x);
+        const Rational px = q(pnt.x) - q(c.c.x);
         ASSERT_EQ(exact::point_circle(pnt, c), sign(px * px - q(c.r) * q(c.r))) << k;
     }
     // Exact touching: a 3-4-5 triangle scaled by a power of two.
@@ -130,13 +132,13 @@ TEST(Predicates, CompareCrossingsMatchesGmp) {
         const Vec2 x{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
         const Wall w1{{x.x, x.y - 1}, {g.ulps(x.x, static_cast<int>(g.rng() % 3) - 1), x.y + 1}};
         const Wall w2{{x.x - 1, x.y + 2}, {x.x + (i % 3 == 0 ? 1.0 : 1.5), x.y - 2}};
-        auto det = [](const Wall& w, Vec2 p) -> mpq_class {
+        auto det = [](const Wall& w, Vec2 p) -> Rational {
             return (q(w.p0.x) - q(p.x)) * (q(w.p1.y) - q(p.y)) - (q(w.p0.y) - q(p.y)) * (q(w.p1.x) - q(p.x));
         };
-        const mpq_class a1 = det(w1, a), b1 = det(w1, b), a2 = det(w2, a), b2 = det(w2, b);
+        const Rational a1 = det(w1, a), b1 = det(w1, b), a2 = det(w2, a), b2 = det(w2, b);
         // Only legs that meet both lines from one side: a_k ≠ 0 and b_k of the other sign or 0.
         if (sign(a1) == 0 || sign(a2) == 0 || sign(a1) * sign(b1) > 0 || sign(a2) * sign(b2) > 0) continue;
-        const mpq_class s1 = a1 / (a1 - b1), s2 = a2 / (a2 - b2);
+        const Rational s1 = a1 / (a1 - b1), s2 = a2 / (a2 - b2);
         ++decided;
         ASSERT_EQ(exact::compare_crossings(a, b, w1, w2), sign(s1 - s2)) << i;
     }

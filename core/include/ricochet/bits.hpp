@@ -2,8 +2,8 @@
 // scene-log round trip do not, so whoever compares "the same bits" uses these.
 #pragma once
 
-#include <bit>
 #include <cstdint>
+#include <cstring>
 
 #include "ricochet/event.hpp"
 #include "ricochet/shapes.hpp"
@@ -12,8 +12,15 @@ namespace ricochet {
 
 struct Scene;
 
+/// The IEEE-754 bit pattern of x: std::bit_cast<std::uint64_t>(x), which wasm32's libc++ (13, emscripten 3.1.6)
+/// does not have; a memcpy of 8 bytes compiles to the same one move.
+inline std::uint64_t bits_of(double x) {
+    std::uint64_t u = 0;
+    std::memcpy(&u, &x, sizeof u);
+    return u;
+}
 /// True if a and b have the same IEEE-754 bit pattern.
-inline bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+inline bool same_bits(double a, double b) { return bits_of(a) == bits_of(b); }
 /// Both components the same bits.
 inline bool same_bits(Vec2 a, Vec2 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y); }
 /// Position, velocity and radius the same bits.

@@ -3,12 +3,12 @@
 #include <xxhash.h>
 
 #include <array>
-#include <bit>
 #include <memory>
 
 #include <fmt/format.h>
 
 #include "frame_check.hpp"
+#include "ricochet/bits.hpp"
 #include "ricochet/hash.hpp"
 
 namespace ricochet::checks {
@@ -28,10 +28,10 @@ public:
                 std::uint64_t{e.ball} << 32,
             static_cast<std::uint64_t>(e.frame),
             std::uint64_t{e.index},
-            std::bit_cast<std::uint64_t>(e.pos.x),
-            std::bit_cast<std::uint64_t>(e.pos.y),
-            std::bit_cast<std::uint64_t>(e.vel.x),
-            std::bit_cast<std::uint64_t>(e.vel.y),
+            bits_of(e.pos.x),
+            bits_of(e.pos.y),
+            bits_of(e.vel.x),
+            bits_of(e.vel.y),
         };
         std::array<unsigned char, 56> bytes{};
         for (std::size_t w = 0; w < words.size(); ++w)

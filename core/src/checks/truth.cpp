@@ -1,17 +1,20 @@
 // Ground truth for the checks (truth.hpp).
 #include "ricochet/truth.hpp"
 
-#include <gmpxx.h>
-
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "exact/bignum.hpp"
+
 namespace ricochet::truth {
 namespace {
 
-int sgn_q(const mpq_class& q) { return sgn(q); }
-mpq_class Q(double x) { return mpq_class(x); }  // exact: every finite double is a rational
+using bignum::Rational;
+
+int sgn(const Rational& q) { return bignum::sign(q); }
+int sgn_q(const Rational& q) { return sgn(q); }
+Rational Q(double x) { return bignum::rational(x); }  // exact: every finite double is a rational
 
 }  // namespace
 
@@ -54,17 +57,17 @@ int locate(Vec2 p, std::span<const Wall> walls) {
 }
 
 int circle_side(Vec2 p, const Circle& c) {
-    const mpq_class dx = Q(p.x) - Q(c.c.x), dy = Q(p.y) - Q(c.c.y), r = Q(c.r);
+    const Rational dx = Q(p.x) - Q(c.c.x), dy = Q(p.y) - Q(c.c.y), r = Q(c.r);
     return sgn_q(dx * dx + dy * dy - r * r);
 }
 
 bool point_in_circle(Vec2 p, const Circle& c) {
-    const mpq_class dx = Q(p.x) - Q(c.c.x), dy = Q(p.y) - Q(c.c.y), r = Q(c.r);
+    const Rational dx = Q(p.x) - Q(c.c.x), dy = Q(p.y) - Q(c.c.y), r = Q(c.r);
     return dx * dx + dy * dy <= r * r;
 }
 
 bool circles_overlap(const Circle& a, const Circle& b) {
-    const mpq_class dx = Q(a.c.x) - Q(b.c.x), dy = Q(a.c.y) - Q(b.c.y), r = Q(a.r) + Q(b.r);
+    const Rational dx = Q(a.c.x) - Q(b.c.x), dy = Q(a.c.y) - Q(b.c.y), r = Q(a.r) + Q(b.r);
     return dx * dx + dy * dy <= r * r;
 }
 
@@ -84,23 +87,22 @@ bool speed_within(Vec2 v, Vec2 w, int m, double b, double a) {
     for (double x : {v.x, v.y, w.x, w.y, b, a})
         if (!std::isfinite(x)) return false;
     // | |w| − |v| | ≤ C·|v| + A with C = (1 + b)^m − 1 and A = m·a, i.e. (1 − C)|v| − A ≤ |w| ≤ (1 + C)|v| + A.
-    const mpq_class vv = Q(v.x) * Q(v.x) + Q(v.y) * Q(v.y);
-    const mpq_class ww = Q(w.x) * Q(w.x) + Q(w.y) * Q(w.y);
-    mpq_class grow = 1;
+    const Rational vv = Q(v.x) * Q(v.x) + Q(v.y) * Q(v.y);
+    const Rational ww = Q(w.x) * Q(w.x) + Q(w.y) * Q(w.y);
+    Rational grow = 1;
     for (int i = 0; i < m; ++i) grow *= 1 + Q(b);
-    const mpq_class c = grow - 1, abs_part = Q(a) * m;
-    const mpq_class hi = 1 + c, lo = 1 - c;
+    const Rational c = grow - 1, abs_part = Q(a) * m;
+    const Rational hi = 1 + c, lo = 1 - c;
     // No absolute part: both sides squared, exactly, with no square root at all.
     if (sgn(abs_part) == 0) {
         if (ww > hi * hi * vv) return false;
         return sgn(lo) <= 0 || ww >= lo * lo * vv;
     }
     // |v| bracketed by a 256-bit square root widened by 2^−200 relative, far below any b used.
-    mpf_class root(vv, 256);
-    root = sqrt(root);
-    const mpq_class slack = mpq_class(1, 1) / (mpq_class(1) << 200);
-    const mpq_class vhi = mpq_class(root) * (1 + slack), vlo = mpq_class(root) * (1 - slack);
-    const mpq_class upper = hi * vhi + abs_part, lower = lo * vlo - abs_part;
+    const Rational root = bignum::sqrt_below(vv, 256);
+    const Rational slack = bignum::pow2(-200);
+    const Rational vhi = root * (1 + slack), vlo = root * (1 - slack);
+    const Rational upper = hi * vhi + abs_part, lower = lo * vlo - abs_part;
     if (ww > upper * upper) return false;
     return sgn(lower) <= 0 || ww >= lower * lower;
 }
@@ -160,40 +162,40 @@ namespace {
 /// |d|∞ and ε·M.
 struct ExactCrossing {
     bool conditioned = false;
-    mpq_class s, dx, dy, d_inf, unit;
+    Rational s, dx, dy, d_inf, unit;
 };
 
 ExactCrossing exact_crossing(Vec2 a, Vec2 b, const Wall& w) {
     ExactCrossing c;
-    const mpq_class ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
+    const Rational ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
     c.dx = Q(b.x) - Q(a.x);
     c.dy = Q(b.y) - Q(a.y);
-    const auto qabs = [](const mpq_class& q) { return mpq_class(abs(q)); };
-    const mpq_class e_inf = std::max(qabs(ex), qabs(ey));
+    const auto qabs = [](const Rational& q) { return Rational(abs(q)); };
+    const Rational e_inf = std::max(qabs(ex), qabs(ey));
     c.d_inf = std::max(qabs(c.dx), qabs(c.dy));
-    const mpq_class tiny = mpq_class(1) / (mpq_class(1) << 400);
+    const Rational tiny = bignum::pow2(-400);
     // e × d; the crossing is well-conditioned when its sine (in ∞-norms) is at least 1/4.
-    const mpq_class cross = ex * c.dy - ey * c.dx;
+    const Rational cross = ex * c.dy - ey * c.dx;
     c.conditioned = e_inf >= tiny && c.d_inf >= tiny && 4 * qabs(cross) >= e_inf * c.d_inf;
     if (!c.conditioned) return c;
     // BC(x) = n·(x − P0) with the outward normal n = (e_y, −e_x); s = BC(a) / (BC(a) − BC(b)).
-    const auto bc = [&](Vec2 x) -> mpq_class { return ey * (Q(x.x) - Q(w.p0.x)) - ex * (Q(x.y) - Q(w.p0.y)); };
-    const mpq_class bc_a = bc(a), bc_b = bc(b);
+    const auto bc = [&](Vec2 x) -> Rational { return ey * (Q(x.x) - Q(w.p0.x)) - ex * (Q(x.y) - Q(w.p0.y)); };
+    const Rational bc_a = bc(a), bc_b = bc(b);
     c.s = bc_a / (bc_a - bc_b);  // bc_a − bc_b = e × d ≠ 0 here
     const double m = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y), std::fabs(w.p0.x),
                                std::fabs(w.p0.y), std::fabs(w.p1.x), std::fabs(w.p1.y)});
     // ε·M exactly (a power of two times a double).
-    c.unit = Q(m) / (mpq_class(1) << 53);
+    c.unit = Q(m) * bignum::pow2(-53);
     return c;
 }
 
 /// err ≤ ulps·unit, and err in units of unit (for messages).
-HitAccuracy judge(const mpq_class& err, const mpq_class& unit, double ulps) {
+HitAccuracy judge(const Rational& err, const Rational& unit, double ulps) {
     HitAccuracy r;
     r.conditioned = true;
     r.within = err <= Q(ulps) * unit;
     // unit > 0: judge is called only for a conditioned crossing, whose wall has |e|∞ ≥ 2^-400, so M ≥ 2^-401.
-    r.error = mpq_class(err / unit).get_d();
+    r.error = bignum::to_double(Rational(err / unit));
     return r;
 }
 
@@ -203,66 +205,66 @@ HitAccuracy hit_accuracy(Vec2 a, Vec2 b, const Wall& w, Vec2 p, double ulps, con
     const ExactCrossing c = exact_crossing(a, b, w);
     if (!c.conditioned) return {};
     // B_i exactly: X = a + s·d.
-    const mpq_class xx = Q(a.x) + c.s * c.dx, xy = Q(a.y) + c.s * c.dy;
+    const Rational xx = Q(a.x) + c.s * c.dx, xy = Q(a.y) + c.s * c.dy;
     if (kept != nullptr && kept_from != 0) {
         // side(X) of the kept wall's line, exactly: sign of n·(X − P0) with n = (e_y, −e_x).
-        const mpq_class kx = Q(kept->p1.x) - Q(kept->p0.x), ky = Q(kept->p1.y) - Q(kept->p0.y);
-        const int side = sgn(mpq_class(ky * (xx - Q(kept->p0.x)) - kx * (xy - Q(kept->p0.y))));
+        const Rational kx = Q(kept->p1.x) - Q(kept->p0.x), ky = Q(kept->p1.y) - Q(kept->p0.y);
+        const int side = sgn(Rational(ky * (xx - Q(kept->p0.x)) - kx * (xy - Q(kept->p0.y))));
         if (side != kept_from) return {};
     }
-    return judge(std::max(mpq_class(abs(Q(p.x) - xx)), mpq_class(abs(Q(p.y) - xy))), c.unit, ulps);
+    return judge(std::max(Rational(abs(Q(p.x) - xx)), Rational(abs(Q(p.y) - xy))), c.unit, ulps);
 }
 
 HitAccuracy hit_time_accuracy(Vec2 a, Vec2 b, const Wall& w, double t, double ulps) {
     const ExactCrossing c = exact_crossing(a, b, w);
     if (!c.conditioned) return {};
     // |t_i − s|·|d|∞: how far along the leg the error in t_i moves the point.
-    return judge(mpq_class(abs(Q(t) - c.s) * c.d_inf), c.unit, ulps);
+    return judge(Rational(abs(Q(t) - c.s) * c.d_inf), c.unit, ulps);
 }
 
 HitAccuracy bounce_accuracy(Vec2 v, const Wall& w, Vec2 v_out, double rel, double abs_bound) {
     HitAccuracy r;
-    const mpq_class ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
+    const Rational ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
     // n = (e_y, −e_x), the outward normal, and v·n.
-    const mpq_class nx = ey, ny = -ex;
-    const mpq_class vn = Q(v.x) * nx + Q(v.y) * ny, nn = nx * nx + ny * ny;
-    const auto qabs = [](const mpq_class& q) { return mpq_class(abs(q)); };
-    const mpq_class n_inf = std::max(qabs(nx), qabs(ny)), v_inf = std::max(qabs(Q(v.x)), qabs(Q(v.y)));
+    const Rational nx = ey, ny = -ex;
+    const Rational vn = Q(v.x) * nx + Q(v.y) * ny, nn = nx * nx + ny * ny;
+    const auto qabs = [](const Rational& q) { return Rational(abs(q)); };
+    const Rational n_inf = std::max(qabs(nx), qabs(ny)), v_inf = std::max(qabs(Q(v.x)), qabs(Q(v.y)));
     r.conditioned = sgn(nn) != 0 && 4 * qabs(vn) >= v_inf * n_inf;
     if (!r.conditioned) return r;
     // R = v − 2(v·n)/(n·n)·n, exactly.
-    const mpq_class k = 2 * vn / nn;
-    const mpq_class rx = Q(v.x) - k * nx, ry = Q(v.y) - k * ny;
-    const mpq_class err = std::max(qabs(Q(v_out.x) - rx), qabs(Q(v_out.y) - ry));
+    const Rational k = 2 * vn / nn;
+    const Rational rx = Q(v.x) - k * nx, ry = Q(v.y) - k * ny;
+    const Rational err = std::max(qabs(Q(v_out.x) - rx), qabs(Q(v_out.y) - ry));
     // err ≤ 2·rel·|v| + 2·abs  ⇔  err − 2·abs ≤ 0, or (err − 2·abs)² ≤ 4·rel²·(v·v): no square root needed.
-    const mpq_class over = err - 2 * Q(abs_bound);
-    const mpq_class vv = Q(v.x) * Q(v.x) + Q(v.y) * Q(v.y);
+    const Rational over = err - 2 * Q(abs_bound);
+    const Rational vv = Q(v.x) * Q(v.x) + Q(v.y) * Q(v.y);
     r.within = sgn(over) <= 0 || over * over <= 4 * Q(rel) * Q(rel) * vv;
-    r.error = sgn(vv) == 0 ? 0.0 : err.get_d() / std::sqrt(vv.get_d());
+    r.error = sgn(vv) == 0 ? 0.0 : bignum::to_double(err) / std::sqrt(bignum::to_double(vv));
     return r;
 }
 
 HitAccuracy corner_accuracy(Vec2 v, const Wall& hit, int hit_from, std::span<const Wall> others,
                             std::span<const int> others_from, Vec2 v_out, double rel, double abs_bound) {
-    const auto qabs = [](const mpq_class& q) { return mpq_class(abs(q)); };
+    const auto qabs = [](const Rational& q) { return Rational(abs(q)); };
     struct Normal {
-        mpq_class x, y, nn, inf;  // n = (e_y, −e_x), n·n, |n|∞
+        Rational x, y, nn, inf;  // n = (e_y, −e_x), n·n, |n|∞
     };
     const auto normal = [&](const Wall& w) {
-        const mpq_class ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
+        const Rational ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
         return Normal{ey, -ex, ey * ey + ex * ex, std::max(qabs(ey), qabs(ex))};
     };
     HitAccuracy r;
-    mpq_class wx = Q(v.x), wy = Q(v.y);
+    Rational wx = Q(v.x), wy = Q(v.y);
     // n·w, and whether its sign is clear: |n·w| ≥ |w|∞·|n|∞ / 4.
     const auto side_of = [&](const Normal& n, int& s) {
-        const mpq_class d = n.x * wx + n.y * wy;
+        const Rational d = n.x * wx + n.y * wy;
         s = sgn(d);
         return 4 * qabs(d) >= std::max(qabs(wx), qabs(wy)) * n.inf;
     };
     // w − 2(w·n)/(n·n)·n, exactly.
     const auto reflect_about = [&](const Normal& n) {
-        const mpq_class k = 2 * (n.x * wx + n.y * wy) / n.nn;
+        const Rational k = 2 * (n.x * wx + n.y * wy) / n.nn;
         wx -= k * n.x;
         wy -= k * n.y;
     };
@@ -292,39 +294,39 @@ HitAccuracy corner_accuracy(Vec2 v, const Wall& hit, int hit_from, std::span<con
     if (!side_of(nh, s)) return r;
     back = back || s != hit_from;
     r.conditioned = true;
-    const mpq_class vv = Q(v.x) * Q(v.x) + Q(v.y) * Q(v.y);
+    const Rational vv = Q(v.x) * Q(v.x) + Q(v.y) * Q(v.y);
     if (back) {
         r.within = v_out == -v;
         r.error = r.within ? 0.0 : 2.0;
         return r;
     }
-    const mpq_class err = std::max(qabs(Q(v_out.x) - wx), qabs(Q(v_out.y) - wy));
+    const Rational err = std::max(qabs(Q(v_out.x) - wx), qabs(Q(v_out.y) - wy));
     // err ≤ 3m·(2·rel·|v| + abs)  ⇔  over = err − 3m·abs ≤ 0, or over² ≤ 36m²·rel²·(v·v).
-    const mpq_class over = err - 3 * m * Q(abs_bound);
+    const Rational over = err - 3 * m * Q(abs_bound);
     r.within = sgn(over) <= 0 || over * over <= 36 * m * m * Q(rel) * Q(rel) * vv;
     // vv ≠ 0 here: for v = 0 every side is 0, which is not hit_from (±1), so the rule went straight back above.
-    r.error = sgn(vv) == 0 ? 0.0 : err.get_d() / std::sqrt(vv.get_d());
+    r.error = sgn(vv) == 0 ? 0.0 : bignum::to_double(err) / std::sqrt(bignum::to_double(vv));
     return r;
 }
 
 HitAccuracy leg_end_accuracy(Vec2 from, Vec2 v, std::span<const double> ts, Vec2 to) {
-    const auto qabs = [](const mpq_class& q) { return mpq_class(abs(q)); };
+    const auto qabs = [](const Rational& q) { return Rational(abs(q)); };
     // R = Π(1 − t_k): the fraction of the frame left after the hits.
-    mpq_class rest = 1;
+    Rational rest = 1;
     for (double t : ts) rest *= 1 - Q(t);
     // The exact end from + R·v, and its distance to the printed one.
-    const mpq_class px = rest * Q(v.x), py = rest * Q(v.y);
-    const mpq_class err = std::max(qabs(Q(to.x) - (Q(from.x) + px)), qabs(Q(to.y) - (Q(from.y) + py)));
-    const mpq_class m = std::max({qabs(Q(from.x)), qabs(Q(from.y)), qabs(Q(to.x)), qabs(Q(to.y)), qabs(px), qabs(py)});
+    const Rational px = rest * Q(v.x), py = rest * Q(v.y);
+    const Rational err = std::max(qabs(Q(to.x) - (Q(from.x) + px)), qabs(Q(to.y) - (Q(from.y) + py)));
+    const Rational m = std::max({qabs(Q(from.x)), qabs(Q(from.y)), qabs(Q(to.x)), qabs(Q(to.y)), qabs(px), qabs(py)});
     // Each rounding of a product or a sum errs by at most ε relative to its result, or 2^−1075 when it
     // underflows: 2k roundings for R (relative, so ≤ (2k)ε·|R·v| + …), one for R·v, one for the sum (≤ ε·|to|).
     // (2k + 2)ε·M with the second-order terms, which stay below ε·M while k < 2^50, makes (2k + 3)ε·M.
-    const mpq_class unit = m / (mpq_class(1) << 53);
+    const Rational unit = m * bignum::pow2(-53);
     const auto k = static_cast<long>(ts.size());
     HitAccuracy r;
     r.conditioned = true;
-    r.within = err <= (2 * k + 3) * unit + mpq_class(1) / (mpq_class(1) << 1072);
-    r.error = sgn(unit) == 0 ? 0.0 : mpq_class(err / unit).get_d();
+    r.within = err <= (2 * k + 3) * unit + bignum::pow2(-1072);
+    r.error = sgn(unit) == 0 ? 0.0 : bignum::to_double(Rational(err / unit));
     return r;
 }
 
@@ -381,15 +383,15 @@ Miss leg_miss(Vec2 bs, Vec2 be, const Wall& w) {
 
 long first_hit(Vec2 bs, Vec2 be, std::span<const Wall> walls) {
     long best = -1;
-    mpq_class best_s;
+    Rational best_s;
     for (std::size_t i = 0; i < walls.size(); ++i) {
         const Wall& w = walls[i];
         if (leg_miss(bs, be, w) != Miss::none) continue;
         // n·(Bs + s(Be − Bs) − P0) = 0  ⇒  s = BC(Bs)/(BC(Bs) − BC(Be)), BC up to the factor 1/|n|.
-        const mpq_class ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
-        const auto bc = [&](Vec2 p) -> mpq_class { return ey * (Q(p.x) - Q(w.p0.x)) - ex * (Q(p.y) - Q(w.p0.y)); };
-        const mpq_class a = bc(bs), b = bc(be);
-        const mpq_class s = a / (a - b);
+        const Rational ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
+        const auto bc = [&](Vec2 p) -> Rational { return ey * (Q(p.x) - Q(w.p0.x)) - ex * (Q(p.y) - Q(w.p0.y)); };
+        const Rational a = bc(bs), b = bc(be);
+        const Rational s = a / (a - b);
         if (best < 0 || s < best_s) {
             best = long(i);
             best_s = s;

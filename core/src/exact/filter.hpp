@@ -1,7 +1,7 @@
 // Signs of the exact kernel's polynomials in doubles: a floating-point filter decides when the rounded
 // value is farther from zero than its error bound (derived below); otherwise the doubles are scaled to
 // integers (scaled.hpp) and the polynomial is evaluated exactly, in 128-bit integers when the scaled inputs are
-// below 2^60, else in GMP integers (no rationals, no gcd). Valid for every finite double.
+// below 2^60, else in big integers (bignum.hpp; no rationals, no gcd). Valid for every finite double.
 #pragma once
 
 #include <cmath>
@@ -12,7 +12,7 @@ namespace ricochet::exact_kernel::num {
 
 #if defined(__SIZEOF_INT128__)
 /// 128-bit integers (a GCC/Clang extension) for the integer path. 32-bit targets (i386) have none:
-/// there every sign the filter declines goes to GMP, which gives the same exact sign, only slower.
+/// there every sign the filter declines goes to big integers, which gives the same exact sign, only slower.
 #define RICOCHET_EXACT_HAVE_I128 1
 __extension__ typedef __int128 I128;
 #endif
@@ -55,11 +55,11 @@ inline int det_sign(double a1, double a0, double b1, double b0, double c1, doubl
         return sign_of(lp - rp);
     }
 #endif
-    mpz_class z[8];
+    bignum::Integer z[8];
     const double xs[8] = {a1, a0, b1, b0, c1, c0, d1, d0};
     for (int j = 0; j < 8; ++j) scaled_big(z[j], xs[j], k);
-    const mpz_class v = (z[0] - z[1]) * (z[2] - z[3]) - (z[4] - z[5]) * (z[6] - z[7]);
-    return sgn(v);
+    const bignum::Integer v = (z[0] - z[1]) * (z[2] - z[3]) - (z[4] - z[5]) * (z[6] - z[7]);
+    return bignum::sign(v);
 }
 
 /// sign((x1 − x0)² + (y1 − y0)² − (r1 + r2)²), exactly.
@@ -79,11 +79,11 @@ inline int circle_sign(double x1, double x0, double y1, double y0, double r1, do
         return sign_of(ex * ex + ey * ey - er * er);
     }
 #endif
-    mpz_class z[6];
+    bignum::Integer z[6];
     const double xs[6] = {x1, x0, y1, y0, r1, r2};
     for (int j = 0; j < 6; ++j) scaled_big(z[j], xs[j], k);
-    const mpz_class ex = z[0] - z[1], ey = z[2] - z[3], er = z[4] + z[5];
-    return sgn(ex * ex + ey * ey - er * er);
+    const bignum::Integer ex = z[0] - z[1], ey = z[2] - z[3], er = z[4] + z[5];
+    return bignum::sign(bignum::Integer(ex * ex + ey * ey - er * er));
 }
 
 }  // namespace ricochet::exact_kernel::num

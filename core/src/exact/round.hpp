@@ -10,44 +10,38 @@
 #include <cmath>
 #include <cstdint>
 
-#include <gmpxx.h>
-
-#include "gmp_int64.hpp"
+#include "exact/bignum.hpp"
 
 namespace ricochet::exact_kernel::num {
 
 /// Scratch integers for round_quotient, reused so that rounding allocates nothing in the steady state.
 struct RoundScratch {
-    mpz_t a, d, q, rem;
-    RoundScratch() { mpz_inits(a, d, q, rem, nullptr); }
-    ~RoundScratch() { mpz_clears(a, d, q, rem, nullptr); }
-    RoundScratch(const RoundScratch&) = delete;
-    RoundScratch& operator=(const RoundScratch&) = delete;
+    bignum::Integer a, d, q, rem;
 };
 
 /// The double nearest to num/den·2^k (den > 0), with the conventions above.
-inline double round_quotient(mpz_srcptr num, mpz_srcptr den, long k) {
-    const int sg = mpz_sgn(num);
+inline double round_quotient(const bignum::Integer& num, const bignum::Integer& den, long k) {
+    const int sg = bignum::sign(num);
     if (sg == 0) return 0.0;
     // Degenerate: a zero denominator has no value; callers never pass one.
-    if (mpz_sgn(den) <= 0) return NAN;
+    if (bignum::sign(den) <= 0) return NAN;
     thread_local RoundScratch s;
-    const long la = static_cast<long>(mpz_sizeinbase(num, 2));
-    const long ld = static_cast<long>(mpz_sizeinbase(den, 2));
+    const long la = bignum::bit_length(num);
+    const long ld = bignum::bit_length(den);
     // 2^(la−1) ≤ |num| < 2^la and 2^(ld−1) ≤ den < 2^ld, so |num|·2^sh/den lies in (2^(la−ld+sh−1), 2^(la−ld+sh+1)):
     // sh = 56 − la + ld gives an integer quotient q with 2^55 ≤ q < 2^57, i.e. at least 3 bits beyond 53.
     const long sh = 56 - la + ld;
-    mpz_abs(s.a, num);
+    bignum::abs(s.a, num);
     if (sh >= 0) {
-        mpz_mul_2exp(s.a, s.a, static_cast<mp_bitcnt_t>(sh));
-        mpz_tdiv_qr(s.q, s.rem, s.a, den);
+        bignum::mul_2exp(s.a, s.a, static_cast<unsigned long>(sh));
+        bignum::tdiv_qr(s.q, s.rem, s.a, den);
     } else {
-        mpz_mul_2exp(s.d, den, static_cast<mp_bitcnt_t>(-sh));
-        mpz_tdiv_qr(s.q, s.rem, s.a, s.d);
+        bignum::mul_2exp(s.d, den, static_cast<unsigned long>(-sh));
+        bignum::tdiv_qr(s.q, s.rem, s.a, s.d);
     }
     // value = (q + rem/d)·2^low with low = k − sh
     const long low = k - sh;
-    const std::uint64_t qi = low_uint64(s.q);
+    const std::uint64_t qi = bignum::low_uint64(s.q);
     const long qbits = std::bit_width(qi);
     const long top = qbits - 1 + low;  // 2^top ≤ value < 2^(top+1)
     if (top >= 1024) return sg > 0 ? INFINITY : -INFINITY;
@@ -59,15 +53,11 @@ inline double round_quotient(mpz_srcptr num, mpz_srcptr den, long k) {
     std::uint64_t m = qi >> drop;
     const std::uint64_t below = qi & ((std::uint64_t{1} << drop) - 1), half = std::uint64_t{1} << (drop - 1);
     // Round to nearest; on an exact tie (no remainder beyond q) to the even mantissa.
-    if (below > half || (below == half && (mpz_sgn(s.rem) != 0 || (m & 1u) != 0))) ++m;
+    if (below > half || (below == half && (bignum::sign(s.rem) != 0 || (m & 1u) != 0))) ++m;
     if (m == 0) return 0.0;
     const double mag = std::ldexp(static_cast<double>(m), static_cast<int>(ulp));
     if (std::isinf(mag)) return sg > 0 ? DBL_MAX : -DBL_MAX;
     return sg > 0 ? mag : -mag;
-}
-/// The same for GMP's C++ integers.
-inline double round_quotient(const mpz_class& num, const mpz_class& den, long k) {
-    return round_quotient(num.get_mpz_t(), den.get_mpz_t(), k);
 }
 
 }  // namespace ricochet::exact_kernel::num

@@ -12,9 +12,7 @@
 #include <cstdint>
 #include <initializer_list>
 
-#include <gmpxx.h>
-
-#include "gmp_int64.hpp"
+#include "exact/bignum.hpp"
 
 namespace ricochet::exact_kernel::num {
 
@@ -65,11 +63,11 @@ inline std::int64_t scaled_small(double x, int k) {
     return d.m == 0 ? 0 : d.m * (std::int64_t{1} << (d.e - k));
 }
 
-/// x/2^k as a GMP integer (x/2^k must be an integer: k ≤ the exponent of x).
-inline void scaled_big(mpz_class& out, double x, int k) {
+/// x/2^k as a big integer (x/2^k must be an integer: k ≤ the exponent of x).
+inline void scaled_big(bignum::Integer& out, double x, int k) {
     const Dyad d = split(x);
-    set_int64(out.get_mpz_t(), d.m);
-    if (d.m != 0) mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(d.e - k));
+    bignum::set_int64(out, d.m);
+    if (d.m != 0) bignum::mul_2exp(out, out, static_cast<unsigned long>(d.e - k));
 }
 
 }  // namespace ricochet::exact_kernel::num

@@ -15,6 +15,7 @@
 
 #include "passes.hpp"
 #include "ricochet/bits.hpp"
+#include "ricochet/from_chars.hpp"
 #include "ricochet/limits.hpp"
 
 namespace ricochet::detail::reduce {
@@ -36,7 +37,7 @@ auto simplicity(double x) { return std::tuple(fmt::format("{}", x).size(), std::
 double to_digits(double x, int digits) {
     const std::string text = fmt::format("{:.{}e}", x, digits - 1);
     double v = x;
-    std::from_chars(text.data(), text.data() + text.size(), v);
+    from_chars_double(text.data(), text.data() + text.size(), v);
     return v;
 }
 
