@@ -111,17 +111,17 @@ namespace {
 
 /// |p − X|² for the point X of the closed segment a → b nearest to p: X = a + u·(b − a) with u the projection
 /// (p − a)·e/(e·e) clamped to [0, 1] (u = 0 for a segment of no length), all in rationals.
-mpq_class distance2_to_segment(Vec2 p, Vec2 a, Vec2 b) {
-    const mpq_class ex = Q(b.x) - Q(a.x), ey = Q(b.y) - Q(a.y);
-    const mpq_class px = Q(p.x) - Q(a.x), py = Q(p.y) - Q(a.y);
-    const mpq_class ee = ex * ex + ey * ey;
-    mpq_class u = 0;
+Rational distance2_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+    const Rational ex = Q(b.x) - Q(a.x), ey = Q(b.y) - Q(a.y);
+    const Rational px = Q(p.x) - Q(a.x), py = Q(p.y) - Q(a.y);
+    const Rational ee = ex * ex + ey * ey;
+    Rational u = 0;
     if (sgn(ee) != 0) {
         u = (px * ex + py * ey) / ee;
         if (u < 0) u = 0;
         if (u > 1) u = 1;
     }
-    const mpq_class dx = px - u * ex, dy = py - u * ey;
+    const Rational dx = px - u * ex, dy = py - u * ey;
     return dx * dx + dy * dy;
 }
 
@@ -144,7 +144,7 @@ bool clear_of_wall(Vec2 a, Vec2 b, const Wall& w, double R) {
         orient(w.p0, w.p1, a) * orient(w.p0, w.p1, b) < 0)
         return false;
     // Otherwise the least distance is from an end point of one to the other segment.
-    const mpq_class r2 = Q(R) * Q(R);
+    const Rational r2 = Q(R) * Q(R);
     return distance2_to_segment(a, w.p0, w.p1) >= r2 && distance2_to_segment(b, w.p0, w.p1) >= r2 &&
            distance2_to_segment(w.p0, a, b) >= r2 && distance2_to_segment(w.p1, a, b) >= r2;
 }
@@ -152,7 +152,7 @@ bool clear_of_wall(Vec2 a, Vec2 b, const Wall& w, double R) {
 bool clear_of_circle(Vec2 a, Vec2 b, Vec2 c, double R, double r) {
     // (R + r)·(1 + 2^−52) is above R + r however the sum rounds.
     if (boxes_apart(a, b, c, c, (R + r) * (1.0 + 0x1p-52))) return true;
-    const mpq_class rho = Q(R) + Q(r);
+    const Rational rho = Q(R) + Q(r);
     return distance2_to_segment(c, a, b) >= rho * rho;
 }
 

@@ -14,8 +14,7 @@
 #include <cstdint>
 #include <optional>
 
-#include <gmpxx.h>
-
+#include "exact/bignum.hpp"
 #include "ricochet/vec2.hpp"
 
 namespace ricochet::disc {
@@ -79,7 +78,7 @@ inline Approx approx(double x) { return {x, 0.0}; }
 // Z: exact integers at a common scale.
 
 /// An exact integer; an input double x is x·2^−k for the decision's common k.
-using Z = mpz_class;
+using Z = bignum::Integer;
 
 /// The smallest power of two among the ulps of some doubles: x·2^−k is an integer for each of them.
 class Scale {
@@ -108,30 +107,31 @@ private:
 inline Z exact(double x, int k) {
     if (x == 0.0) return 0;
     int ex = 0;
-    const double m = std::ldexp(std::frexp(x, &ex), 53);  // an integer below 2^53: mpz_set_d is exact
-    Z z(m);
+    const double m = std::ldexp(std::frexp(x, &ex), 53);  // an integer of magnitude below 2^53: exact as int64
+    Z z;
+    bignum::set_int64(z, static_cast<std::int64_t>(m));
     const int shift = ex - 53 - k;
-    mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
+    bignum::mul_2exp(z, z, static_cast<unsigned long>(shift));
     return z;
 }
 
-inline std::optional<int> sign(const Z& a) { return sgn(a); }
+inline std::optional<int> sign(const Z& a) { return bignum::sign(a); }
 /// sign(a + b·√c), c ≥ 0: if a and b·√c have one sign, that sign; else compare a² with b²·c.
 inline int sign2_exact(const Z& a, const Z& b, const Z& c) {
-    const int sa = sgn(a);
-    const int sb = sgn(c) == 0 ? 0 : sgn(b);
+    const int sa = bignum::sign(a);
+    const int sb = bignum::sign(c) == 0 ? 0 : bignum::sign(b);
     if (sb == 0) return sa;
     if (sa == 0 || sa == sb) return sb;
     // a + b√c has a's sign iff a² > b²c
     const Z diff = a * a - b * b * c;
-    return sa * sgn(diff);
+    return sa * bignum::sign(diff);
 }
 inline std::optional<int> sign2(const Z& a, const Z& b, const Z& c) { return sign2_exact(a, b, c); }
 /// sign(a + b·√c + d·√f), c, f ≥ 0: with L = a + b√c and M = d√f, sign(L + M) is theirs if they agree, else
 /// sign(L)·sign(L² − M²), and L² − M² = (a² + b²c − d²f) + 2ab·√c.
 inline std::optional<int> sign3(const Z& a, const Z& b, const Z& c, const Z& d, const Z& f) {
     const int sl = sign2_exact(a, b, c);
-    const int sm = sgn(f) == 0 ? 0 : sgn(d);
+    const int sm = bignum::sign(f) == 0 ? 0 : bignum::sign(d);
     if (sm == 0) return sl;
     if (sl == 0 || sl == sm) return sm;
     const Z p = a * a + b * b * c - d * d * f;

@@ -72,7 +72,12 @@ struct ZFrame {
     P2<Z> point(Vec2 p) const { return {exact(p.x, k) - exact(o.x, k), exact(p.y, k) - exact(o.y, k)}; }
     P2<Z> vector(Vec2 a, Vec2 b) const { return {exact(a.x, k) - exact(b.x, k), exact(a.y, k) - exact(b.y, k)}; }
     Z length(double x) const { return exact(x, k); }
-    static Z constant(double x) { return Z(x); }
+    /// A small integer constant (0, ±1, a side), exact.
+    static Z constant(double x) {
+        Z z;
+        bignum::set_int64(z, static_cast<std::int64_t>(x));
+        return z;
+    }
 };
 
 /// Evaluates decision(frame) on the filter's frame, then, only if it could not tell, on the exact one.
@@ -165,19 +170,19 @@ std::optional<int> compare_roots(const Root<T>& r1, const Root<T>& r2) {
 template <class T>
 std::optional<bool> circle_entered(const P2<T>& d, const P2<T>& p, const T& rho) {
     const T beta = -dot(d, p);
-    const auto sb = sign(beta);
+    const auto sb = disc::sign(beta);
     if (!sb) return std::nullopt;
     if (*sb >= 0) return false;
     const T a = dot(d, d);
     const T rho2 = rho * rho;
-    const auto sdelta = sign(beta * beta - a * (dot(p, p) - rho2));
+    const auto sdelta = disc::sign(beta * beta - a * (dot(p, p) - rho2));
     if (!sdelta) return std::nullopt;
     if (*sdelta <= 0) return false;
     const P2<T> bp = d - p;
-    const auto g1 = sign(dot(bp, bp) - rho2);
+    const auto g1 = disc::sign(dot(bp, bp) - rho2);
     if (!g1) return std::nullopt;
     if (*g1 <= 0) return true;
-    const auto vertex = sign(a + beta);
+    const auto vertex = disc::sign(a + beta);
     if (!vertex) return std::nullopt;
     return *vertex > 0;
 }
@@ -191,13 +196,13 @@ std::optional<Answer> circle_contact(const Setup<F>& s, Part part, bool at_centr
     using T = typename F::T;
     const P2<T>& p = s.centre(part);
     const T& rho = s.radius(part);
-    const auto reach = sign(dot(p, p) - rho * rho);
+    const auto reach = disc::sign(dot(p, p) - rho * rho);
     if (!reach) return std::nullopt;
     if (*reach <= 0) {
         // Degenerate: at the centre there is no normal.
         if (at_centre) return Answer{};
         // Within reach: a hit at t = 0 if moving closer, d·(q − P) < 0; else leaving, no hit this leg.
-        const auto closer = sign(-dot(s.d, p));
+        const auto closer = disc::sign(-dot(s.d, p));
         if (!closer) return std::nullopt;
         if (*closer < 0) return Answer{Contact{part, 0, true}};
         return Answer{};
@@ -216,32 +221,32 @@ std::optional<Answer> wall_contact(const F& f, const Leg& leg, const Wall& w) {
     if (w.p0 == w.p1) return circle_contact(s, Part::cap0, leg.q == w.p0);
     // q's nearest part of the segment: (q − P0)·e ≤ 0 the cap at P0, (q − P1)·e ≥ 0 the cap at P1, else the face.
     Part nearest = Part::face;
-    const auto u0 = sign(-dot(s.p0, s.e));
+    const auto u0 = disc::sign(-dot(s.p0, s.e));
     if (!u0) return std::nullopt;
     if (*u0 <= 0) {
         nearest = Part::cap0;
     } else {
-        const auto u1 = sign(-dot(s.p1, s.e));
+        const auto u1 = disc::sign(-dot(s.p1, s.e));
         if (!u1) return std::nullopt;
         if (*u1 >= 0) nearest = Part::cap1;
     }
-    const auto side = sign(s.nw);
+    const auto side = disc::sign(s.nw);
     if (!side) return std::nullopt;
     const T R2nn = s.R * s.R * s.nn;
     if (nearest != Part::face) {
         // Within reach of that cap: its rules (a centre at the end point has no normal).
-        const auto reach = sign(dot(s.centre(nearest), s.centre(nearest)) - s.R * s.R);
+        const auto reach = disc::sign(dot(s.centre(nearest), s.centre(nearest)) - s.R * s.R);
         if (!reach) return std::nullopt;
         if (*reach <= 0) return circle_contact(s, nearest, leg.q == (nearest == Part::cap0 ? w.p0 : w.p1));
     } else {
         // Within reach of the face: distance² = (n·w)²/(n·n) ≤ R².
-        const auto reach = sign(s.nw * s.nw - R2nn);
+        const auto reach = disc::sign(s.nw * s.nw - R2nn);
         if (!reach) return std::nullopt;
         if (*reach <= 0) {
             // Degenerate: a centre on the segment itself has no normal.
             if (*side == 0) return Answer{};
             // Moving closer: s·(n·d) < 0, a hit at t = 0; else leaving.
-            const auto closer = sign(F::constant(*side) * s.nd);
+            const auto closer = disc::sign(F::constant(*side) * s.nd);
             if (!closer) return std::nullopt;
             if (*closer < 0) return Answer{Contact{Part::face, static_cast<std::int8_t>(*side), true}};
             return Answer{};
@@ -266,11 +271,11 @@ std::optional<Answer> wall_contact(const F& f, const Leg& leg, const Wall& w) {
         const T sd = F::constant(*side);
         // Outside the band's slab (on a cap's side of an end, q may lie inside it): (n·w)² > R²(n·n).
         std::optional<int> outside = 1;
-        if (nearest != Part::face) outside = sign(s.nw * s.nw - R2nn);
+        if (nearest != Part::face) outside = disc::sign(s.nw * s.nw - R2nn);
         if (!outside) return std::nullopt;
         // Approaching the face: s·(n·d) < 0.
         std::optional<int> closer = 1;
-        if (*outside > 0) closer = sign(sd * s.nd);
+        if (*outside > 0) closer = disc::sign(sd * s.nd);
         if (!closer) return std::nullopt;
         if (*outside > 0 && *closer < 0) {
             // Reaching it within the leg: s·n·(b − P0) ≤ R·|n|, n·(b − P0) = n·d + n·w.
@@ -406,7 +411,7 @@ Part nearest_part(Vec2 p, const Wall& w) {
     if (w.p0 == w.p1) return Part::cap0;
     const auto u = [&](Vec2 end) {
         return decide(p, {inf_norm(end - p), inf_norm(w.p1 - w.p0)}, {p, w.p0, w.p1}, {}, [&](const auto& f) {
-            return sign(-dot(f.point(end), f.vector(w.p1, w.p0)));  // (p − P_k)·e
+            return disc::sign(-dot(f.point(end), f.vector(w.p1, w.p0)));  // (p − P_k)·e
         });
     };
     if (u(w.p0) <= 0) return Part::cap0;
@@ -414,12 +419,12 @@ Part nearest_part(Vec2 p, const Wall& w) {
     return Part::face;
 }
 
-/// sign(v·(p − c)), exactly.
+/// disc::sign(v·(p − c)), exactly.
 int dot_sign(Vec2 v, Vec2 p, Vec2 c) {
     return decide(p, {inf_norm(c - p), inf_norm(v)}, {p, c, v}, {}, [&](const auto& f) {
         using F = std::decay_t<decltype(f)>;
         const P2<typename F::T> vv{f.length(v.x), f.length(v.y)};
-        return sign(-dot(vv, f.point(c)));  // v·(p − c), p the origin
+        return disc::sign(-dot(vv, f.point(c)));  // v·(p − c), p the origin
     });
 }
 
@@ -433,22 +438,22 @@ bool point_segment_clear(Vec2 p, Vec2 a, Vec2 b, double R, double r) {
         const T rho = f.length(R) + f.length(r);
         const T rho2 = rho * rho;
         // (p − a)·e ≤ 0 ⇔ A·e ≥ 0: the cap at a (a zero-length segment too)
-        const auto ua = sign(dot(A, e));
+        const auto ua = disc::sign(dot(A, e));
         if (!ua) return std::nullopt;
         if (*ua >= 0) {
-            const auto c = sign(dot(A, A) - rho2);
+            const auto c = disc::sign(dot(A, A) - rho2);
             if (!c) return std::nullopt;
             return *c >= 0;
         }
-        const auto ub = sign(dot(B, e));
+        const auto ub = disc::sign(dot(B, e));
         if (!ub) return std::nullopt;
         if (*ub <= 0) {
-            const auto c = sign(dot(B, B) - rho2);
+            const auto c = disc::sign(dot(B, B) - rho2);
             if (!c) return std::nullopt;
             return *c >= 0;
         }
         const T x = cross(e, P2<T>{-A.x, -A.y});
-        const auto c = sign(x * x - rho2 * dot(e, e));
+        const auto c = disc::sign(x * x - rho2 * dot(e, e));
         if (!c) return std::nullopt;
         return *c >= 0;
     });
