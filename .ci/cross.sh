@@ -5,9 +5,8 @@
 # native x86-64 gcc -O0 build:
 #   - `ricochet replay --hashes LOG...` (one "HASH PATH" line per log), and
 #   - per log, `ricochet run LOG` (its standard output and exit status),
-#   - on i386 and wasm32 (reduce_legs below says why not the others yet), per log of replays/lecture/ (each
-#     fails under its lecture kernel), the failure log `ricochet reduce LOG` writes (standard output and
-#     exit status): the harness's own saved logs,
+#   - per log of replays/lecture/ (each fails under its lecture kernel), the failure log `ricochet reduce LOG`
+#     writes (standard output and exit status): the harness's own saved logs,
 # for every log in replays/ but those of replays/peers/: they run the peers' Debian libraries (Box2D,
 # Chipmunk), whose bits are the library's, not this build's (Box2D's float code may be compiled with FMA
 # contraction on other architectures), and the cross builds have no Box2D or Chipmunk at all.
@@ -147,10 +146,10 @@ capture() {
   done
 }
 
-# The legs whose reduced logs are compared. aarch64 and s390x are not, yet: there the reduced
-# float-long-wall-reflect-nan.scene says "(nan, nan)" where x86-64 says "(-nan, -nan)" (an invalid operation's
-# NaN is negative on x86 and positive on ARM and s390x, and fmt prints its sign); the data lines are the same.
-reduce_legs=" i386 wasm32 "
+# The legs whose reduced logs are compared: all. (The reduced float-long-wall-reflect-nan.scene's message prints
+# a NaN velocity, whose sign is the processor's: negative on x86, positive on ARM and s390x. Messages print a NaN
+# without its sign, core/include/ricochet/format.hpp.)
+reduce_legs=" i386 aarch64 s390x wasm32 "
 
 # what NAME: the command and log a captured output file stands for ("run replays/x.scene").
 what() {

@@ -1,7 +1,7 @@
 // How the core's types print: one fmt::formatter each, numbers in shortest round-trip form (`{}`),
 // so a printed value reads back bit for bit. Every printer in core/ and cli/ goes through these.
 //
-//   Vec2     (x, y)
+//   Vec2     (x, y)             a NaN as nan, without its sign (the processor's)
 //   Wall     x0 y0 x1 y1        the scene-log `wall` arguments (docs/scene-log.md)
 //   Ball     x y vx vy [r]      the `ball` arguments; r only when its bits are not +0 (a point ball prints
 //                               as before radii existed, and an `expect state` has no radius)
@@ -60,7 +60,10 @@ template <>
 struct fmt::formatter<ricochet::Vec2> : ricochet::detail::PlainFormatter {
     template <class Context>
     auto format(const ricochet::Vec2& p, Context& ctx) const {
-        return fmt::format_to(ctx.out(), "({}, {})", p.x, p.y);
+        // A NaN prints as nan whatever its sign bit: the sign of an invalid operation's NaN is the processor's
+        // (negative on x86, positive on ARM and s390x), and a message must read the same on every platform.
+        const auto plain = [](double v) { return std::isnan(v) ? std::fabs(v) : v; };
+        return fmt::format_to(ctx.out(), "({}, {})", plain(p.x), plain(p.y));
     }
 };
 
