@@ -155,15 +155,16 @@ public:
         if (f < first_ || f > last_) return;
         for (const Event& e : events) {
             if (e.kind == Event::Kind::overlap || e.ball >= slot_.size() || slot_[e.ball] < 0) continue;
-            // The first frame's hits lie before its state, where the path starts.
-            if (f == first_ && e.kind == Event::Kind::hit) continue;
+            // The first frame's hits and bumps lie before its state, where the path starts.
+            const bool bounce = e.kind == Event::Kind::hit || e.kind == Event::Kind::bump;
+            if (f == first_ && bounce) continue;
             Path& p = paths_[static_cast<std::size_t>(slot_[e.ball])];
             if (p.points.size() >= budget_) {
                 p.cut = true;
                 continue;
             }
             p.points.push_back(e.pos);
-            p.hit.push_back(e.kind == Event::Kind::hit);
+            p.hit.push_back(bounce);
         }
     }
 
@@ -272,9 +273,13 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
     Box all;
     for (const Wall& w : scene.walls) all.add(w.p0), all.add(w.p1);
     for (const Circle& c : scene.circles) all.add(Vec2{c.c.x - c.r, c.c.y - c.r}), all.add(Vec2{c.c.x + c.r, c.c.y + c.r});
+    for (const Bumper& b : scene.bumpers) all.add(Vec2{b.c.x - b.r, b.c.y - b.r}), all.add(Vec2{b.c.x + b.r, b.c.y + b.r});
     for (const Rect& r : scene.rects) all.add(Vec2{r.left, r.bottom}), all.add(Vec2{r.right, r.top});
-    for (const Path& p : rec.paths())
-        for (Vec2 q : p.points) all.add(q);
+    for (const Path& p : rec.paths()) {
+        // A disc's path takes its radius around each point it drew.
+        const double R = p.ball < scene.balls.size() ? scene.balls[p.ball].r : 0.0;
+        for (Vec2 q : p.points) all.add(Vec2{q.x - R, q.y - R}), all.add(Vec2{q.x + R, q.y + R});
+    }
     const std::optional<FailingFrame>& failing = rec.failing();
     if (failing)
         for (Vec2 q : failing->points) all.add(q);
@@ -385,6 +390,15 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
                        "stroke=\"#ff7f0e\" stroke-width=\"1.5\"/><text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"#ff7f0e\">c{}</text>\n",
                        v.sx(c.c.x), v.sy(c.c.y), std::max(c.r * v.scale, 1.5), v.sx(c.c.x) + 3, v.sy(c.c.y) - 3, i);
     }
+    // Bumpers: solid circles, darker than the sensors.
+    for (std::size_t i = 0; i < scene.bumpers.size(); ++i) {
+        const Bumper& b = scene.bumpers[i];
+        if (!clip_box.meets(Box{b.c.x - b.r, b.c.y - b.r, b.c.x + b.r, b.c.y + b.r})) continue;
+        fmt::format_to(it,
+                       "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"{:.3f}\" fill=\"#8c564b\" fill-opacity=\"0.45\" "
+                       "stroke=\"#5c3a32\" stroke-width=\"2\"/><text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"#5c3a32\">k{}</text>\n",
+                       v.sx(b.c.x), v.sy(b.c.y), std::max(b.r * v.scale, 1.5), v.sx(b.c.x) + 3, v.sy(b.c.y) - 3, i);
+    }
     for (std::size_t i = 0; i < scene.walls.size(); ++i) {
         const Wall& w = scene.walls[i];
         const auto seen = clip(w.p0, w.p1, clip_box);
@@ -420,6 +434,18 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
                 fmt::format_to(it, "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"3\" fill=\"{}\"/>\n", v.sx(p.points[i].x),
                                v.sy(p.points[i].y), colour);
         const Vec2 start = p.points.front(), end = p.points.back();
+        // A disc at its size where the path starts, bounces and ends: dashed outlines around its centre.
+        const double R = p.ball < scene.balls.size() ? scene.balls[p.ball].r : 0.0;
+        if (R > 0.0)
+            for (std::size_t i = 0; i < p.points.size(); ++i) {
+                const Vec2 c = p.points[i];
+                const bool shown = i == 0 || i + 1 == p.points.size() || p.hit[i];
+                if (!shown || !clip_box.meets(Box{c.x - R, c.y - R, c.x + R, c.y + R})) continue;
+                fmt::format_to(it,
+                               "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"{:.3f}\" fill=\"none\" stroke=\"{}\" "
+                               "stroke-opacity=\"0.6\" stroke-dasharray=\"4 3\"/>\n",
+                               v.sx(c.x), v.sy(c.y), R * v.scale, colour);
+            }
         const bool label = rec.paths().size() <= k_max_labels || (failure && failure->ball == p.ball);
         if (clip_box.holds(start)) {
             fmt::format_to(it,

@@ -211,6 +211,41 @@ TEST(RenderRun, AFailureAfterTheRangeIsFoundAndTheRunStopsThere) {
     EXPECT_FALSE(all.failure);
 }
 
+/// The r of the first <circle …> element holding attr, or −1.
+double circle_radius_with(const std::string& svg, const std::string& attr) {
+    const std::size_t at = svg.find(attr);
+    if (at == std::string::npos) return -1;
+    const std::size_t open = svg.rfind("<circle ", at);
+    const std::size_t r = svg.find(" r=\"", open);
+    double v = -1;
+    std::from_chars(svg.data() + r + 4, svg.data() + svg.size(), v);
+    return v;
+}
+
+TEST(RenderRun, ADiscIsDrawnAtItsSizeAndABumperAsASolidCircle) {
+    // A disc of radius 0.5 at (−5, 0) moving (4, 0) meets the bumper of radius 1 at the origin when its centre is
+    // 1.5 from it, at (−1.5, 0) (t = 3.5/4), and goes back: its path is (−5, 0), the bump, its end (−2, 0).
+    Scene s;
+    s.frames = 1;
+    s.bumpers = {{{0, 0}, 1}};
+    s.balls = {{{-5, 0}, {4, 0}, 0.5}};
+    s.checks = {Check::penetration};
+    const RenderResult r = render_run(s, KernelId::robust);
+    ASSERT_FALSE(r.failure);
+    // The bumper: one solid circle; the disc: a dashed outline where it starts, bounces and ends, half the
+    // bumper's radius in the picture; the bump marked as a hit is.
+    EXPECT_EQ(count(r.svg, "fill=\"#8c564b\""), 1);
+    EXPECT_EQ(count(r.svg, "stroke-dasharray=\"4 3\""), 3);
+    const double bumper = circle_radius_with(r.svg, "fill=\"#8c564b\"");
+    const double disc = circle_radius_with(r.svg, "stroke-dasharray=\"4 3\"");
+    ASSERT_GT(bumper, 0);
+    EXPECT_NEAR(disc / bumper, 0.5, 1e-3);
+    EXPECT_EQ(count(r.svg, "r=\"3\" fill=\"#1f77b4\""), 1);
+    // A point ball draws no outline.
+    s.balls[0].r = 0;
+    EXPECT_EQ(count(render_run(s, KernelId::robust).svg, "stroke-dasharray"), 0);
+}
+
 TEST(RenderRun, ThePointBudgetCutsLongPathsAndSaysSo) {
     Scene s;
     s.frames = 100;
