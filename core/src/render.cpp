@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -382,23 +383,21 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
                        v.sx(left), v.sy(top), (right - left) * v.scale, (top - bottom) * v.scale, v.sx(left) + 3,
                        v.sy(top) + 13, i);
     }
-    for (std::size_t i = 0; i < scene.circles.size(); ++i) {
-        const Circle& c = scene.circles[i];
-        if (!clip_box.meets(Box{c.c.x - c.r, c.c.y - c.r, c.c.x + c.r, c.c.y + c.r})) continue;
-        fmt::format_to(it,
-                       "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"{:.3f}\" fill=\"#ff7f0e\" fill-opacity=\"0.15\" "
-                       "stroke=\"#ff7f0e\" stroke-width=\"1.5\"/><text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"#ff7f0e\">c{}</text>\n",
-                       v.sx(c.c.x), v.sy(c.c.y), std::max(c.r * v.scale, 1.5), v.sx(c.c.x) + 3, v.sy(c.c.y) - 3, i);
-    }
+    // A circle of the scene, centre c and radius r, in its style, labelled name (at least 1.5 px across).
+    const auto round_shape = [&](Vec2 c, double r, std::string_view style, std::string_view ink, std::string_view name) {
+        if (!clip_box.meets(Box{c.x - r, c.y - r, c.x + r, c.y + r})) return;
+        fmt::format_to(it, "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"{:.3f}\" {}/><text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"{}\">{}</text>\n",
+                       v.sx(c.x), v.sy(c.y), std::max(r * v.scale, 1.5), style, v.sx(c.x) + 3, v.sy(c.y) - 3, ink, name);
+    };
+    for (std::size_t i = 0; i < scene.circles.size(); ++i)
+        round_shape(scene.circles[i].c, scene.circles[i].r,
+                    "fill=\"#ff7f0e\" fill-opacity=\"0.15\" stroke=\"#ff7f0e\" stroke-width=\"1.5\"", "#ff7f0e",
+                    fmt::format("c{}", i));
     // Bumpers: solid circles, darker than the sensors.
-    for (std::size_t i = 0; i < scene.bumpers.size(); ++i) {
-        const Bumper& b = scene.bumpers[i];
-        if (!clip_box.meets(Box{b.c.x - b.r, b.c.y - b.r, b.c.x + b.r, b.c.y + b.r})) continue;
-        fmt::format_to(it,
-                       "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"{:.3f}\" fill=\"#8c564b\" fill-opacity=\"0.45\" "
-                       "stroke=\"#5c3a32\" stroke-width=\"2\"/><text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"#5c3a32\">k{}</text>\n",
-                       v.sx(b.c.x), v.sy(b.c.y), std::max(b.r * v.scale, 1.5), v.sx(b.c.x) + 3, v.sy(b.c.y) - 3, i);
-    }
+    for (std::size_t i = 0; i < scene.bumpers.size(); ++i)
+        round_shape(scene.bumpers[i].c, scene.bumpers[i].r,
+                    "fill=\"#8c564b\" fill-opacity=\"0.45\" stroke=\"#5c3a32\" stroke-width=\"2\"", "#5c3a32",
+                    fmt::format("k{}", i));
     for (std::size_t i = 0; i < scene.walls.size(); ++i) {
         const Wall& w = scene.walls[i];
         const auto seen = clip(w.p0, w.p1, clip_box);
