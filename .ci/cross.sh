@@ -7,6 +7,8 @@
 #   - per log, `ricochet run LOG` (its standard output and exit status),
 #   - per log of replays/lecture/ (each fails under its lecture kernel), the failure log `ricochet reduce LOG`
 #     writes (standard output and exit status): the harness's own saved logs,
+#   - the harness itself (capture_harness): each fuzz target on each committed corpus input and the property
+#     suite with a fixed seed, under both lecture kernels: which fail, where, and the logs they save,
 # for every log in replays/ but those of replays/peers/: they run the peers' Debian libraries (Box2D,
 # Chipmunk), whose bits are the library's, not this build's (Box2D's float code may be compiled with FMA
 # contraction on other architectures), and the cross builds have no Box2D or Chipmunk at all.
@@ -24,7 +26,8 @@
 # whose packages cannot be installed fails with a message, never skips. Leg builds are -O2 (CROSS_OPT),
 # where aarch64 and s390x gcc would contract into FMA. The wasm32 leg builds `ricochet` without the fuzz
 # campaign (no child processes under node) and without plug-in kernels (no dlopen): `ricochet run` and
-# `replay --hashes`, the commands compared, are whole.
+# `replay --hashes`, the commands compared, are whole; its fuzz targets run with their standalone driver, and
+# it has no property suite (no RapidCheck or GoogleTest for emscripten in Debian).
 # Environment: JOBS (default 2), CROSS_PREFIX (leg build folders, default build-cross-),
 # DET_PREFIX (the native reference is ${DET_PREFIX}gcc-O0, configured exactly as .ci/determinism.sh
 # does, so that the two scripts share it; default build-det-), CROSS_OPT (leg flags, default -O2).
@@ -146,6 +149,51 @@ capture() {
   done
 }
 
+# capture_harness DIR BUILDDIR RUNNER...: the logs the harness itself saves, for fixed inputs and a fixed seed.
+#   - The fuzz targets (static, sweep, scene; standalone driver, fuzz/standalone_main.cpp) on every committed
+#     input of fuzz/corpus/<target>/ under each lecture kernel, one run per input (a failure aborts the run):
+#     whether it failed, its failure line (target, kernel, check, frame, kind) and the log it saved
+#     ($RICOCHET_FUZZ_SCENE_OUT), into run/fuzz__TARGET__KERNEL__INPUT.
+#   - The property suite (not on wasm32: Debian has no RapidCheck or GoogleTest for emscripten) under each
+#     lecture kernel with RapidCheck's seed 1 and its failures saved into an empty folder: the failing
+#     properties' names, then every saved log, into run/props__KERNEL__LOG. (Timings in its output are not
+#     compared; the reducer's budget is a count of tries, so what it saves does not depend on the clock.)
+capture_harness() {
+  local dir=$1 build=$2; shift 2
+  local t k input name saved verdict props=$build/properties/ricochet_properties
+  local ext=
+  [ "$(basename "${1:-}")" = node ] && ext=.js
+  mkdir -p "$dir/run" "$dir/saved"
+  for t in static sweep scene; do
+    for k in $harness_kernels; do
+      for input in fuzz/corpus/$t/*; do
+        name=fuzz__${t}__${k}__${input##*/}
+        saved=$dir/saved/$name.scene
+        verdict=passed
+        # In a subshell whose own stderr is dropped: a failing input aborts the target, and bash would say so.
+        ( RICOCHET_KERNEL=$k RICOCHET_FUZZ_SCENE_OUT=$saved RICOCHET_FUZZ_SHA1=${input##*/} \
+            "$@" "$build/fuzz/fuzz_$t$ext" "$input" >/dev/null 2>"$dir/saved/$name.err" </dev/null ) 2>/dev/null ||
+          verdict=failed
+        { echo "# $verdict"; grep -a '^==ricochet-fuzz== FAILURE' "$dir/saved/$name.err"
+          [ -f "$saved" ] && cat "$saved"; } >"$dir/run/$name"
+      done
+    done
+  done
+  [ -n "$ext" ] && return 0
+  for k in $harness_kernels; do
+    rm -rf "$dir/saved/props-$k"; mkdir -p "$dir/saved/props-$k"
+    RICOCHET_KERNEL=$k RICOCHET_REPLAY_DIR=$dir/saved/props-$k RC_PARAMS="seed=1" \
+      "$@" "$props" >"$dir/saved/props-$k.out" 2>&1 </dev/null
+    echo "# exit $?" >"$dir/run/props__${k}__failed"
+    sed -n 's/^\[  FAILED  \] \([A-Za-z0-9_./]*\).*/\1/p' "$dir/saved/props-$k.out" | LC_ALL=C sort -u >>"$dir/run/props__${k}__failed"
+    for saved in "$dir/saved/props-$k"/*.scene; do
+      [ -f "$saved" ] && cp "$saved" "$dir/run/props__${k}__${saved##*/}"
+    done
+  done
+}
+harness_kernels="lecture-float lecture-double"
+harness_targets=(fuzz_static fuzz_sweep fuzz_scene)
+
 # The legs whose reduced logs are compared: all. (The reduced float-long-wall-reflect-nan.scene's message prints
 # a NaN velocity, whose sign is the processor's: negative on x86, positive on ARM and s390x. Messages print a NaN
 # without its sign, core/include/ricochet/format.hpp.)
@@ -156,6 +204,10 @@ what() {
   local f=$1
   case "$f" in
     reduce__*) f=${f#reduce__}; echo "reduce ${f//__//}" ;;
+    fuzz__*)  # fuzz__TARGET__KERNEL__INPUT
+      local t k; f=${f#fuzz__}; t=${f%%__*}; f=${f#*__}; k=${f%%__*}
+      echo "fuzz_$t on fuzz/corpus/$t/${f#*__} under $k (verdict, failure line, saved log)" ;;
+    props__*) f=${f#props__}; echo "property suite, seed 1, under ${f%%__*}: ${f#*__}" ;;
     *) echo "run ${f//__//}" ;;
   esac
 }
@@ -172,8 +224,9 @@ compare() {
   b_reduce=$(find "$b/run" -name 'reduce__*' | wc -l)
   for f in "$a"/run/*; do
     f=${f##*/}
-    # A leg outside reduce_legs captured no reduced logs.
+    # A leg outside reduce_legs captured no reduced logs; wasm32 runs no property suite.
     [ "$b_reduce" = 0 ] && [ "${f#reduce__}" != "$f" ] && continue
+    [ "${compare_props:-1}" = 0 ] && [ "${f#props__}" != "$f" ] && continue
     if [ ! -f "$b/run/$f" ]; then
       status=1; echo "MISSING in $bn: $(what "$f")"; continue
     fi
@@ -183,8 +236,11 @@ compare() {
       diff "$a/run/$f" "$b/run/$f" | head -n 4
     fi
   done
-  nlogs=$(find "$b/run" -type f -not -name 'reduce__*' | wc -l)
-  [ $status = 0 ] && say "$bn: replay --hashes, $nlogs run outputs and $b_reduce reduced logs identical to $an"
+  local nfuzz nprops
+  nlogs=$(find "$b/run" -type f -not -name 'reduce__*' -not -name 'fuzz__*' -not -name 'props__*' | wc -l)
+  nfuzz=$(grep -l '^ricochet 1$' "$b"/run/fuzz__* 2>/dev/null | wc -l)
+  nprops=$(find "$b/run" -name 'props__*.scene' | wc -l)
+  [ $status = 0 ] && say "$bn: replay --hashes, $nlogs run outputs, $b_reduce reduced logs, $(find "$b/run" -name 'fuzz__*' | wc -l) fuzz runs ($nfuzz saved logs) and $nprops property logs identical to $an"
   return $status
 }
 
@@ -193,13 +249,19 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
 build_reference() {
-  ensure cmake ninja-build g++-12 pkg-config libfmt-dev libgmp-dev libxxhash-dev libssl-dev libcli11-dev || return 1
+  ensure cmake ninja-build g++-12 pkg-config libfmt-dev libgmp-dev libxxhash-dev libssl-dev libcli11-dev \
+    librapidcheck-dev libgtest-dev || return 1
   if [ ! -f "$ref_dir/CMakeCache.txt" ]; then
     CC=gcc-12 CXX=g++-12 cmake -S . -B "$ref_dir" -G Ninja -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O0" \
       -DRICOCHET_TESTS=OFF -DRICOCHET_BENCH=OFF -DRICOCHET_FUZZ=OFF >/dev/null || return 1
   fi
-  cmake --build "$ref_dir" -j "$jobs" --target ricochet >/dev/null || return 1
+  # The property suite too (determinism.sh, which configures the same folder, needs only the command).
+  if ! grep -q '^RICOCHET_PROPERTIES:BOOL=ON$' "$ref_dir/CMakeCache.txt"; then
+    cmake -S . -B "$ref_dir" -DRICOCHET_PROPERTIES=ON >/dev/null || return 1
+  fi
+  cmake --build "$ref_dir" -j "$jobs" --target ricochet "${harness_targets[@]}" ricochet_properties >/dev/null || return 1
   capture "$out/native" "$ref_dir/cli/ricochet"
+  capture_harness "$out/native" "$ref_dir"
 }
 
 # --- one leg --------------------------------------------------------------------------------------
@@ -209,7 +271,7 @@ leg() {
   local deb gnu multi runner ssl_root t0 t1 t2 t3
   leg_info "$name"
   t0=$(now)
-  local pkgs=(cmake ninja-build pkg-config libcli11-dev) target_args=()
+  local pkgs=(cmake ninja-build pkg-config libcli11-dev) target_args=() targets=()
   case "$name" in
     i386) pkgs+=(gcc-i686-linux-gnu g++-i686-linux-gnu) ;;
     aarch64) pkgs+=(crossbuild-essential-arm64 qemu-user) ;;
@@ -223,14 +285,17 @@ leg() {
       return 1
     fi
     target_args=(-DCMAKE_CXX_FLAGS="$opt" -DRICOCHET_BIGNUM=boost -DRICOCHET_FUZZ_CAMPAIGN=OFF -DRICOCHET_PEERS=OFF)
+    targets=(ricochet "${harness_targets[@]}")
   else
-    pkgs+=("libfmt-dev:$deb" "libgmp-dev:$deb" "libxxhash-dev:$deb")
+    pkgs+=("libfmt-dev:$deb" "libgmp-dev:$deb" "libxxhash-dev:$deb" "librapidcheck-dev:$deb" "libgtest-dev:$deb")
+    targets=(ricochet "${harness_targets[@]}" ricochet_properties)
     if ! add_arch "$deb" || ! ensure "${pkgs[@]}" || ! openssl_sysroot; then
       echo "FAIL $name: the cross toolchain or the :$deb dev packages could not be installed (see above)"
       return 1
     fi
     target_args=(-DCMAKE_CXX_FLAGS="$opt -isystem $ssl_root/usr/include/$multi"
-                 -DOPENSSL_INCLUDE_DIR="$ssl_root/usr/include" -DOPENSSL_CRYPTO_LIBRARY="$ssl_root/usr/lib/$multi/libcrypto.a")
+                 -DOPENSSL_INCLUDE_DIR="$ssl_root/usr/include" -DOPENSSL_CRYPTO_LIBRARY="$ssl_root/usr/lib/$multi/libcrypto.a"
+                 -DRICOCHET_PROPERTIES=ON)
   fi
   t1=$(now)
   if [ ! -f "$dir/CMakeCache.txt" ]; then
@@ -241,7 +306,7 @@ leg() {
       echo "FAIL $name: configure failed"; return 1
     fi
   fi
-  if ! cmake --build "$dir" -j "$jobs" --target ricochet >"$out/$name.build.log" 2>&1; then
+  if ! cmake --build "$dir" -j "$jobs" --target "${targets[@]}" >"$out/$name.build.log" 2>&1; then
     tail -n 40 "$out/$name.build.log"
     echo "FAIL $name: build failed"; return 1
   fi
@@ -258,6 +323,7 @@ leg() {
   [ "${reduce_legs/ $name /}" != "$reduce_legs" ] && capture_reduce=1
   capture "$out/$name" "${bin[@]}"
   capture_reduce=1
+  capture_harness "$out/$name" "$dir" "${runner[@]}"
   t3=$(now)
   say "$name: packages $((t1 - t0)) s, configure+build $((t2 - t1)) s, runs $((t3 - t2)) s, total $((t3 - t0)) s"
   leg_seconds=$((t3 - t0))
@@ -275,6 +341,8 @@ for l in "${legs[@]}"; do
   leg_seconds=0
   build_name="$l-gcc$opt"
   [ "$l" = wasm32 ] && build_name="wasm32-emscripten$opt-boost"
+  compare_props=1
+  [ "$l" = wasm32 ] && compare_props=0
   if leg "$l" && compare "$out/native" "$out/$l" "native-gcc-O0" "$build_name"; then
     summary+=("$l: identical (${leg_seconds} s)")
   else

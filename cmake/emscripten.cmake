@@ -6,12 +6,14 @@
 # /usr/include itself, whose glibc headers would shadow emscripten's libc; the targets are named as
 # find_package and pkg-config name them elsewhere, so the rest of the build does not change.
 #
-# Left out, because wasm32 under node has no child processes and no dlopen: the fuzz targets and the fuzz
-# campaign (`ricochet fuzz` says it is not in this build), the benchmarks (`ricochet bench` likewise), the
-# peers (their Debian libraries are x86-64 code) and the tests. Plug-in kernels are refused at load time, with
+# Left out, because wasm32 under node has no child processes and no dlopen: libFuzzer and the fuzz campaign
+# (`ricochet fuzz` says it is not in this build; the fuzz targets build with their standalone driver, which runs
+# given inputs once), the benchmarks (`ricochet bench` likewise), the
+# peers (their Debian libraries are x86-64 code), the tests and the property suite (Debian has no RapidCheck or
+# GoogleTest for emscripten). Plug-in kernels are refused at load time, with
 # the reason (plugin_loader.cpp).
 
-foreach(_option RICOCHET_TESTS RICOCHET_BENCH RICOCHET_FUZZ RICOCHET_FUZZ_CAMPAIGN RICOCHET_PEERS)
+foreach(_option RICOCHET_TESTS RICOCHET_PROPERTIES RICOCHET_BENCH RICOCHET_FUZZ RICOCHET_FUZZ_CAMPAIGN RICOCHET_PEERS)
   if(${_option})
     message(FATAL_ERROR "ricochet on wasm32: ${_option} needs child processes, dlopen or libraries Debian does "
       "not build for emscripten; configure with -D${_option}=OFF")
@@ -53,6 +55,8 @@ target_include_directories(Boost::headers SYSTEM INTERFACE ${_headers})
 # which emscripten 3.1.6's asynchronous start then tries on a file path, and fails).
 add_compile_options(-fexceptions)
 add_link_options(-fexceptions -sNODERAWFS=1 -sEXIT_RUNTIME=1 -sALLOW_MEMORY_GROWTH=1 -sWASM_ASYNC_COMPILATION=0)
+# getenv answers from node's environment (cmake/node_env.js), as on every other platform.
+add_link_options(--pre-js ${CMAKE_CURRENT_LIST_DIR}/node_env.js)
 # Debian's emscripten tidies the JavaScript it links with node and Debian's node-acorn, installed in /usr/share/nodejs,
 # a folder Debian's own nodejs searches and other builds of node (NodeSource's) do not: the link names it.
 set(CMAKE_CXX_LINKER_LAUNCHER ${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs)
