@@ -1,5 +1,7 @@
 // The exact kernel's disc: robust's exact decisions (contact.hpp) and frame (frame.hpp), with every
-// construction correctly rounded from its exact value.
+// construction correctly rounded from its exact value. Unlike exact's point balls (kernel_exact.cpp, an
+// independent oracle) the decisions here are robust's own code: for discs the independent check is
+// disc_contact_test's comparison with a 512-bit computation, and exact differs from robust only in rounding.
 //
 // How each printed number is rounded:
 // - The contact's time t* = (a + b·√c)/d (contact_root) is irrational in general (a cap's or a bumper's root, a
