@@ -281,11 +281,12 @@ double nearest_to(const mpf_class& exact) {
     return x;
 }
 
-TEST(DiscExact, ContactPointsAreTheNearestDoublesWhereThoseAreClear) {
+TEST(DiscExact, ContactPointsAndBouncesAreTheNearestDoubles) {
     // One leg onto a long wall's face or onto a bumper, its exact contact point X* = q + t*·(b − q) computed in
     // 1024-bit floating point (t* from contact.hpp's formulas, √ the only rounding): exact prints the nearest
     // double to each coordinate unless the piece to that point is not clear (then it walked back, and that point
-    // is not clear: checked); robust, which rounds t first, misses the nearest more often.
+    // is not clear: checked); robust, which rounds t first, misses the nearest more often. And v′ is the nearest
+    // double to the exact reflection about the normal at the printed point.
     std::mt19937_64 rng(31);
     std::uniform_real_distribution<double> unit(0, 1);
     int cases = 0, exact_nearest = 0, robust_nearest = 0, walked = 0;
@@ -330,6 +331,19 @@ TEST(DiscExact, ContactPointsAreTheNearestDoublesWhereThoseAreClear) {
         const mpf_class X = qx + t * dx, Y = qy + t * dy;
         ++cases;
         const Vec2 x = e.hits[0].point;
+        // The bounce: v′ = v − 2(v·N)N/(N·N) about the exact normal at the printed x (the wall's n, or x − C),
+        // each coordinate the nearest double.
+        mpf_class nx(0, 1100), ny(0, 1100);
+        if (face) {
+            nx = mpf_class(s.walls[0].p1.y, 1100) - s.walls[0].p0.y;
+            ny = mpf_class(s.walls[0].p0.x, 1100) - s.walls[0].p1.x;
+        } else {
+            nx = mpf_class(x.x, 1100) - s.bumpers[0].c.x;
+            ny = mpf_class(x.y, 1100) - s.bumpers[0].c.y;
+        }
+        const mpf_class k = 2 * (v.x * nx + v.y * ny) / (nx * nx + ny * ny);
+        ASSERT_EQ(e.hits.size(), 1u);
+        EXPECT_TRUE(nearest(e.ball.vel.x, v.x - k * nx) && nearest(e.ball.vel.y, v.y - k * ny)) << i;
         const bool exact_is_nearest = nearest(x.x, X) && nearest(x.y, Y);
         exact_nearest += exact_is_nearest;
         robust_nearest += nearest(r.hits[0].point.x, X) && nearest(r.hits[0].point.y, Y);
