@@ -244,28 +244,6 @@ case "$case" in
   work-default)      run 2 replay "$big"
                      first_line err "ricochet: error: $big: too much work: 10000000 frames × 200 balls × (4 walls + 0 circles + 0 rects + 0 bumpers + 1) = 10000000000 is over the bound of 100000000; raise it with --max-work N (0: no bound)" ;;
   work-frames-flag)  run 2 run "$log" --frames 5 --max-work 19; grep -q "= 20 is over the bound of 19" "$dir/err" || fail "work not from --frames" ;;
-  # A disc or a bumper under a kernel that cannot step it (every kernel but robust): refused before anything runs or is written, exit 2.
-  unsupported-run)   printf 'ricochet 1\nkernel exact\nframes 2\nball 0 0 1 0 0.5\n' >"$dir/d.scene"
-                     run 2 run "$dir/d.scene"
-                     first_line err "$dir/d.scene: error: kernel 'exact' steps point balls only: ball 0 has radius 0.5"
-                     [ ! -s "$dir/out" ] || fail "run printed events before refusing" ;;
-  unsupported-replay) printf 'ricochet 1\nkernel lecture-double\nframes 2\nball 0 0 1 0\nbumper 5 5 1\n' >"$dir/b.scene"
-                     run 2 replay "$dir/b.scene" "$log"
-                     first_line err "$dir/b.scene: error: kernel 'lecture-double' does not step bumpers: the scene has 1 (bumper 0 first)"
-                     has out "FAIL $dir/b.scene: not run (unsupported)"
-                     grep -q "^ok   $log: " "$dir/out" || fail "the next log was not replayed"
-                     has out "1 passed, 1 failed" ;;
-  unsupported-record) printf 'ricochet 1\nkernel exact\nframes 2\nball 0 0 1 0 0.5\n' >"$dir/d.scene"; cp "$dir/d.scene" "$dir/keep"
-                     run 2 record "$dir/d.scene"
-                     first_line err "$dir/d.scene: error: kernel 'exact' steps point balls only: ball 0 has radius 0.5"
-                     cmp -s "$dir/keep" "$dir/d.scene" || fail "record changed the log" ;;
-  unsupported-render) printf 'ricochet 1\nkernel exact\nframes 2\nball 0 0 1 0 0.5\n' >"$dir/d.scene"
-                     run 2 render "$dir/d.scene" -o "$dir/x.svg"
-                     first_line err "$dir/d.scene: error: kernel 'exact' steps point balls only: ball 0 has radius 0.5"
-                     [ ! -e "$dir/x.svg" ] || fail "render wrote the picture" ;;
-  unsupported-reduce) printf 'ricochet 1\nkernel exact\nframes 2\nball 0 0 1 0 0.5\ncheck round-trip\n' >"$dir/d.scene"
-                     run 2 reduce "$dir/d.scene" --kernel exact
-                     first_line err "$dir/d.scene: error: kernel 'exact' steps point balls only: ball 0 has radius 0.5" ;;
   # render: its view, its bounds on what is drawn, and the pinball table's tunnel marked where it crossed.
   render-view-bad)   run 2 render "$log" -o "$dir/x.svg" --view some
                      first_line err "ricochet: error: --view: 'some' is not a view (expected failure or all)"

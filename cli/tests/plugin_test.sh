@@ -67,6 +67,29 @@ case $case in
                     fail "no dlerror message naming the file" ;;
   bad-timeout)    RICOCHET_PLUGIN_TIMEOUT=soon run 2 run "$dir/left.scene" --kernel "plugin:$good"
                   first_line err "ricochet: error: RICOCHET_PLUGIN_TIMEOUT: 'soon' is not a number of seconds from 0 (no limit) to 86400" ;;
+  # A disc or a bumper under a kernel that cannot step it (a plug-in, a peer; every built-in kernel steps them):
+  # refused before anything runs or is written, exit 2.
+  unsupported-run) printf 'ricochet 1\nframes 2\nball 0 0 1 0 0.5\n' >"$dir/d.scene"
+                  run 2 run "$dir/d.scene" --kernel "plugin:$good"
+                  first_line err "$dir/d.scene: error: kernel 'test-good' steps point balls only: ball 0 has radius 0.5"
+                  [ ! -s "$dir/out" ] || fail "run printed events before refusing" ;;
+  unsupported-replay) printf 'ricochet 1\nkernel test-good\nframes 2\nball 0 0 1 0\nbumper 5 5 1\n' >"$dir/b.scene"
+                  run 2 replay --plugin "$good" "$dir/b.scene" "$dir/good.scene"
+                  first_line err "$dir/b.scene: error: kernel 'test-good' does not step bumpers: the scene has 1 (bumper 0 first)"
+                  has out "FAIL $dir/b.scene: not run (unsupported)"
+                  grep -q "^ok   $dir/good.scene: " "$dir/out" || fail "the next log was not replayed"
+                  has out "1 passed, 1 failed" ;;
+  unsupported-record) printf 'ricochet 1\nkernel test-good\nframes 2\nball 0 0 1 0 0.5\n' >"$dir/d.scene"; cp "$dir/d.scene" "$dir/keep"
+                  run 2 record --plugin "$good" "$dir/d.scene"
+                  first_line err "$dir/d.scene: error: kernel 'test-good' steps point balls only: ball 0 has radius 0.5"
+                  cmp -s "$dir/keep" "$dir/d.scene" || fail "record changed the log" ;;
+  unsupported-render) printf 'ricochet 1\nframes 2\nball 0 0 1 0 0.5\n' >"$dir/d.scene"
+                  run 2 render "$dir/d.scene" -o "$dir/x.svg" --kernel "plugin:$good"
+                  first_line err "$dir/d.scene: error: kernel 'test-good' steps point balls only: ball 0 has radius 0.5"
+                  [ ! -e "$dir/x.svg" ] || fail "render wrote the picture" ;;
+  unsupported-reduce) printf 'ricochet 1\nframes 2\nball 0 0 1 0 0.5\ncheck round-trip\n' >"$dir/d.scene"
+                  run 2 reduce "$dir/d.scene" --kernel "plugin:$good"
+                  first_line err "$dir/d.scene: error: kernel 'test-good' steps point balls only: ball 0 has radius 0.5" ;;
   run)            # The plug-in is what steps: blind to walls at x = 7 (test-no-reason), the ball goes through.
                   run 0 run "$dir/seven.scene" --kernel "plugin:$plugins/test_plugin_no_reason.so"
                   grep -q '^hit ' "$dir/out" && fail "the blind plug-in reports a hit"

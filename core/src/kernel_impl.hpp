@@ -60,6 +60,12 @@ struct ExactKernel {
                                  std::vector<HitEvent>& hits, StepScratch& scratch, const WallIndex* /*index*/) {
         return exact_kernel::step_ball(ball, memory, walls, hits, scratch);
     }
+    /// A disc among walls and bumpers, or a point ball in a scene with bumpers (disc/exact_disc.cpp): robust's
+    /// exact decisions, every construction correctly rounded, then walked back as robust's until clear.
+    static FrameStatus step_disc(Ball& ball, BallMemory& memory, const Obstacles& obstacles,
+                                 std::vector<HitEvent>& hits, StepScratch& scratch);
+    /// step_disc bounces balls off bumpers too.
+    static constexpr bool k_steps_bumpers = true;
 };
 
 }  // namespace ricochet

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "disc/lecture_disc.hpp"
 #include "naive_frame.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/line.hpp"
@@ -75,6 +76,15 @@ struct LectureKernel {
             [](V pos, V d, const Wall& w) { return sweep_leg(pos, d, vec_cast<Real>(w.p0), vec_cast<Real>(w.p1)); },
             [](V v, const Wall& w) { return reflect_real(v, w); });
     }
+
+    /// A disc among walls and bumpers, or a point ball in a scene with bumpers, the lecture's way
+    /// (disc/lecture_disc.hpp): shifted lines, the quadratic formula, every obstacle tried, nothing remembered.
+    static FrameStatus step_disc(Ball& ball, BallMemory& /*memory*/, const Obstacles& obstacles,
+                                 std::vector<HitEvent>& hits, StepScratch& scratch) {
+        return disc::step_lecture_disc<Real>(ball, obstacles, hits, scratch);
+    }
+    /// step_disc bounces balls off bumpers too.
+    static constexpr bool k_steps_bumpers = true;
 
 private:
     /// The animated point's answer against one wall, in Real.

@@ -1,6 +1,7 @@
 // Discs and bumpers in the format and the model (docs/scene-log.md, "Discs and bumpers"): the optional
 // radius and the `bump` event read, print, hash and round-trip as specified; a radius of 0 changes nothing;
-// a kernel or a check that has no meaning for them refuses them instead of skipping them.
+// every built-in kernel steps them; a kernel or a check that has no meaning for them refuses them instead of
+// skipping them.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -14,6 +15,7 @@
 #include "ricochet/checks.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/hash.hpp"
+#include "ricochet/kernel.hpp"
 #include "ricochet/scene_log.hpp"
 #include "ricochet/world.hpp"
 #include "scene_text.hpp"
@@ -130,33 +132,77 @@ TEST(DiscFormat, BumpPrintsAndHashesAsDocumented) {
     EXPECT_EQ(fmt::format("{}", Ball{{1, 2}, {3, 4}, -0.0}), "1 2 3 4 -0");
 }
 
-// Stage 1: no kernel steps discs or bumpers yet, so each refuses them with a message that says which.
-TEST(DiscFormat, AKernelThatCannotStepThemRefusesTheScene) {
-    const Scene disc = parse_ok("ricochet 1\nframes 1\nball 0 0 1 1\nball 0 0 1 1 0.5\n");
-    const Scene bumper = parse_ok("ricochet 1\nframes 1\nball 0 0 1 1\nbumper 3 3 1\n");
+// Every built-in kernel steps discs and bumpers (robust and exact with exact decisions, the lecture kernels the
+// lecture's way): each accepts them and steps one frame.
+TEST(DiscFormat, EveryBuiltInKernelStepsThem) {
+    const Scene disc = parse_ok("ricochet 1\nframes 1\nwall 2 -5 2 5\nball 0 0 1 1\nball 0 0 3 0 0.5\n");
+    const Scene bumper = parse_ok("ricochet 1\nframes 1\nball 0 0 3 0\nbumper 3 0 1\n");
     for (KernelId k : k_all_kernels) {
-        const std::string name(kernel_name(k));
-        if (k == KernelId::robust) {
-            // robust steps both (disc/robust_disc.cpp).
-            EXPECT_EQ(unsupported_scene(k, disc.balls, 0), std::nullopt);
-            EXPECT_EQ(unsupported_scene(k, bumper.balls, 1), std::nullopt);
-            EXPECT_NO_THROW(World(disc, k));
-            EXPECT_NO_THROW(World(bumper, k));
-            continue;
-        }
-        EXPECT_EQ(unsupported_scene(k, disc.balls, 0), "kernel '" + name + "' steps point balls only: ball 1 has radius 0.5");
-        EXPECT_EQ(unsupported_scene(k, bumper.balls, 1),
-                  "kernel '" + name + "' does not step bumpers: the scene has 1 (bumper 0 first)");
-        EXPECT_THROW(World(disc, k), UnsupportedScene);
-        EXPECT_THROW(World(bumper, k), UnsupportedScene);
-        EXPECT_THROW(run_checked(disc, k, 1, {}), UnsupportedScene);
-        EXPECT_EQ(refusal(disc, k, {}), unsupported_scene(k, disc.balls, 0));
+        SCOPED_TRACE(kernel_name(k));
+        EXPECT_EQ(unsupported_scene(k, disc.balls, 0), std::nullopt);
+        EXPECT_EQ(unsupported_scene(k, bumper.balls, 1), std::nullopt);
+        EXPECT_NO_THROW(World(disc, k));
+        EXPECT_NO_THROW(World(bumper, k));
+        EXPECT_EQ(refusal(disc, k, {}), std::nullopt);
+        // The disc meets the wall's face (centre at x = 1.5) and bounces back; the point ball meets the bumper.
         Ball b = disc.balls[1];
         BallMemory m;
         std::vector<HitEvent> hits;
         StepScratch scratch;
-        EXPECT_THROW(step_ball(k, b, m, Obstacles{disc.walls, {}, nullptr}, hits, scratch), UnsupportedScene);
+        EXPECT_EQ(step_ball(k, b, m, Obstacles{disc.walls, {}, nullptr}, hits, scratch), FrameStatus::ok);
+        ASSERT_EQ(hits.size(), 1u);
+        EXPECT_EQ(hits[0].wall, 0u);
+        EXPECT_FALSE(hits[0].bumper);
+        EXPECT_LT(b.vel.x, 0.0);
+        EXPECT_EQ(b.r, 0.5);
+        Ball p = bumper.balls[0];
+        hits.clear();
+        EXPECT_EQ(step_ball(k, p, m, Obstacles{bumper.walls, bumper.bumpers, nullptr}, hits, scratch), FrameStatus::ok);
+        ASSERT_EQ(hits.size(), 1u);
+        EXPECT_TRUE(hits[0].bumper);
+        EXPECT_LT(p.vel.x, 0.0);
     }
+}
+
+/// A kernel of point balls only, as the peers and plug-ins are: robust's point functions, no step_disc.
+struct PointsOnlyKernel {
+    static Side classify(Vec2 p, const Wall& w) { return ricochet::classify(KernelId::robust, p, w); }
+    static bool point_in_circle(Vec2 p, const Circle& c) { return ricochet::point_in_circle(KernelId::robust, p, c); }
+    static bool circles_overlap(const Circle& a, const Circle& b) { return ricochet::circles_overlap(KernelId::robust, a, b); }
+    static bool point_in_rect(Vec2 p, const Rect& r) { return ricochet::point_in_rect(KernelId::robust, p, r); }
+    static bool rects_overlap(const Rect& a, const Rect& b) { return ricochet::rects_overlap(KernelId::robust, a, b); }
+    static Sweep sweep(Vec2 bs, Vec2 v, const Wall& w) { return ricochet::sweep(KernelId::robust, bs, v, w); }
+    static Vec2 reflect(Vec2 v, const Wall& w) { return ricochet::reflect(KernelId::robust, v, w); }
+    static FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> walls,
+                                 std::vector<HitEvent>& hits, StepScratch& scratch, const WallIndex* index) {
+        return ricochet::step_ball(KernelId::robust, ball, memory, walls, hits, scratch, index);
+    }
+};
+
+// A kernel without a disc stepper (the peers, plug-ins: KernelOps::step_disc unset) refuses them with a message
+// that says which, before stepping anything.
+TEST(DiscFormat, AKernelThatCannotStepThemRefusesTheScene) {
+    KernelOps ops = make_kernel_ops<PointsOnlyKernel>("test-points-only");
+    ASSERT_EQ(ops.step_disc, nullptr);
+    ASSERT_FALSE(ops.steps_bumpers);
+    static std::optional<KernelId> id = register_kernel(ops);
+    ASSERT_TRUE(id.has_value());
+    const KernelId k = *id;
+    const Scene disc = parse_ok("ricochet 1\nframes 1\nball 0 0 1 1\nball 0 0 1 1 0.5\n");
+    const Scene bumper = parse_ok("ricochet 1\nframes 1\nball 0 0 1 1\nbumper 3 3 1\n");
+    EXPECT_EQ(unsupported_scene(k, disc.balls, 0), "kernel 'test-points-only' steps point balls only: ball 1 has radius 0.5");
+    EXPECT_EQ(unsupported_scene(k, bumper.balls, 1),
+              "kernel 'test-points-only' does not step bumpers: the scene has 1 (bumper 0 first)");
+    EXPECT_THROW(World(disc, k), UnsupportedScene);
+    EXPECT_THROW(World(bumper, k), UnsupportedScene);
+    EXPECT_THROW(run_checked(disc, k, 1, {}), UnsupportedScene);
+    EXPECT_EQ(refusal(disc, k, {}), unsupported_scene(k, disc.balls, 0));
+    Ball b = disc.balls[1];
+    BallMemory m;
+    std::vector<HitEvent> hits;
+    StepScratch scratch;
+    EXPECT_THROW(step_ball(k, b, m, Obstacles{disc.walls, {}, nullptr}, hits, scratch), UnsupportedScene);
+    EXPECT_TRUE(hits.empty());
 }
 
 TEST(DiscFormat, RunCheckedRefusesAnUndefinedCheckInsteadOfSkippingIt) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "arith.hpp"
+#include "contact_root.hpp"
 #include "ricochet/line.hpp"
 #include "ricochet/predicates.hpp"
 
@@ -404,9 +405,23 @@ double contact_time(const Leg& leg, const Obstacle& o, const Contact& c) {
     return std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
 }
 
-namespace {
+TimeRoot contact_root(const Leg& leg, const Obstacle& o, const Contact& c) {
+    Scale scale;
+    scale.add(leg.q);
+    scale.add(leg.b);
+    scale.add(leg.R);
+    if (o.wall != nullptr) {
+        scale.add(o.wall->p0);
+        scale.add(o.wall->p1);
+    } else {
+        scale.add(o.c);
+        scale.add(o.r);
+    }
+    const ZFrame f(leg.q, scale);
+    const Root<Z> r = root(Setup<ZFrame>(f, leg, o), c);
+    return {r.a, r.b, r.c, r.d};
+}
 
-/// Which part of wall w is nearest to p: the face, or a cap (exactly, on (p − P_k)·e).
 Part nearest_part(Vec2 p, const Wall& w) {
     if (w.p0 == w.p1) return Part::cap0;
     const auto u = [&](Vec2 end) {
@@ -418,6 +433,8 @@ Part nearest_part(Vec2 p, const Wall& w) {
     if (u(w.p1) >= 0) return Part::cap1;
     return Part::face;
 }
+
+namespace {
 
 /// disc::sign(v·(p − c)), exactly.
 int dot_sign(Vec2 v, Vec2 p, Vec2 c) {

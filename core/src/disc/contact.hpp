@@ -70,6 +70,9 @@ int compare(const Leg& leg, const Obstacle& a, const Contact& ca, const Obstacle
 /// The contact's leg fraction t, rounded, in [0, 1].
 double contact_time(const Leg& leg, const Obstacle& o, const Contact& c);
 
+/// The part of wall w nearest to p, exactly: the face, or the cap at the nearer end ((p − P_k)·e's sign).
+Part nearest_part(Vec2 p, const Wall& w);
+
 /// sign(v·N) for the outward normal N of obstacle o at p (N = ±n on a face, p − P_k at a cap, p − C at a
 /// circle, the part nearest to p): < 0 if moving along v takes the centre closer.
 int normal_sign(Vec2 p, Vec2 v, const Obstacle& o);

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "contact.hpp"
+#include "frame.hpp"
 #include "kernel_impl.hpp"
 #include "ricochet/step_trace.hpp"
 
@@ -78,10 +79,23 @@ Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
     return piece_allowed(q, half, R, obstacles) ? half : q;
 }
 
+/// Robust's constructions: t_i rounded from doubles (contact_time), B_i = q + t_i·(b − q) in doubles, the bounce
+/// about normal_at's rounded normal with reflect_about.
+disc::Constructions::Point robust_point(const disc::Leg& leg, const disc::Obstacle& o, const disc::Contact& c) {
+    const double t = disc::contact_time(leg, o, c);
+    return {t, t == 0.0 ? leg.q : t == 1.0 ? leg.b : leg.q + t * (leg.b - leg.q)};
+}
+Vec2 robust_reflect(Vec2 v, Vec2 x, const disc::Obstacle& o) { return reflect_about(v, disc::normal_at(x, o)); }
+
 }  // namespace
 
 FrameStatus RobustKernel::step_disc(Ball& ball, BallMemory& /*memory*/, const Obstacles& obstacles,
                                     std::vector<HitEvent>& hits, StepScratch& scratch) {
+    return disc::step_frame(ball, obstacles, hits, scratch, {&robust_point, &robust_reflect});
+}
+
+FrameStatus disc::step_frame(Ball& ball, const Obstacles& obstacles, std::vector<HitEvent>& hits,
+                             StepScratch& scratch, const Constructions& make) {
     // Degenerate: a ball at rest does no sweep.
     if (ball.vel == Vec2{}) return FrameStatus::ok;
     const double R = ball.r;
@@ -131,21 +145,23 @@ FrameStatus RobustKernel::step_disc(Ball& ball, BallMemory& /*memory*/, const Ob
             break;
         }
         const Met& first = met.front();
-        const double t = disc::contact_time(leg, first.obstacle, first.contact);
+        const disc::Constructions::Point at =
+            first.contact.at_start ? disc::Constructions::Point{0.0, q} : make.contact_point(leg, first.obstacle, first.contact);
+        const double t = at.t;
         if (traced != nullptr && !first.bumper) {
             traced->hit = first.index;
             traced->hit_t = t;
         }
-        const Vec2 x = walk_back(q, t == 0.0 ? q : t == 1.0 ? b : q + t * (b - q), R, obstacles);
+        const Vec2 x = walk_back(q, at.x, R, obstacles);
         now += t * rest;
         hits.push_back({first.index, now, x, first.bumper});
         // Bounce about the first contact's normal at x, then about each other one met now that v′ goes into; if
         // one is still gone into, straight back.
-        Vec2 w = reflect_about(v, disc::normal_at(x, first.obstacle));
+        Vec2 w = make.reflect(v, x, first.obstacle);
         int reflections = 1;
         for (std::size_t k = 1; k < met.size(); ++k)
             if (disc::normal_sign(x, w, met[k].obstacle) < 0) {
-                w = reflect_about(w, disc::normal_at(x, met[k].obstacle));
+                w = make.reflect(w, x, met[k].obstacle);
                 ++reflections;
             }
         if (scratch.trace != nullptr) scratch.trace->reflections += reflections;
