@@ -4,7 +4,7 @@
 # ClusterFuzzLite/OSS-Fuzz run it in their builder image; fuzz/clusterfuzzlite_test.sh runs it locally.
 SRC_DIR="${RICOCHET_SRC:-$SRC/ricochet}"
 BUILD="${WORK:-/tmp}/ricochet-fuzz-build"
-TARGETS="parser static sweep scene"
+TARGETS="parser static sweep scene disc"
 
 # -ffp-contract=off comes from the project; the engine's sanitizer flags arrive in CFLAGS/CXXFLAGS.
 cmake -S "$SRC_DIR" -B "$BUILD" -G Ninja \

@@ -39,7 +39,8 @@ case "$case" in
                    offers 'words plugin:' fuzz --kernel p
                    offers 'words lecture-float lecture-double' run --kernel = l
                    offers 'words --kernel=robust' run --kernel=r
-                   offers 'words static sweep scene' fuzz --target s ;;
+                   offers 'words static sweep scene' fuzz --target s
+                   offers 'words disc' fuzz --target d ;;
   validator-values) offers 'words failure all' render --view ""
                    offers 'words bash zsh' completion ""
                    offers 'words record' help rec ;;

@@ -39,7 +39,7 @@ constexpr double k_max_time_s = 7 * 24 * 3600;
 void register_fuzz(CLI::App& app) {
     auto opt = std::make_shared<CampaignOptions>();
     CLI::App* sub = app.add_subcommand("fuzz", "run a libFuzzer campaign; failures become scene logs");
-    sub->add_option("--target", opt->targets, "target(s): parser, static, sweep, scene (default: all built)");
+    sub->add_option("--target", opt->targets, "target(s): parser, static, sweep, scene, disc (default: all built; disc only for a kernel that steps discs)");
     sub->add_option("--kernel", opt->kernel, "kernel under test: a kernel's name, or plugin:PATH (ricochet/plugin.h; default robust)");
     sub->add_option("--time", opt->time, "seconds to fuzz (default 60; 1 to 604800, a week)")
         ->check(number_in(1.0, k_max_time_s, "a number of seconds"));

@@ -21,7 +21,7 @@ using Clock = std::chrono::steady_clock;
 
 /// One target's campaign: its binary and folders, its workers, what their output says, what it found.
 struct TargetRun {
-    std::string target;                          ///< parser, static, sweep or scene
+    std::string target;                          ///< parser, static, sweep, scene or disc
     std::filesystem::path bin;                   ///< the fuzz_TARGET binary
     std::filesystem::path dir;                   ///< CACHE/TARGET/KERNEL: shared by the campaigns on this cache
     std::filesystem::path corpus;                ///< dir/corpus: the working corpus (shared)

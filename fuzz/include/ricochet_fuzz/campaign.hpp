@@ -11,7 +11,7 @@
 namespace ricochet::fuzz {
 
 /// Every target fuzz/ defines, in the order the summary lists them.
-inline constexpr std::array<std::string_view, 4> k_campaign_targets = {"parser", "static", "sweep", "scene"};
+inline constexpr std::array<std::string_view, 5> k_campaign_targets = {"parser", "static", "sweep", "scene", "disc"};
 
 /// What a campaign runs and where it keeps things; an empty folder takes its default.
 struct CampaignOptions {
