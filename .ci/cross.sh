@@ -170,9 +170,10 @@ capture_harness() {
         name=fuzz__${t}__${k}__${input##*/}
         saved=$dir/saved/$name.scene
         verdict=passed
-        # In a subshell whose own stderr is dropped: a failing input aborts the target, and bash would say so.
+        # In a subshell whose own stderr is dropped (the `exit` keeps bash from exec'ing the target in its place): a
+        # failing input aborts the target, and bash would say so on the script's stderr.
         ( RICOCHET_KERNEL=$k RICOCHET_FUZZ_SCENE_OUT=$saved RICOCHET_FUZZ_SHA1=${input##*/} \
-            "$@" "$build/fuzz/fuzz_$t$ext" "$input" >/dev/null 2>"$dir/saved/$name.err" </dev/null ) 2>/dev/null ||
+            "$@" "$build/fuzz/fuzz_$t$ext" "$input" >/dev/null 2>"$dir/saved/$name.err" </dev/null; exit $? ) 2>/dev/null ||
           verdict=failed
         { echo "# $verdict"; grep -a '^==ricochet-fuzz== FAILURE' "$dir/saved/$name.err"
           [ -f "$saved" ] && cat "$saved"; } >"$dir/run/$name"

@@ -1,7 +1,6 @@
 #include "fuzz_common.hpp"
 
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +8,7 @@
 
 #include <fmt/core.h>
 
+#include "ricochet/bits.hpp"
 #include "ricochet/checks.hpp"
 #include "ricochet/failure_log.hpp"
 #include "ricochet/kernel_spec.hpp"
@@ -78,7 +78,7 @@ double ByteReader::number() {
         }
         case 6: {
             // Any double; out of range folds back into it keeping the mantissa.
-            const double x = std::bit_cast<double>(u64());
+            const double x = double_of_bits(u64());
             if (in_range(x)) return x;
             if (!std::isfinite(x)) return 0.0;
             int e = 0;

@@ -19,6 +19,12 @@ inline std::uint64_t bits_of(double x) {
     std::memcpy(&u, &x, sizeof u);
     return u;
 }
+/// The double whose IEEE-754 bit pattern is u: std::bit_cast<double>(u), by memcpy for the same reason.
+inline double double_of_bits(std::uint64_t u) {
+    double x = 0.0;
+    std::memcpy(&x, &u, sizeof x);
+    return x;
+}
 /// True if a and b have the same IEEE-754 bit pattern.
 inline bool same_bits(double a, double b) { return bits_of(a) == bits_of(b); }
 /// Both components the same bits.
