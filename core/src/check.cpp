@@ -23,6 +23,7 @@ std::string_view check_name(Check c) {
         case Check::accuracy: return "accuracy";
         case Check::event_order: return "event-order";
         case Check::penetration: return "penetration";
+        case Check::ghost_bounce: return "ghost-bounce";
     }
     return "?";
 }
@@ -38,7 +39,8 @@ bool defined_for_discs(Check c) {
         case Check::no_tunnel:
         case Check::speed:
         case Check::no_escape:
-        case Check::penetration: return true;
+        case Check::penetration:
+        case Check::ghost_bounce: return true;
         // Written for points among walls: not yet given a meaning for discs and bumpers.
         case Check::symmetry:
         case Check::boundary:

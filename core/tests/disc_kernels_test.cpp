@@ -27,7 +27,7 @@ namespace ricochet {
 namespace {
 
 const Check k_disc_checks[] = {Check::no_tunnel, Check::penetration, Check::speed, Check::no_escape,
-                               Check::event_order, Check::deterministic};
+                               Check::event_order, Check::deterministic, Check::ghost_bounce};
 
 /// The first failure of scene under kernel k with every disc check, as "CHECK F", or "" if none.
 std::string first_failure(const Scene& scene, KernelId k) {

@@ -21,7 +21,7 @@ namespace ricochet {
 namespace {
 
 const Check k_disc_checks[] = {Check::no_tunnel, Check::penetration, Check::speed, Check::no_escape,
-                               Check::event_order, Check::deterministic};
+                               Check::event_order, Check::deterministic, Check::ghost_bounce};
 
 /// The run of scene under robust with every check defined for discs; the failure, if any, as text.
 std::string checked(const Scene& scene) {
@@ -351,6 +351,55 @@ TEST(DiscRobust, PenetrationCatchesAPieceTooClose) {
     point.bumpers.clear();
     point.balls = {{{5, 3}, {}, 0}};
     EXPECT_EQ(penetration_verdict(point, {{state(1, {5, -3})}}), "");
+}
+
+
+// The ghost-bounce check on frames written by hand: what makes a first hit a ghost, and what does not.
+std::string ghost_verdict(const Scene& s, std::vector<Ball> before, const std::vector<Event>& frame1) {
+    auto check = checks::make_ghost_bounce(s, KernelId::robust, {});
+    if (auto r = check->frame({0, {}, {}, {}, {}})) return r->message;
+    if (auto r = check->frame({1, frame1, before, {}, {}})) return r->message;
+    return "";
+}
+
+Event hit_wall(std::uint32_t w, Vec2 p) { return {Event::Kind::hit, 1, 0, Event::Shape::none, w, p, {}}; }
+
+TEST(DiscRobust, GhostBounceCatchesAHitOnlyATangentCouldMake) {
+    Scene s;
+    // A 3-4-5 chain through (0, 10): the disc of radius 5 moves along (0.75, 1), exactly 5 from the line.
+    s.walls = {{{0, 10}, {3, 14}}, {{3, 14}, {6, 18}}};
+    s.balls = {{{4, 7}, {0.75, 1}, 5}};
+    const std::vector<Ball> sliding = s.balls;
+    EXPECT_NE(ghost_verdict(s, sliding, {hit_wall(1, {7, 11}), state(1, {7, 11})}), "");
+    EXPECT_NE(ghost_verdict(s, sliding, {hit_wall(0, {7, 11}), state(1, {7, 11})}), "");
+    // One ulp closer than R to the line: it can enter a cap, a real hit.
+    std::vector<Ball> closer = sliding;
+    closer[0].pos.x = std::nextafter(4.0, 0.0);
+    EXPECT_EQ(ghost_verdict(s, closer, {hit_wall(1, {7, 11})}), "");
+    // Not parallel by one ulp: not judged (it may cross the line at a grazing angle).
+    std::vector<Ball> askew = sliding;
+    askew[0].vel.y = std::nextafter(1.0, 2.0);
+    EXPECT_EQ(ghost_verdict(s, askew, {hit_wall(1, {7, 11})}), "");
+    // Only the first hit or bump of a frame is judged: its velocity is the one before the frame.
+    Scene with_bumper = s;
+    with_bumper.bumpers = {{{20, 20}, 1}};
+    const Event bump{Event::Kind::bump, 1, 0, Event::Shape::none, 0, {7, 11}, {}};
+    EXPECT_EQ(ghost_verdict(with_bumper, sliding, {bump, hit_wall(1, {7, 11})}), "");
+    // A point ball moving along a wall's own line (R = 0, on the line): a hit there is a ghost too.
+    Scene point;
+    point.walls = {{{0, 0}, {10, 0}}};
+    point.balls = {{{-5, 0}, {1, 0}, 0}};
+    EXPECT_NE(ghost_verdict(point, point.balls, {hit_wall(0, {0, 0})}), "");
+    // A ball that does not move, or a wall of no length: not judged.
+    std::vector<Ball> resting = point.balls;
+    resting[0].vel = {0, 0};
+    EXPECT_EQ(ghost_verdict(point, resting, {hit_wall(0, {0, 0})}), "");
+    Scene dot = point;
+    dot.walls = {{{3, 0}, {3, 0}}};
+    EXPECT_EQ(ghost_verdict(dot, point.balls, {hit_wall(0, {3, 0})}), "");
+    // Robust on the sliding scene: no hit, and the whole run holds every check.
+    s.frames = 4;
+    EXPECT_EQ(checked(s), "");
 }
 
 }  // namespace

@@ -112,12 +112,18 @@
 //                  segment, the bumper's centre. Decided exactly on the printed doubles (truth::clear_of_wall,
 //                  truth::clear_of_circle). A ball that starts closer is held to an obstacle only from its first
 //                  printed point that is clear of it. Point balls among walls alone (ρ = 0) always hold.
+//   ghost-bounce   No hit where only a tangent is possible (a disc sliding along a straight chain at its radius does
+//                  not bounce off a joint): a ball's first hit or bump in a frame, if it is a hit off wall W (of
+//                  non-zero length) while the ball's state before the frame moves parallel to W (n·v = 0, v ≠ 0) at
+//                  least R from W's line (((B − P0) × e)² ≥ R²·(e·e)), fails: the disc can at most touch W, and a
+//                  tangent is no hit. Exactly on the printed doubles (truth::direction_side, truth::clear_of_line).
+//                  Later hits in a frame are not judged: the velocity a ball leaves a hit with is not printed.
 //
 // Discs and bumpers: in a scene with a disc or a bumper only the checks defined_for_discs (check.hpp) names are
 // defined: no-tunnel, speed, no-escape (each as written above, read for the disc's centre: its printed path, its
 // velocity; m counts the bounces off bumpers and the corner reflections too), deterministic, broad-phase,
-// round-trip, event-order (a bump names a bumper of the scene and no shape) and penetration. run_checked refuses
-// any other (UnsupportedScene), the reader rejects its `check` line.
+// round-trip, event-order (a bump names a bumper of the scene and no shape), penetration and ghost-bounce.
+// run_checked refuses any other (UnsupportedScene), the reader rejects its `check` line.
 //
 // speed, oracle and accuracy read the frame's StepTrace: each ball is stepped again from its state and memory before
 // the frame with a trace (the same wall index); that step must end in the run's state bit for bit, else

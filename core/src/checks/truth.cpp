@@ -156,6 +156,13 @@ bool clear_of_circle(Vec2 a, Vec2 b, Vec2 c, double R, double r) {
     return distance2_to_segment(c, a, b) >= rho * rho;
 }
 
+bool clear_of_line(Vec2 p, const Wall& w, double R) {
+    // The distance from p to the line is |(p − P0) × e| / |e|: compare its square with R², times e·e.
+    const Rational ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
+    const Rational cross = (Q(p.x) - Q(w.p0.x)) * ey - (Q(p.y) - Q(w.p0.y)) * ex;
+    return cross * cross >= Q(R) * Q(R) * (ex * ex + ey * ey);
+}
+
 namespace {
 
 /// A leg a → b and wall w, exactly: whether the crossing is well-conditioned, and then its leg fraction s,
