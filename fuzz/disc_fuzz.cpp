@@ -163,7 +163,7 @@ bool kernel_steps_bumpers() {
         const KernelOps& ops = kernel_ops(kernel_under_test());
         if (ops.step_disc == nullptr) {
             fmt::print(stderr, "fuzz_disc: error: kernel '{}' steps point balls only: the disc target needs a kernel that "
-                               "steps discs (robust)\n", ops.name);
+                               "steps discs (lecture-float, lecture-double, robust, exact)\n", ops.name);
             std::exit(2);
         }
         return ops.steps_bumpers;

@@ -387,18 +387,6 @@ case "$case" in
                      cd "$proj"; run 0 fuzz --target disc --runs 20 --seed 1 --jobs 1 --cache-dir "$dir/cache"
                      first_line out "ricochet fuzz: kernel robust, 20 runs per worker, 1 target(s), 1 worker(s)"
                      grep -q '^disc ' "$dir/out" || fail "the summary has no disc row" ;;
-  fuzz-disc-point-kernel) # Named with a kernel that steps point balls only: refused before anything starts.
-                     mkproj; need_fuzzer disc
-                     cd "$proj"; run 2 fuzz --target disc --kernel lecture-float --runs 20 --cache-dir "$dir/cache"
-                     first_line err "ricochet fuzz: error: target disc needs a kernel that steps discs (robust); kernel 'lecture-float' steps point balls only"
-                     [ ! -d "$dir/cache/disc" ] || fail "the refused campaign made a corpus folder" ;;
-  fuzz-disc-left-out) # Every target by default: disc is left out for such a kernel, saying so; the others run.
-                     mkproj; need_fuzzer disc
-                     cd "$proj"; "$ricochet" fuzz --kernel lecture-float --runs 1 --seed 1 --jobs 1 --cache-dir "$dir/cache" >"$dir/out" 2>"$dir/err"
-                     rc=$?; [ "$rc" = 0 ] || [ "$rc" = 1 ] || fail "exit $rc, expected 0 or 1"
-                     has err "ricochet fuzz: note: leaving out target disc: kernel 'lecture-float' steps point balls only"
-                     grep -q '^scene ' "$dir/out" || fail "the scene target did not run"
-                     ! grep -q '^disc ' "$dir/out" || fail "the disc target ran" ;;
   fuzz-jobs)         # --jobs: the workers in all, here two for one target.
                      mkproj; need_fuzzer scene
                      cd "$proj"; run 0 fuzz --target scene --runs 20 --seed 1 --jobs 2 --cache-dir "$dir/cache"

@@ -187,6 +187,19 @@ case $case in
   fuzz-bad-plugin) run 2 fuzz --kernel "plugin:$plugins/test_plugin_no_entry.so" --target sweep --runs 10 --seed 1 \
                     --cache-dir "$dir/cache" --replay-dir "$dir/replays"
                   first_line err "ricochet fuzz: error: plug-in $plugins/test_plugin_no_entry.so: no symbol ricochet_plugin_entry (a plug-in defines it: see ricochet/plugin.h)" ;;
+  fuzz-disc-point-kernel) # The disc target named with a kernel that steps point balls only: refused before anything starts.
+                  need_fuzzer disc
+                  run 2 fuzz --target disc --kernel "plugin:$good" --runs 20 --cache-dir "$dir/cache" --replay-dir "$dir/replays"
+                  first_line err "ricochet fuzz: error: target disc needs a kernel that steps discs (lecture-float, lecture-double, robust, exact); kernel 'test-good' steps point balls only"
+                  [ ! -d "$dir/cache/disc" ] || fail "the refused campaign made a corpus folder" ;;
+  fuzz-disc-left-out) # Every target by default: disc is left out for such a kernel, saying so; the others run.
+                  need_fuzzer disc
+                  timeout 120 "$ricochet" fuzz --kernel "plugin:$good" --runs 1 --seed 1 --jobs 1 --cache-dir "$dir/cache" \
+                    --replay-dir "$dir/replays" >"$dir/out" 2>"$dir/err"
+                  rc=$?; [ "$rc" = 0 ] || [ "$rc" = 1 ] || fail "exit $rc, expected 0 or 1"
+                  has err "ricochet fuzz: note: leaving out target disc: kernel 'test-good' steps point balls only"
+                  grep -q '^scene ' "$dir/out" || fail "the scene target did not run"
+                  ! grep -q '^disc ' "$dir/out" || fail "the disc target ran" ;;
   fuzz-crash)     # libFuzzer keeps the input; the campaign names the plug-in and turns the input into a scene log.
                   # Full-length inputs from the start: the crash rule needs a ball moving left, which libFuzzer's short
                   # first inputs never decode to; so set, four runs of fuzz_sweep crashed at input 35 each, and 2000

@@ -87,8 +87,8 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
                 targets.emplace_back(t);
             }
     } else if (!steps_discs && std::find(targets.begin(), targets.end(), "disc") != targets.end()) {
-        fmt::print(stderr, "ricochet fuzz: error: target disc needs a kernel that steps discs (robust); kernel '{}' steps "
-                           "point balls only\n", plan.kernel_name);
+        fmt::print(stderr, "ricochet fuzz: error: target disc needs a kernel that steps discs (lecture-float, lecture-double, "
+                           "robust, exact); kernel '{}' steps point balls only\n", plan.kernel_name);
         return std::nullopt;
     }
     const std::string how = fmt::format(
