@@ -73,6 +73,13 @@ std::vector<Scored> scored_workloads() {
     return out;
 }
 
+TEST(DiscWorkloads, NamesInOrder) {
+    const std::vector<DiscWorkload> w = disc_workloads(2, 1);
+    const auto names = disc_workload_names();
+    ASSERT_EQ(w.size(), names.size());
+    for (std::size_t i = 0; i < w.size(); ++i) EXPECT_EQ(w[i].name, names[i]);
+}
+
 TEST(DiscGate, RobustAndExactAreClean) {
     for (const Scored& s : scored_workloads()) {
         const DiscScore r = score_discs(s.wl.queries, s.robust, s.exact, s.hits, s.wl.joint);

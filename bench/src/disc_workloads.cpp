@@ -68,8 +68,8 @@ DiscQuery one_wall(Wall w, double R) {
 }
 
 template <class Make>
-DiscWorkload generate(std::string name, std::size_t n, bool degenerate, Make&& make) {
-    DiscWorkload out{std::move(name), {}, false, degenerate};
+DiscWorkload generate(std::string name, std::size_t n, Make&& make) {
+    DiscWorkload out{std::move(name), {}, false};
     out.queries.reserve(n);
     DiscQuery q;
     while (out.queries.size() < n)
@@ -77,13 +77,17 @@ DiscWorkload generate(std::string name, std::size_t n, bool degenerate, Make&& m
     return out;
 }
 
+constexpr std::string_view k_names[] = {"disc-uniform", "disc-grazing", "disc-cap", "disc-joint", "bumper"};
+
 }  // namespace
+
+std::span<const std::string_view> disc_workload_names() { return k_names; }
 
 std::vector<DiscWorkload> disc_workloads(std::size_t n, std::uint64_t seed) {
     std::vector<DiscWorkload> out;
     Rng r(seed);
     // Uniform: a wall, Bs and Be uniform in [−1, 1]², R uniform in [0.01, 0.25].
-    out.push_back(generate("disc-uniform", n, false, [&](DiscQuery& q) {
+    out.push_back(generate(std::string(k_names[0]), n, [&](DiscQuery& q) {
         const Wall w = random_wall(r, {}, 1.0);
         const double R = r.uniform(0.01, 0.25);
         return make_disc(in_box(r, 1.0), in_box(r, 1.0), one_wall(w, R), q);
@@ -91,7 +95,7 @@ std::vector<DiscWorkload> disc_workloads(std::size_t n, std::uint64_t seed) {
     // Grazing a face: the centre's path parallel to the wall at exactly R from its line (a Pythagorean direction on
     // the 2^−8 grid: exactly tangent, no hit), the same with Bs and Be nudged by up to 2 ulps (just in or just
     // clear), and a random wall with Bs, Be rounded from R·n̂ off it (within ulps of tangent); a third each.
-    out.push_back(generate("disc-grazing", n, true, [&](DiscQuery& q) {
+    out.push_back(generate(std::string(k_names[1]), n, [&](DiscQuery& q) {
         const int kind = r.integer(0, 2);
         if (kind == 2) {
             const Wall w = random_wall(r, {}, 1.0);
@@ -113,7 +117,7 @@ std::vector<DiscWorkload> disc_workloads(std::size_t n, std::uint64_t seed) {
     // At an end point's cap: the path tangent to the circle of radius R around P_k at a point beyond the wall's end
     // (the wall runs away from the tangent point, so nothing else of the capsule is within R of the path): exactly
     // tangent, or Bs and Be nudged by up to 2 ulps; half each; the cap at P0 or at P1.
-    out.push_back(generate("disc-cap", n, true, [&](DiscQuery& q) {
+    out.push_back(generate(std::string(k_names[2]), n, [&](DiscQuery& q) {
         const Dir m = random_dir(r);
         Dir e = random_dir(r);
         while (e.a * m.a + e.b * m.b <= 0) e = random_dir(r);
@@ -131,7 +135,7 @@ std::vector<DiscWorkload> disc_workloads(std::size_t n, std::uint64_t seed) {
     // sliding past the joint at exactly R from their line, or with R one to three ulps smaller (clear by ulps).
     // The exact answer is always no hit: any hit is a ghost bounce.
     {
-        DiscWorkload joint = generate("disc-joint", n, true, [&](DiscQuery& q) {
+        DiscWorkload joint = generate(std::string(k_names[3]), n, [&](DiscQuery& q) {
             const Dir d = random_dir(r);
             const int l1 = r.integer(4, 24), l2 = r.integer(4, 24), k = r.integer(1, 3);
             const Vec2 o = grid_point(r, 256);
@@ -158,7 +162,7 @@ std::vector<DiscWorkload> disc_workloads(std::size_t n, std::uint64_t seed) {
     // A bumper: the path tangent to the circle of radius R + r around C (exactly, on the grid), the same nudged by
     // up to 2 ulps, and head-on or off-centre legs through the closest approach (lateral offsets on the grid,
     // tangent when the offset is R + r); a third each.
-    out.push_back(generate("bumper", n, true, [&](DiscQuery& q) {
+    out.push_back(generate(std::string(k_names[4]), n, [&](DiscQuery& q) {
         const Dir d = random_dir(r);
         const int k = r.integer(1, 3);
         const Vec2 c = grid_point(r, 256);

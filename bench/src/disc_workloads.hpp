@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ricochet/kernel.hpp"
@@ -36,8 +37,10 @@ struct DiscWorkload {
     std::string name;
     std::vector<DiscQuery> queries;
     bool joint = false;
-    bool degenerate = true;  ///< false for disc-uniform (the ≤ 2× target), true for the others (≤ 4×)
 };
+
+/// The names of the disc workloads, in disc_workloads' order (without generating them).
+std::span<const std::string_view> disc_workload_names();
 
 /// The disc workloads, n queries each, from seed: disc-uniform, disc-grazing, disc-cap, disc-joint, bumper.
 std::vector<DiscWorkload> disc_workloads(std::size_t n, std::uint64_t seed);
