@@ -8,7 +8,10 @@
 // WORKLOAD is a static test (point-circle, circle-circle, point-rect, rect-rect) or a sweep workload (uniform,
 // far, end-on-wall, at-endpoint, grazing, tiny-v, huge-v) of src/workloads.cpp, N queries of it from SEED; or a
 // closed box (box, box-turned, box-far-1e6, box-far-1e12: N ball-frames, 8 balls of `ricochet bench --quick`'s
-// box stepped N/8 frames each, the loop in run_frames alone:  --toggle-collect='*run_frames*').
+// box stepped N/8 frames each, the loop in run_frames alone:  --toggle-collect='*run_frames*'); or a disc workload
+// (disc-uniform, disc-grazing, disc-cap, disc-joint, bumper) of src/disc_workloads.cpp: one frame of step_ball per
+// query, as `ricochet bench` times it, the loop in run_queries; "hit" counts the frames with a contact. The fallback
+// counts are the point predicates' (predicates.hpp): the disc code keeps none, so they read 0 for a disc workload.
 // Exit status 2 for an unknown workload or kernel, or a count or seed that is not a number.
 #include <algorithm>
 #include <cstdint>
@@ -20,6 +23,7 @@
 
 #include "ricochet/kernel.hpp"
 #include "ricochet/predicates.hpp"
+#include "disc_workloads.hpp"
 #include "workloads.hpp"
 
 using namespace ricochet;
@@ -46,6 +50,21 @@ namespace {
     long hits = 0;
     for (const SweepQuery& q : w.queries) hits += sweep(k, q.bs, q.v, q.wall).hit();
     return hits;
+}
+
+/// The disc queries, one frame of step_ball each through kernel k: how many hit something.
+[[gnu::noinline]] long run_queries(const DiscWorkload& w, KernelId k) {
+    std::vector<HitEvent> hits;
+    StepScratch scratch;
+    long n = 0;
+    for (const DiscQuery& q : w.queries) {
+        Ball b{q.bs, q.v, q.R};
+        BallMemory memory;
+        hits.clear();
+        step_ball(k, b, memory, Obstacles{q.wall_span(), q.bumper_span(), nullptr}, hits, scratch);
+        n += !hits.empty();
+    }
+    return n;
 }
 
 /// The closed box's balls, stepped by kernel k for frames frames each: how many bounces.
@@ -98,6 +117,11 @@ int main(int argc, char** argv) {
         if (w.name == name) answers = run_queries(w, *kernel);
     if (!answers)
         for (const SweepWorkload& w : sweep_workloads(*n, *seed))
+            if (w.name == name) answers = run_queries(w, *kernel);
+    // Disc workloads cost more to make (each start is checked exactly): made only when one is named.
+    const auto disc_names = disc_workload_names();
+    if (!answers && std::find(disc_names.begin(), disc_names.end(), name) != disc_names.end())
+        for (const DiscWorkload& w : disc_workloads(*n, *seed))
             if (w.name == name) answers = run_queries(w, *kernel);
     for (const BoxWorkload& box : box_workloads())
         if (!answers && box.name == name) {

@@ -16,6 +16,8 @@
 
 #include <fmt/format.h>
 
+#include "disc_score.hpp"
+#include "disc_workloads.hpp"
 #include "methods.hpp"
 #include "ricochet_bench/result_file.hpp"
 #include "ricochet/batch.hpp"
@@ -82,6 +84,9 @@ struct Row {
     long tunnels = -1;
     long escaped = -1;  // balls that ended the run outside the box
     double drift = NAN;
+    // Disc rows (disc_score.hpp): wrong obstacle or part, ghost bounces, printed points inside and how deep.
+    long part = -1, ghosts = -1, inside = -1;
+    double depth = NAN, depth_rel = NAN;
 };
 
 std::string cell(long v) { return v < 0 ? "-" : fmt::format("{}", v); }
@@ -114,6 +119,31 @@ void write_csv(const std::vector<Row>& rows, const std::string& path) {
         f.print("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.kind, r.workload, r.method, r.n, num(r.ns),
                 num(r.ratio), cnt(r.fn), cnt(r.fp), cnt(r.conv), num(r.t_ulps), num(r.t_abs), num(r.p_ulps),
                 num(r.p_abs), cnt(r.tunnels), cnt(r.escaped), num(r.drift));
+    f.close();
+}
+
+void print_disc_table(const std::vector<Row>& rows) {
+    fmt::print("{:<7} {:<13} {:<15} {:>9} {:>7} {:>6} {:>6} {:>6} {:>7} {:>7} {:>10} {:>10}\n", "kind", "workload", "method",
+               "ns/query", "x lec-d", "FN", "FP", "part", "ghosts", "inside", "depth abs", "depth /R");
+    std::string last;
+    for (const Row& r : rows) {
+        if (r.workload != last) fmt::print("{}\n", std::string(109, '-'));
+        last = r.workload;
+        fmt::print("{:<7} {:<13} {:<15} {:>9} {:>7} {:>6} {:>6} {:>6} {:>7} {:>7} {:>10} {:>10}\n", r.kind, r.workload,
+                   r.method, cell(r.ns, "{:.1f}"), cell(r.ratio, "{:.2f}"), cell(r.fn), cell(r.fp), cell(r.part),
+                   cell(r.ghosts), cell(r.inside), cell(r.depth), cell(r.depth_rel));
+    }
+}
+
+void write_disc_csv(const std::vector<Row>& rows, const std::string& path) {
+    ResultFile f(path);
+    f.print("kind,workload,method,n,ns_per_query,ratio_lecture_double,false_negatives,false_positives,wrong_part,"
+            "ghost_bounces,points_inside,max_depth_abs,max_depth_over_R\n");
+    auto num = [](double v) { return std::isnan(v) ? std::string() : fmt::format("{}", v); };
+    auto cnt = [](long v) { return v < 0 ? std::string() : fmt::format("{}", v); };
+    for (const Row& r : rows)
+        f.print("{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.kind, r.workload, r.method, r.n, num(r.ns), num(r.ratio),
+                cnt(r.fn), cnt(r.fp), cnt(r.part), cnt(r.ghosts), cnt(r.inside), num(r.depth), num(r.depth_rel));
     f.close();
 }
 
@@ -191,6 +221,38 @@ std::vector<Row> bench_sweeps(const Methods& ms, const SweepWorkload& wl, int re
         r.ns = median(ns[m]);
         r.ratio = r.ns / median(ns[ld]);
         score_sweeps(wl.queries, ans[m], ans[ex], r);
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+/// Times every method that steps discs on one disc workload (interleaved repetitions) and scores it: hit decisions
+/// against truth_hit, the part against the exact kernel's first hit.
+std::vector<Row> bench_discs(const Methods& ms, const DiscWorkload& wl, int reps) {
+    const std::size_t n = wl.queries.size();
+    std::vector<std::vector<DiscAnswer>> ans(ms.size(), std::vector<DiscAnswer>(n));
+    std::vector<std::vector<double>> ns(ms.size());
+    for (int rep = 0; rep < reps; ++rep)
+        for (std::size_t m = 0; m < ms.size(); ++m) {
+            if (!ms[m]->has_disc()) continue;
+            ms[m]->prepare_discs(wl.queries);
+            const auto t0 = Clock::now();
+            ms[m]->disc_all(wl.queries, ans[m]);
+            ns[m].push_back(seconds_since(t0) * 1e9 / static_cast<double>(n));
+            ms[m]->release_discs();
+        }
+    std::vector<bool> hits(n);
+    for (std::size_t i = 0; i < n; ++i) hits[i] = truth_hit(wl.queries[i]);
+    const std::size_t ex = find_method(ms, "exact"), ld = find_method(ms, "lecture-double");
+    std::vector<Row> rows;
+    for (std::size_t m = 0; m < ms.size(); ++m) {
+        if (!ms[m]->has_disc()) continue;
+        Row r{"disc", wl.name, ms[m]->name(), n};
+        r.ns = median(ns[m]);
+        r.ratio = r.ns / median(ns[ld]);
+        const DiscScore s = score_discs(wl.queries, ans[m], ans[ex], hits, wl.joint);
+        r.fn = s.fn, r.fp = s.fp, r.part = s.part, r.ghosts = s.ghosts, r.inside = s.inside;
+        r.depth = s.depth, r.depth_rel = s.depth_rel;
         rows.push_back(r);
     }
     return rows;
@@ -487,8 +549,9 @@ int run_bench(const Options& opt) {
     std::vector<Row> rows;
     const std::vector<SweepWorkload> sweeps = sweep_workloads(sz.queries, opt.seed);
     const std::vector<StaticWorkload> statics = static_workloads(sz.queries, opt.seed + 1);
+    const std::vector<DiscWorkload> discs = disc_workloads(sz.queries, opt.seed + 3);
     // Progress on stderr, a line as each workload starts: the table comes only at the end.
-    const std::size_t steps = sweeps.size() + statics.size() + box_workloads().size() + 1;
+    const std::size_t steps = sweeps.size() + statics.size() + discs.size() + box_workloads().size() + 1;
     std::size_t step = 0;
     auto starting = [&](std::string_view what, const std::string& name) {
         fmt::print(stderr, "bench: [{}/{}] {} {}\n", ++step, steps, what, name);
@@ -500,6 +563,11 @@ int run_bench(const Options& opt) {
     for (const StaticWorkload& wl : statics) {
         starting("static", wl.name);
         for (Row& r : bench_statics(ms, wl, sz.reps)) rows.push_back(std::move(r));
+    }
+    std::vector<Row> disc_rows;
+    for (const DiscWorkload& wl : discs) {
+        starting("disc", wl.name);
+        for (Row& r : bench_discs(ms, wl, sz.reps)) disc_rows.push_back(std::move(r));
     }
     for (const BoxWorkload& b : box_workloads()) {
         starting("closed box", b.name);
@@ -525,9 +593,18 @@ int run_bench(const Options& opt) {
                " batch rows: ns per ball-wall decision, FN = decisions differing from sweep(robust), conv = lanes left to the\n"
                " exact path, per mille;\n"
                " conv = disagreements where exact's miss rests on a convention: leaving the line, moving along it)\n");
+    fmt::print("\n");
+    print_disc_table(disc_rows);
+    fmt::print("(disc rows: one frame of step_ball per query for the kernels, the peer's own query for the peers; FN/FP =\n"
+               " hit decisions differing from the exact truth (truth.hpp); part = hits whose wall, bumper or face/cap differs\n"
+               " from exact's; ghosts = hits on a leg sliding past a joint at its radius; inside = printed contact points\n"
+               " closer than R (R + r) to an obstacle, exactly; depth = the deepest, R - distance, absolute and over R)\n");
     const std::string csv = opt.out_dir + "/bench.csv";
     write_csv(rows, csv);
     fmt::print("wrote {}\n", csv);
+    const std::string disc_csv = opt.out_dir + "/disc.csv";
+    write_disc_csv(disc_rows, disc_csv);
+    fmt::print("wrote {}\n", disc_csv);
     if (opt.chart && !opt.smoke) {
         chart(rows, ms, opt, sz.reps);
         fmt::print("wrote {}/runtime_vs_error.png\n", opt.out_dir);
@@ -538,6 +615,15 @@ int run_bench(const Options& opt) {
         if (robust && ((r.fn > 0) || (r.fp > 0) || r.tunnels > 0)) {
             fmt::print(stderr, "bench: {} is wrong on {}: FN {} FP {} tunnels {}\n", r.method, r.workload, r.fn, r.fp,
                        r.tunnels);
+            status = 1;
+        }
+    }
+    for (const Row& r : disc_rows) {
+        DiscScore s;
+        s.fn = r.fn, s.fp = r.fp, s.part = r.part, s.ghosts = r.ghosts, s.inside = r.inside;
+        if ((r.method == "robust" || r.method == "exact") && !disc_score_clean(s)) {
+            fmt::print(stderr, "bench: {} is wrong on {}: FN {} FP {} part {} ghosts {} inside {}\n", r.method, r.workload,
+                       r.fn, r.fp, r.part, r.ghosts, r.inside);
             status = 1;
         }
     }

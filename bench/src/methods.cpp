@@ -1,5 +1,7 @@
 #include "methods.hpp"
 
+#include <vector>
+
 namespace ricochet::bench {
 namespace {
 
@@ -17,6 +19,22 @@ public:
         for (std::size_t i = 0; i < qs.size(); ++i) {
             const Sweep s = sweep(k_, qs[i].bs, qs[i].v, qs[i].wall);
             out[i] = {s.hit(), true, s.t, s.point};
+        }
+    }
+    bool has_disc() const override { return true; }
+    void disc_all(std::span<const DiscQuery> qs, std::span<DiscAnswer> out) const override {
+        // What a user calls: one frame of step_ball for the disc among the query's obstacles (the kernel's
+        // step_disc: its decisions, the contact point, the bounce and the rest of the frame); the first hit is the
+        // answer.
+        std::vector<HitEvent> hits;
+        StepScratch scratch;
+        for (std::size_t i = 0; i < qs.size(); ++i) {
+            const DiscQuery& q = qs[i];
+            Ball b{q.bs, q.v, q.R};
+            BallMemory memory;
+            hits.clear();
+            step_ball(k_, b, memory, Obstacles{q.wall_span(), q.bumper_span(), nullptr}, hits, scratch);
+            out[i] = hits.empty() ? DiscAnswer{} : DiscAnswer{true, hits[0].bumper, hits[0].wall, hits[0].point};
         }
     }
     void static_all(std::span<const StaticQuery> qs, std::span<unsigned char> out) const override {

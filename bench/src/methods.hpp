@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "disc_workloads.hpp"
 #include "workloads.hpp"
 
 namespace ricochet::bench {
@@ -15,6 +16,15 @@ struct SweepAnswer {
     bool hit = false;
     bool has_t = false;  ///< false where the method gives no leg parameter (CGAL's intersection point)
     double t = 0.0;
+    Vec2 point;
+};
+
+/// One method's first contact on a disc query: the obstacle (a wall of the query, or its bumper) and the disc's
+/// centre where the method puts the contact.
+struct DiscAnswer {
+    bool hit = false;
+    bool bumper = false;
+    std::uint32_t index = 0;  ///< the wall (into DiscQuery::walls) when not bumper
     Vec2 point;
 };
 
@@ -37,6 +47,13 @@ public:
     virtual bool has_static(StaticKind) const { return true; }
     /// Answers every static query (1 = collide), all of the same kind.
     virtual void static_all(std::span<const StaticQuery> qs, std::span<unsigned char> out) const = 0;
+    /// Whether the method answers disc queries (CGAL has no moving disc).
+    virtual bool has_disc() const { return false; }
+    /// Untimed set-up for a batch of disc queries (a peer's shapes), and its release.
+    virtual void prepare_discs(std::span<const DiscQuery>) const {}
+    virtual void release_discs() const {}
+    /// Answers every disc query: the first contact of the disc's leg, or no hit.
+    virtual void disc_all(std::span<const DiscQuery>, std::span<DiscAnswer>) const {}
     /// The kernel behind it, if it is one of ricochet's (closed-box runs then use step_ball).
     virtual const KernelId* kernel() const { return nullptr; }
 };

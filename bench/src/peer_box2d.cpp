@@ -1,6 +1,13 @@
 // Box2D 2.4.1 through its own API, as a game developer calls it: b2EdgeShape::RayCast for a sweep
 // (two-sided edge, the leg as the ray p1 → p2 with maxFraction 1), b2CircleShape / b2PolygonShape
 // TestPoint, b2CollideCircles and b2TestOverlap for the static tests. Box2D works in float.
+// A disc: b2TimeOfImpact, what Box2D's own continuous collision (b2World::SolveTOI) runs for a bullet against a
+// static shape: a b2CircleShape proxy of radius R swept Bs → Be without rotation against each b2EdgeShape
+// (two-sided, with Box2D's b2_polygonRadius skin) or b2CircleShape (a bumper); a contact is state e_touching, as
+// SolveTOI reads it; the earliest t over the obstacles; the centre where the sweep puts it at t.
+#include <limits>
+
+#include <box2d/b2_time_of_impact.h>
 #include <box2d/box2d.h>
 
 #include "methods.hpp"
@@ -31,6 +38,10 @@ public:
     }
     void sweep_all(std::span<const SweepQuery> qs, std::span<SweepAnswer> out) const override {
         for (std::size_t i = 0; i < qs.size(); ++i) out[i] = sweep_one(qs[i]);
+    }
+    bool has_disc() const override { return true; }
+    void disc_all(std::span<const DiscQuery> qs, std::span<DiscAnswer> out) const override {
+        for (std::size_t i = 0; i < qs.size(); ++i) out[i] = disc_one(qs[i]);
     }
     void static_all(std::span<const StaticQuery> qs, std::span<unsigned char> out) const override {
         b2Transform xf;
@@ -78,6 +89,53 @@ public:
             }
             out[i] = r;
         }
+    }
+
+private:
+    static DiscAnswer disc_one(const DiscQuery& q) {
+        b2CircleShape disc;
+        disc.m_p.SetZero();
+        disc.m_radius = static_cast<float>(q.R);
+        b2TOIInput in;
+        in.proxyB.Set(&disc, 0);
+        // The obstacles do not move; the disc's body moves from Bs to Be.
+        in.sweepA.localCenter.SetZero();
+        in.sweepA.c0.SetZero();
+        in.sweepA.c.SetZero();
+        in.sweepA.a0 = in.sweepA.a = 0.0f;
+        in.sweepA.alpha0 = 0.0f;
+        in.sweepB = in.sweepA;
+        in.sweepB.c0 = to_b2(q.bs);
+        in.sweepB.c = to_b2(q.bs + q.v);
+        in.tMax = 1.0f;
+        DiscAnswer best;
+        float best_t = std::numeric_limits<float>::infinity();
+        const auto offer = [&](bool bumper, std::uint32_t i) {
+            b2TOIOutput o;
+            b2TimeOfImpact(&o, &in);
+            if (o.state != b2TOIOutput::e_touching || !(o.t < best_t)) return;
+            best_t = o.t;
+            best = {true, bumper, i, {}};
+        };
+        for (std::uint32_t i = 0; i < q.nwalls; ++i) {
+            b2EdgeShape edge;
+            edge.SetTwoSided(to_b2(q.walls[i].p0), to_b2(q.walls[i].p1));
+            in.proxyA.Set(&edge, 0);
+            offer(false, i);
+        }
+        if (q.has_bumper) {
+            b2CircleShape c;
+            c.m_p = to_b2(q.bumper.c);
+            c.m_radius = static_cast<float>(q.bumper.r);
+            in.proxyA.Set(&c, 0);
+            offer(true, 0);
+        }
+        if (best.hit) {
+            b2Transform xf;
+            in.sweepB.GetTransform(&xf, best_t);
+            best.point = {static_cast<double>(xf.p.x), static_cast<double>(xf.p.y)};
+        }
+        return best;
     }
 };
 

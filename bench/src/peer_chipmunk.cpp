@@ -1,6 +1,12 @@
 // Chipmunk 7 through its own API: cpShapeSegmentQuery of the leg against a radius-0 segment shape on a
 // static body, cpShapePointQuery for a point against a circle, cpShapesCollide for two circles,
 // cpBBContainsVect / cpBBIntersects for rectangles. Chipmunk works in double (cpFloat).
+// A disc: cpShapeSegmentQuery(shape, Bs, Be, R) against each radius-0 cpSegmentShape and the bumper's
+// cpCircleShape (a query with a radius sweeps a circle of that radius); the smallest alpha; the centre at
+// cpvlerp(Bs, Be, alpha).
+#include <array>
+#include <limits>
+
 #include <chipmunk/chipmunk.h>
 
 #include "methods.hpp"
@@ -15,6 +21,7 @@ public:
     ChipmunkMethod() : body_(cpBodyNewStatic()) {}
     ~ChipmunkMethod() override {
         release();
+        release_discs();
         cpBodyFree(body_);
     }
     ChipmunkMethod(const ChipmunkMethod&) = delete;
@@ -50,6 +57,49 @@ public:
         if (mine) prepare(qs);
         for (std::size_t i = 0; i < qs.size(); ++i) out[i] = query(prepared_[i], qs[i]);
         if (mine) release();
+    }
+    bool has_disc() const override { return true; }
+    void prepare_discs(std::span<const DiscQuery> qs) const override {
+        // A game's space holds the shapes before it queries them: made here, outside the timed loop.
+        release_discs();
+        discs_for_ = qs.data();
+        discs_.resize(qs.size());
+        for (std::size_t i = 0; i < qs.size(); ++i) {
+            const DiscQuery& q = qs[i];
+            discs_[i] = {};
+            for (std::size_t w = 0; w < q.nwalls; ++w)
+                discs_[i][w] = cpSegmentShapeNew(body_, to_cp(q.walls[w].p0), to_cp(q.walls[w].p1), 0.0);
+            if (q.has_bumper) discs_[i][2] = cpCircleShapeNew(body_, q.bumper.r, to_cp(q.bumper.c));
+            for (cpShape* s : discs_[i])
+                if (s != nullptr) cpShapeCacheBB(s);
+        }
+    }
+    void release_discs() const override {
+        for (auto& shapes : discs_)
+            for (cpShape* s : shapes)
+                if (s != nullptr) cpShapeFree(s);
+        discs_.clear();
+        discs_for_ = nullptr;
+    }
+    void disc_all(std::span<const DiscQuery> qs, std::span<DiscAnswer> out) const override {
+        const bool mine = discs_for_ != qs.data() || discs_.size() != qs.size();
+        if (mine) prepare_discs(qs);
+        for (std::size_t i = 0; i < qs.size(); ++i) {
+            const DiscQuery& q = qs[i];
+            const cpVect a = to_cp(q.bs), b = to_cp(q.bs + q.v);
+            DiscAnswer best;
+            cpFloat best_alpha = std::numeric_limits<cpFloat>::infinity();
+            for (std::uint32_t k = 0; k < 3; ++k) {
+                const cpShape* s = discs_[i][k];
+                cpSegmentQueryInfo info;
+                if (s == nullptr || !cpShapeSegmentQuery(s, a, b, q.R, &info) || !(info.alpha < best_alpha)) continue;
+                best_alpha = info.alpha;
+                const cpVect c = cpvlerp(a, b, info.alpha);
+                best = {true, k == 2, k == 2 ? 0u : k, {c.x, c.y}};
+            }
+            out[i] = best;
+        }
+        if (mine) release_discs();
     }
     bool has_static(StaticKind) const override { return true; }
     void static_all(std::span<const StaticQuery> qs, std::span<unsigned char> out) const override {
@@ -97,6 +147,8 @@ private:
     cpBody* body_;
     mutable std::vector<cpShape*> prepared_;
     mutable const SweepQuery* prepared_for_ = nullptr;
+    mutable std::vector<std::array<cpShape*, 3>> discs_;  // per disc query: its walls, then its bumper (or null)
+    mutable const DiscQuery* discs_for_ = nullptr;
 };
 
 }  // namespace

@@ -21,8 +21,6 @@ bool make_query(Vec2 bs, Vec2 be, const Wall& w, SweepQuery& out) {
     return true;
 }
 
-namespace {
-
 Vec2 in_box(Rng& r, double half) { return {r.uniform(-half, half), r.uniform(-half, half)}; }
 
 Wall random_wall(Rng& r, Vec2 offset, double half) {
@@ -32,6 +30,8 @@ Wall random_wall(Rng& r, Vec2 offset, double half) {
     } while (w.p0 == w.p1);
     return w;
 }
+
+namespace {
 
 // a + b exactly, as a head and a tail (Knuth's two-sum).
 void two_sum(double a, double b, double& s, double& e) {
@@ -52,6 +52,8 @@ double on_segment(double p0, double p1, double u) {
     return s + (se + (me + u * de));
 }
 
+}  // namespace
+
 Vec2 point_on_wall(const Wall& w, double u) { return {on_segment(w.p0.x, w.p1.x, u), on_segment(w.p0.y, w.p1.y, u)}; }
 
 // n̂ for wall w, and a point at signed distance h from w's line at parameter u.
@@ -68,6 +70,8 @@ Vec2 nudge(Vec2 p, Rng& r, int ulps) {
     };
     return {step(p.x, r.integer(-ulps, ulps)), step(p.y, r.integer(-ulps, ulps))};
 }
+
+namespace {
 
 template <class Make>
 SweepWorkload generate(std::string name, std::size_t n, Make&& make) {

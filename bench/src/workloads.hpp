@@ -84,6 +84,17 @@ std::vector<Wall> make_box(Vec2 offset, double angle);
 /// n balls inside the box (a margin of 0.1 from the walls), speeds 0.05..3 per frame, from seed.
 std::vector<Ball> make_balls(Vec2 offset, double angle, std::size_t n, std::uint64_t seed);
 
+/// A point uniform in the square [−half, half]².
+Vec2 in_box(Rng& r, double half);
+/// A wall with both ends uniform in the square [−half, half]² moved to offset, of non-zero length.
+Wall random_wall(Rng& r, Vec2 offset, double half);
+/// The double nearest to P0 + u·(P1 − P0), to about 2^−100 relative (error-free transforms).
+Vec2 point_on_wall(const Wall& w, double u);
+/// The point at signed distance h (along n̂) from w's line, at parameter u, rounded.
+Vec2 off_wall(const Wall& w, double u, double h);
+/// p with each coordinate moved by a random number of ulps in [−ulps, ulps].
+Vec2 nudge(Vec2 p, Rng& r, int ulps);
+
 /// A query from a start and an end point: v = Be − Bs; false if fl(Bs + v) ≠ Be (the caller retries).
 bool make_query(Vec2 bs, Vec2 be, const Wall& w, SweepQuery& out);
 

@@ -35,13 +35,14 @@ case "$case" in
                    [ "$rc" = 2 ] || fail "exit $rc, expected 2"
                    grep -q "bench.csv" "$dir/err" || fail "the error does not name bench.csv" ;;
   seed)            # --seed picks the workloads: the same seed gives the same errors (every column but the two
-                   # timings), another seed other ones; the header says which.
+                   # timings, in bench.csv and disc.csv), another seed other ones; the header says which.
                    n=0
                    for s in 7 7 8; do
                      n=$((n + 1))
                      "$bench" bench --smoke --no-chart --seed $s --out "$dir/$n" >"$dir/out" 2>"$dir/err" || fail "--seed $s: exit $?"
                      head -n 1 "$dir/out" | grep -q "; seed $s\$" || fail "the header does not say seed $s"
                      cut -d, -f1-4,7- "$dir/$n/bench.csv" >"$dir/errors-$n"
+                     cut -d, -f1-4,7- "$dir/$n/disc.csv" >>"$dir/errors-$n"
                    done
                    cmp -s "$dir/errors-1" "$dir/errors-2" || fail "seed 7 twice gives different errors"
                    ! cmp -s "$dir/errors-1" "$dir/errors-3" || fail "seeds 7 and 8 give the same errors" ;;
