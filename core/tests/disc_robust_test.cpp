@@ -376,10 +376,13 @@ TEST(DiscRobust, GhostBounceCatchesAHitOnlyATangentCouldMake) {
     std::vector<Ball> closer = sliding;
     closer[0].pos.x = std::nextafter(4.0, 0.0);
     EXPECT_EQ(ghost_verdict(s, closer, {hit_wall(1, {7, 11})}), "");
-    // Not parallel by one ulp: not judged (it may cross the line at a grazing angle).
+    // A leg not parallel by an ulp of its end (8 + 2^−48): not judged (it may cross the line at a grazing angle).
+    // Off by less, the rounded leg is parallel again and judged.
     std::vector<Ball> askew = sliding;
-    askew[0].vel.y = std::nextafter(1.0, 2.0);
+    askew[0].vel.y = 1 + std::ldexp(1.0, -48);
     EXPECT_EQ(ghost_verdict(s, askew, {hit_wall(1, {7, 11})}), "");
+    askew[0].vel.y = std::nextafter(1.0, 2.0);
+    EXPECT_NE(ghost_verdict(s, askew, {hit_wall(1, {7, 11})}), "");
     // Only the first hit or bump of a frame is judged: its velocity is the one before the frame.
     Scene with_bumper = s;
     with_bumper.bumpers = {{{20, 20}, 1}};
@@ -390,6 +393,17 @@ TEST(DiscRobust, GhostBounceCatchesAHitOnlyATangentCouldMake) {
     point.walls = {{{0, 0}, {10, 0}}};
     point.balls = {{{-5, 0}, {1, 0}, 0}};
     EXPECT_NE(ghost_verdict(point, point.balls, {hit_wall(0, {0, 0})}), "");
+    // The leg is Bs → Bs + v as rounded, not v: v = (1.8e16, 1.8e16) is parallel to the wall along y = x, but from
+    // (123, 124) the leg ends at (1.8e16 + 124, 1.8e16 + 124) (the ulp there is 4), on the wall's line: it meets
+    // the wall, a real hit (found by the disc campaign when the check read v).
+    Scene far;
+    far.walls = {{{1e16, 1e16}, {2e16, 2e16}}};
+    far.balls = {{{123, 124}, {1.8e16, 1.8e16}, 0}};
+    EXPECT_EQ(ghost_verdict(far, far.balls, {hit_wall(0, {1.8000000000000124e16, 1.8000000000000124e16})}), "");
+    Scene far_run = far;
+    far_run.frames = 1;
+    far_run.checks = {Check::ghost_bounce};
+    EXPECT_FALSE(run_checked(far_run, KernelId::robust, 1, far_run.checks).failure);
     // A ball that does not move, or a wall of no length: not judged.
     std::vector<Ball> resting = point.balls;
     resting[0].vel = {0, 0};

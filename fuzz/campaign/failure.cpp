@@ -43,6 +43,8 @@ constexpr int k_minimize_runs = 20000;
 /// Seconds cap for -minimize_crash in a campaign by time (a campaign by runs is capped by runs only, so
 /// that it minimizes to the same input whatever the load).
 constexpr int k_minimize_seconds = 20;
+/// libFuzzer's -timeout for the one run that tells a slow input from a hang (the workers' own, workers.cpp).
+constexpr int k_timeout_seconds = 10;
 
 /// The failure's signature (the target's failure line without its frame, a plug-in guard's report without the
 /// call's numbers, or the sanitizer's summary) and the line to print; both empty if the output has none.
@@ -135,12 +137,15 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, 
     const fs::path scratch = r.work / "scratch.log";
     // Minimize: libFuzzer keeps the input failing while it shrinks it; capped in runs (and time). A campaign
     // of fewer --runs per worker minimizes with as many: N bounds every libFuzzer process it starts.
+    // Not a timeout: minimizing one runs its input in a child -runs times over (libFuzzer's way with a file
+    // input), each run as slow as the one that timed out, which no cap in time stops.
+    const bool timed_out = artifact.starts_with("timeout-");
     const std::uint64_t minimize_runs = opt.runs > 0 ? std::min<std::uint64_t>(opt.runs, k_minimize_runs) : k_minimize_runs;
     std::vector<std::string> argv = {r.bin.string(), "-minimize_crash=1", fmt::format("-runs={}", minimize_runs)};
     if (opt.runs == 0) argv.push_back(fmt::format("-max_total_time={}", k_minimize_seconds));
     if (opt.seed > 0) argv.push_back(fmt::format("-seed={}", opt.seed));
     argv.insert(argv.end(), {"-exact_artifact_path=" + minimized.string(), raw.string()});
-    run_capture(argv, {"RICOCHET_KERNEL=" + plan.kernel_env}, scratch);
+    if (!timed_out) run_capture(argv, {"RICOCHET_KERNEL=" + plan.kernel_env}, scratch);
     std::error_code ec;
     fs::path input = raw;
     std::string sha = sha1_hex(read_all(raw));
@@ -155,11 +160,20 @@ void handle_failure(TargetRun& r, const CampaignOptions& opt, const Plan& plan, 
     }
     const fs::path scene_out = r.work / "failure.scene";
     fs::remove(scene_out, ec);
-    const auto [rc, out] = run_capture({r.bin.string(), input.string()},
+    // Run once more, under the workers' timeout (a hang must not hang the campaign here either).
+    const auto [rc, out] = run_capture({r.bin.string(), fmt::format("-timeout={}", k_timeout_seconds), input.string()},
                                        {"RICOCHET_KERNEL=" + plan.kernel_env, std::string(k_scene_out_env) + "=" + scene_out.string(),
                                         std::string(k_sha1_env) + "=" + sha},
                                        scratch);
     auto [signature, first_line] = signature_of(out);
+    if (rc == 0 && timed_out) {
+        // Slow, not failing: every check held, so there is no failure for replay to reproduce. Said, and kept.
+        r.notes.push_back(fmt::format("{}: a slow input, not a failure: it ran past libFuzzer's -timeout in the campaign, "
+                                      "and run again alone (within {} s) every check held; kept at {} (time `{} {}` to "
+                                      "see how slow)",
+                                      artifact, k_timeout_seconds, raw.string(), r.bin.string(), raw.string()));
+        return;
+    }
     if (rc == 0) {
         r.notes.push_back(fmt::format("{}: does not fail when run again (flaky?); kept at {}", artifact, raw.string()));
         ++r.new_failures;

@@ -114,10 +114,11 @@
 //                  printed point that is clear of it. Point balls among walls alone (ρ = 0) always hold.
 //   ghost-bounce   No hit where only a tangent is possible (a disc sliding along a straight chain at its radius does
 //                  not bounce off a joint): a ball's first hit or bump in a frame, if it is a hit off wall W (of
-//                  non-zero length) while the ball's state before the frame moves parallel to W (n·v = 0, v ≠ 0) at
-//                  least R from W's line (((B − P0) × e)² ≥ R²·(e·e)), fails: the disc can at most touch W, and a
-//                  tangent is no hit. Exactly on the printed doubles (truth::direction_side, truth::clear_of_line).
-//                  Later hits in a frame are not judged: the velocity a ball leaves a hit with is not printed.
+//                  non-zero length) while the frame's first leg Bs → Be = Bs + v (as rounded; non-zero length) runs
+//                  parallel to W (n·(Be − Bs) = 0) at least R from W's line ((n·(Bs − P0))² ≥ R²·(n·n)), fails:
+//                  the disc can at most touch W, and a tangent is no hit. Exactly on the printed doubles
+//                  (truth::parallel_clear_of_line). Later hits in a frame are not judged: the velocity a ball
+//                  leaves a hit with is not printed.
 //
 // Discs and bumpers: in a scene with a disc or a bumper only the checks defined_for_discs (check.hpp) names are
 // defined: no-tunnel, speed, no-escape (each as written above, read for the disc's centre: its printed path, its

@@ -48,9 +48,9 @@ bool clear_of_wall(Vec2 a, Vec2 b, const Wall& w, double R);
 /// exactly, with R + r not rounded.
 bool clear_of_circle(Vec2 a, Vec2 b, Vec2 c, double R, double r);
 
-/// The point p is at least R from the line through w's end points (w of non-zero length), exactly:
-/// ((p − P0) × e)² ≥ R²·(e·e), e = P1 − P0 (the `ghost-bounce` check).
-bool clear_of_line(Vec2 p, const Wall& w, double R);
+/// The leg a → b runs parallel to the line through w's end points (w of non-zero length), at least R from it,
+/// exactly: n·(b − a) = 0 and (n·(a − P0))² ≥ R²·(n·n), n = (e_y, −e_x), e = P1 − P0 (the `ghost-bounce` check).
+bool parallel_clear_of_line(Vec2 a, Vec2 b, const Wall& w, double R);
 
 /// sign(a × b) of two directions, exactly.
 int cross_sign(Vec2 a, Vec2 b);

@@ -25,16 +25,16 @@ public:
             const Ball& b = f.before[e.ball];
             const Wall& w = scene_.walls[e.index];
             const double R = scene_.balls[e.ball].r;
-            // Moving parallel to W's line (n·v = 0, v ≠ 0) at least R from it, the centre never comes closer than
-            // R to any point of the line: the disc can at most touch W, and a tangent is no hit (kernel.hpp).
-            if (w.p0 == w.p1 || (b.vel.x == 0.0 && b.vel.y == 0.0) || truth::direction_side(b.vel, w) != 0 ||
-                !truth::clear_of_line(b.pos, w, R))
-                continue;
+            // The frame's first leg, as every kernel takes it: Bs → Be = Bs + v as C++ rounds it (kernel.hpp).
+            const Vec2 be{b.pos.x + b.vel.x, b.pos.y + b.vel.y};
+            // A leg parallel to W's line and at least R from it never brings the centre closer than R to any point
+            // of the line: the disc can at most touch W, and a tangent is no hit (kernel.hpp).
+            if (w.p0 == w.p1 || be == b.pos || !truth::parallel_clear_of_line(b.pos, be, w, R)) continue;
             return failure(Check::ghost_bounce, f.index, e.ball,
-                           fmt::format("ball {} (radius {}) moves from {} with velocity {}, parallel to wall {} ({}) and "
-                                       "at least its radius from the wall's line, yet hits it at {}; expected no hit "
-                                       "(it can at most touch the wall, and a tangent is no hit)",
-                                       e.ball, R, b.pos, b.vel, e.index, w, e.pos));
+                           fmt::format("ball {} (radius {}) moves along the leg {} -> {}, parallel to wall {} ({}) and at "
+                                       "least its radius from the wall's line, yet hits it at {}; expected no hit (it "
+                                       "can at most touch the wall, and a tangent is no hit)",
+                                       e.ball, R, b.pos, be, e.index, w, e.pos));
         }
         return std::nullopt;
     }

@@ -156,11 +156,14 @@ bool clear_of_circle(Vec2 a, Vec2 b, Vec2 c, double R, double r) {
     return distance2_to_segment(c, a, b) >= rho * rho;
 }
 
-bool clear_of_line(Vec2 p, const Wall& w, double R) {
-    // The distance from p to the line is |(p − P0) × e| / |e|: compare its square with R², times e·e.
+bool parallel_clear_of_line(Vec2 a, Vec2 b, const Wall& w, double R) {
     const Rational ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
-    const Rational cross = (Q(p.x) - Q(w.p0.x)) * ey - (Q(p.y) - Q(w.p0.y)) * ex;
-    return cross * cross >= Q(R) * Q(R) * (ex * ex + ey * ey);
+    // n·x − n·P0 for x = a and x = b: equal when the leg is parallel to the line.
+    const auto bc = [&](Vec2 x) -> Rational { return ey * (Q(x.x) - Q(w.p0.x)) - ex * (Q(x.y) - Q(w.p0.y)); };
+    const Rational at_a = bc(a);
+    if (at_a != bc(b)) return false;
+    // The distance from a to the line is |n·(a − P0)| / |n|: compare its square with R², times n·n.
+    return at_a * at_a >= Q(R) * Q(R) * (ex * ex + ey * ey);
 }
 
 namespace {
