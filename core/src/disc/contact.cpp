@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "arith.hpp"
 #include "contact_root.hpp"
@@ -378,8 +379,8 @@ int compare(const Leg& leg, const Obstacle& a, const Contact& ca, const Obstacle
     return *decision(ZFrame(leg.q, scale));
 }
 
-double contact_time(const Leg& leg, const Obstacle& o, const Contact& c) {
-    if (c.at_start) return 0.0;
+TimeEstimate contact_time_estimate(const Leg& leg, const Obstacle& o, const Contact& c) {
+    if (c.at_start) return {0.0, 0.0};
     const Vec2 d = leg.b - leg.q;
     double m = std::fmax(inf_norm(d), leg.R);
     if (o.wall != nullptr)
@@ -388,20 +389,34 @@ double contact_time(const Leg& leg, const Obstacle& o, const Contact& c) {
         m = std::fmax(m, std::fmax(inf_norm(o.c - leg.q), o.r));
     const ApproxFrame f(leg.q, {m});
     const Setup<ApproxFrame> s(f, leg, o);
-    double t = 0.0;
+    // t = num/den; each Approx operation rounds its value exactly as the plain double expression would.
+    Approx num, den;
     if (c.part == Part::face) {
         // t_f = (s·n·w − R·|n|)/(−s·n·d)
-        const double side = c.side;
-        t = (side * s.nw.v - s.R.v * std::sqrt(s.nn.v)) / (-side * s.nd.v);
+        const Approx side = approx(c.side);
+        num = side * s.nw - s.R * sqrt(s.nn);
+        den = -(side * s.nd);
     } else {
-        // t_c = (−β − √Δ)/a = γ/(−β + √Δ): the second form has no cancellation (−β > 0).
+        // t_c = (−β − √Δ)/a = γ/(−β + √Δ): the second form has no cancellation (−β > 0). Δ may round below 0
+        // (a grazing entry): √ then takes 0, as √(max(Δ, 0)).
         const P2<Approx>& p = s.centre(c.part);
-        const double rho = s.radius(c.part).v;
-        const double beta = -(s.d.x.v * p.x.v + s.d.y.v * p.y.v);
-        const double a = s.d.x.v * s.d.x.v + s.d.y.v * s.d.y.v;
-        const double gamma = p.x.v * p.x.v + p.y.v * p.y.v - rho * rho;
-        t = gamma / (-beta + std::sqrt(std::fmax(beta * beta - a * gamma, 0.0)));
+        const Approx& rho = s.radius(c.part);
+        const Approx beta = -dot(s.d, p);
+        const Approx a = dot(s.d, s.d);
+        num = dot(p, p) - rho * rho;
+        den = -beta + sqrt(beta * beta - a * num);
     }
+    const double t = num.v / den.v;
+    // |N/D − n/d| ≤ (|N − n| + |t|·|D − d|)/(|d| − |D − d|) for |d| > |D − d|, and the quotient's own rounding;
+    // the factor covers the bound's own roundings.
+    const double room = std::fabs(den.v) - den.e;
+    if (!std::isfinite(t) || !(room > 0.0)) return {t, std::numeric_limits<double>::infinity()};
+    const double error = ((num.e + std::fabs(t) * den.e) / room + std::fabs(t) * k_u) * (1.0 + 0x1p-40);
+    return {t, std::isfinite(error) ? error : std::numeric_limits<double>::infinity()};
+}
+
+double contact_time(const Leg& leg, const Obstacle& o, const Contact& c) {
+    const double t = contact_time_estimate(leg, o, c).t;
     return std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
 }
 

@@ -70,6 +70,16 @@ int compare(const Leg& leg, const Obstacle& a, const Contact& ca, const Obstacle
 /// The contact's leg fraction t, rounded, in [0, 1].
 double contact_time(const Leg& leg, const Obstacle& o, const Contact& c);
 
+/// contact_time's t before clamping, and a bound on its distance to the exact t (∞ when none is known).
+struct TimeEstimate {
+    double t = 0.0;
+    double error = 0.0;
+};
+/// The contact's t from doubles, as contact_time computes it (the same operations, so the same bits), with a
+/// running error bound: large where the formula cancels (a leg that approaches the line or the circle by a few
+/// ulps over its length divides a rounding error by a tiny n·d or √Δ).
+TimeEstimate contact_time_estimate(const Leg& leg, const Obstacle& o, const Contact& c);
+
 /// The part of wall w nearest to p, exactly: the face, or the cap at the nearer end ((p − P_k)·e's sign).
 Part nearest_part(Vec2 p, const Wall& w);
 
