@@ -65,6 +65,38 @@ struct ApproxFrame {
     static Approx constant(double x) { return approx(x); }
 };
 
+/// Doubles as Approx2 numbers (the second stage) in the filter's frame: p − o is two-sum's exact pair, the scale a
+/// power of two, so every input is exact (e = 0) unless the scaling underflowed.
+struct FineFrame {
+    using T = Approx2;
+    Vec2 o;
+    double s = 1.0;
+    explicit FineFrame(const ApproxFrame& f) : o(f.o), s(f.s) {}
+    /// x·s, exact unless it falls below 2^−1000 (then, 0 included, within 2^−1000 of x·s).
+    static double scale(double x, double k, double& e) {
+        const double y = x * k;
+        if (x != 0.0 && std::fabs(y) < 0x1p-1000) e += 0x1p-1000;
+        return y;
+    }
+    /// (a − b)·s
+    Approx2 difference(double a, double b) const {
+        double h, t;
+        fine::two_sum(a, -b, h, t);
+        Approx2 out;
+        const double hs = scale(h, s, out.e), ts = scale(t, s, out.e);
+        fine::two_sum(hs, ts, out.hi, out.lo);
+        return out;
+    }
+    P2<Approx2> point(Vec2 p) const { return {difference(p.x, o.x), difference(p.y, o.y)}; }
+    P2<Approx2> vector(Vec2 a, Vec2 b) const { return {difference(a.x, b.x), difference(a.y, b.y)}; }
+    Approx2 length(double x) const {
+        Approx2 out;
+        out.hi = scale(x, s, out.e);
+        return out;
+    }
+    static Approx2 constant(double x) { return {x, 0.0, 0.0}; }
+};
+
 /// Doubles as exact integers at the common scale 2^k of every double the decision reads.
 struct ZFrame {
     using T = Z;
@@ -82,11 +114,14 @@ struct ZFrame {
     }
 };
 
-/// Evaluates decision(frame) on the filter's frame, then, only if it could not tell, on the exact one.
+/// Evaluates decision(frame) on the filter's frame, then, only if it could not tell, on the second stage's, and
+/// only if that could not either, on the exact one.
 template <class Decision>
 auto decide(Vec2 origin, std::initializer_list<double> lengths, std::initializer_list<Vec2> points,
             std::initializer_list<double> numbers, Decision&& decision) {
-    if (auto r = decision(ApproxFrame(origin, lengths))) return *r;
+    const ApproxFrame filter(origin, lengths);
+    if (auto r = decision(filter)) return *r;
+    if (auto r = decision(FineFrame(filter))) return *r;
     Scale scale;
     for (Vec2 p : points) scale.add(p);
     for (double x : numbers) scale.add(x);
@@ -375,7 +410,9 @@ int compare(const Leg& leg, const Obstacle& a, const Contact& ca, const Obstacle
         using F = std::decay_t<decltype(f)>;
         return compare_roots(root(Setup<F>(f, leg, a), ca), root(Setup<F>(f, leg, b), cb));
     };
-    if (auto r = decision(ApproxFrame(leg.q, {m}))) return *r;
+    const ApproxFrame filter(leg.q, {m});
+    if (auto r = decision(filter)) return *r;
+    if (auto r = decision(FineFrame(filter))) return *r;
     return *decision(ZFrame(leg.q, scale));
 }
 
