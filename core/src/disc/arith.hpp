@@ -135,6 +135,13 @@ inline double term(double x, double y) {
 }  // namespace fine
 
 inline Approx2 operator+(Approx2 a, Approx2 b) {
+    // Two doubles (an input, a product of two): their sum is exactly two-sum's pair.
+    if (a.lo == 0.0 && b.lo == 0.0) {
+        Approx2 out;
+        fine::two_sum(a.hi, b.hi, out.hi, out.lo);
+        out.e = a.e + b.e;
+        return out;
+    }
     double s, t, l1, r1, l2, r2;
     fine::two_sum(a.hi, b.hi, s, t);
     fine::two_sum(a.lo, b.lo, l1, r1);
@@ -150,20 +157,30 @@ inline Approx2 operator-(Approx2 a, Approx2 b) { return a + (-b); }
 inline Approx2 operator*(Approx2 a, Approx2 b) {
     // (a.hi + a.lo)(b.hi + b.lo) = p + pe + (c1 + f1) + (c2 + f2) + (c3 + f3); kept: p + pe + c1 + c2 + c3 (their
     // sums' roundings g1..g3 dropped), dropped: f1..f3, g1..g3; and the inputs' errors, propagated.
-    double slop = 0.0, p, pe, c1, f1, c2, f2, c3, f3;
+    double slop = 0.0, p, pe;
     fine::two_prod(a.hi, b.hi, p, pe, slop);
-    fine::two_prod(a.hi, b.lo, c1, f1, slop);
-    fine::two_prod(a.lo, b.hi, c2, f2, slop);
-    fine::two_prod(a.lo, b.lo, c3, f3, slop);
-    double m1, g1, m2, g2, l, g3;
-    fine::two_sum(c1, c2, m1, g1);
-    fine::two_sum(m1, c3, m2, g2);
-    fine::two_sum(pe, m2, l, g3);
     Approx2 out;
-    fine::two_sum(p, l, out.hi, out.lo);
-    const double ma = std::fabs(a.hi) + std::fabs(a.lo), mb = std::fabs(b.hi) + std::fabs(b.lo);
-    out.e = (fine::term(ma, b.e) + fine::term(mb, a.e) + fine::term(a.e, b.e)) * (1.0 + 0x1p-50) + slop +
-            std::fabs(f1) + std::fabs(f2) + std::fabs(f3) + std::fabs(g1) + std::fabs(g2) + std::fabs(g3);
+    if (a.lo == 0.0 && b.lo == 0.0) {
+        // Two doubles: the product is exactly Dekker's pair, already normalized.
+        out.hi = p;
+        out.lo = pe;
+    } else {
+        double c1, f1, c2, f2, c3, f3;
+        fine::two_prod(a.hi, b.lo, c1, f1, slop);
+        fine::two_prod(a.lo, b.hi, c2, f2, slop);
+        fine::two_prod(a.lo, b.lo, c3, f3, slop);
+        double m1, g1, m2, g2, l, g3;
+        fine::two_sum(c1, c2, m1, g1);
+        fine::two_sum(m1, c3, m2, g2);
+        fine::two_sum(pe, m2, l, g3);
+        fine::two_sum(p, l, out.hi, out.lo);
+        slop += std::fabs(f1) + std::fabs(f2) + std::fabs(f3) + std::fabs(g1) + std::fabs(g2) + std::fabs(g3);
+    }
+    out.e = slop;
+    if (a.e != 0.0 || b.e != 0.0) {
+        const double ma = std::fabs(a.hi) + std::fabs(a.lo), mb = std::fabs(b.hi) + std::fabs(b.lo);
+        out.e += (fine::term(ma, b.e) + fine::term(mb, a.e) + fine::term(a.e, b.e)) * (1.0 + 0x1p-50);
+    }
     return out;
 }
 

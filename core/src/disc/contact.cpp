@@ -233,17 +233,16 @@ std::optional<Answer> circle_contact(const Setup<F>& s, Part part, bool at_centr
     using T = typename F::T;
     const P2<T>& p = s.centre(part);
     const T& rho = s.radius(part);
+    // Not moving closer, d·(q − P) ≥ 0 (at the centre too, which has no normal): |X(t) − P| never decreases along
+    // the leg (its square is convex in t with a slope ≥ 0 at 0), so the leg neither enters the circle nor, within
+    // reach, hits at t = 0. Decided first: the reach of a leg that starts at its last contact is a near-tie.
+    const auto closer = disc::sign(-dot(s.d, p));
+    if (!closer) return std::nullopt;
+    if (*closer >= 0 || at_centre) return Answer{};
     const auto reach = disc::sign(dot(p, p) - rho * rho);
     if (!reach) return std::nullopt;
-    if (*reach <= 0) {
-        // Degenerate: at the centre there is no normal.
-        if (at_centre) return Answer{};
-        // Within reach: a hit at t = 0 if moving closer, d·(q − P) < 0; else leaving, no hit this leg.
-        const auto closer = disc::sign(-dot(s.d, p));
-        if (!closer) return std::nullopt;
-        if (*closer < 0) return Answer{Contact{part, 0, true}};
-        return Answer{};
-    }
+    // Within reach and moving closer: a hit at t = 0.
+    if (*reach <= 0) return Answer{Contact{part, 0, true}};
     const auto in = circle_entered(s.d, p, rho);
     if (!in) return std::nullopt;
     if (*in) return Answer{Contact{part, 0, false}};
@@ -269,6 +268,20 @@ std::optional<Answer> wall_contact(const F& f, const Leg& leg, const Wall& w) {
     }
     const auto side = disc::sign(s.nw);
     if (!side) return std::nullopt;
+    // Not moving closer to the segment (its distance's slope at t = 0: s·(n·d) on the face, d·(q − P_k) at a cap),
+    // or q on the segment (no normal): the distance to the segment is convex along the leg, so it never decreases,
+    // and the leg neither enters the capsule nor, within reach, hits at t = 0: no contact, whatever the reach (a
+    // near-tie for a leg that starts at its last contact).
+    if (nearest == Part::face) {
+        if (*side == 0) return Answer{};
+        const auto away = disc::sign(F::constant(*side) * s.nd);
+        if (!away) return std::nullopt;
+        if (*away >= 0) return Answer{};
+    } else {
+        const auto away = disc::sign(-dot(s.d, s.centre(nearest)));
+        if (!away) return std::nullopt;
+        if (*away >= 0) return Answer{};
+    }
     const T R2nn = s.R * s.R * s.nn;
     if (nearest != Part::face) {
         // Within reach of that cap: its rules (a centre at the end point has no normal).
@@ -279,15 +292,8 @@ std::optional<Answer> wall_contact(const F& f, const Leg& leg, const Wall& w) {
         // Within reach of the face: distance² = (n·w)²/(n·n) ≤ R².
         const auto reach = disc::sign(s.nw * s.nw - R2nn);
         if (!reach) return std::nullopt;
-        if (*reach <= 0) {
-            // Degenerate: a centre on the segment itself has no normal.
-            if (*side == 0) return Answer{};
-            // Moving closer: s·(n·d) < 0, a hit at t = 0; else leaving.
-            const auto closer = disc::sign(F::constant(*side) * s.nd);
-            if (!closer) return std::nullopt;
-            if (*closer < 0) return Answer{Contact{Part::face, static_cast<std::int8_t>(*side), true}};
-            return Answer{};
-        }
+        // Within reach and moving closer (above): a hit at t = 0.
+        if (*reach <= 0) return Answer{Contact{Part::face, static_cast<std::int8_t>(*side), true}};
     }
     // q is outside the capsule: the earliest of the face entry and the cap entries.
     std::optional<Contact> best;
