@@ -184,6 +184,54 @@ inline Approx2 operator*(Approx2 a, Approx2 b) {
     return out;
 }
 
+/// √x of a value whose exact value is ≥ 0 (the caller knows it is), for constructions: s0 = √(hi) and one Newton
+/// step, s0 + (x − s0²)/(2·s0), whose truncation, ≤ (x − s0²)²/(8·s0³) ≤ 2^−104·√x, and roundings are within 2^−98
+/// of √x; exact (no step) when s0² = x. The input's error e adds ≤ min(e/√v, √e) (as Approx's sqrt).
+inline Approx2 sqrt(Approx2 a) {
+    const double v = a.hi + a.lo;
+    if (!(v > 0.0)) return {0.0, 0.0, a.e == 0.0 && v == 0.0 ? 0.0 : std::sqrt(std::fmax(v, 0.0) + a.e) * 1.001 + 0x1p-1000};
+    const double s0 = std::sqrt(v);
+    double slop = 0.0, p, pe;
+    fine::two_prod(s0, s0, p, pe, slop);
+    // x − s0² = (hi − p) − pe + lo: hi − p is exact (p is within a few ulps of hi), the rest rounds by ≤ 2^−104·x.
+    const double r = ((a.hi - p) - pe) + a.lo;
+    Approx2 out;
+    if (r == 0.0 && slop == 0.0 && a.lo == 0.0 && pe == 0.0 && a.hi == p) {
+        out = {s0, 0.0, 0.0};
+    } else {
+        fine::two_sum(s0, r / (2.0 * s0), out.hi, out.lo);
+        out.e = s0 * 0x1p-98 + slop / s0;
+    }
+    if (a.e != 0.0) out.e += std::fmin(a.e / (s0 * (1.0 - 0x1p-50)), std::sqrt(a.e) * (1.0 + 0x1p-50)) + 0x1p-1000;
+    return out;
+}
+/// a/b for constructions: q1 = hi/hi, then the remainder ρ = a − q1·b (Approx2, with its bound) over b: the
+/// quotient's error is ρ's over |b|, ρ/b's rounding and b's own low part and error, each bounded; nothing useful
+/// (an infinite bound) when b's bound reaches its value.
+inline Approx2 operator/(Approx2 a, Approx2 b) {
+    const double bmin = std::fabs(b.hi) - std::fabs(b.lo) - b.e;
+    if (!(bmin > 0.0)) return {0.0, 0.0, HUGE_VAL};
+    const double q1 = a.hi / b.hi;
+    const Approx2 rho = a - Approx2{q1, 0.0, 0.0} * b;
+    const double q2 = rho.hi / b.hi;
+    Approx2 out;
+    fine::two_sum(q1, q2, out.hi, out.lo);
+    const double mr = std::fabs(rho.hi) + std::fabs(rho.lo);
+    out.e = ((rho.e + mr * (0x1p-51 + b.e / bmin)) / bmin) * (1.0 + 0x1p-40) + std::fabs(q2) * 0x1p-52 + 0x1p-1000;
+    return out;
+}
+/// The double nearest to the exact value, if the bound decides it: hi + lo rounds to x, and every value within e of
+/// hi + lo lies closer to x than half the gap to x's nearer neighbour.
+inline std::optional<double> nearest_double(Approx2 a) {
+    if (!std::isfinite(a.hi) || !std::isfinite(a.lo) || !std::isfinite(a.e)) return std::nullopt;
+    const double x = a.hi + a.lo;
+    // hi − x is 0 or one of hi's ulps (exact); r is the distance from hi + lo to x, rounded by ≤ 2^−53·|r|.
+    const double r = (a.hi - x) + a.lo;
+    const double gap = std::fmin(std::nextafter(x, HUGE_VAL) - x, x - std::nextafter(x, -HUGE_VAL));
+    if (0.5 * gap - std::fabs(r) * (1.0 + 0x1p-50) > a.e * (1.0 + 0x1p-40) + 0x1p-1070) return x;
+    return std::nullopt;
+}
+
 /// sign(x) if the bound decides it (e = 0: the exact sign, zero included), else nothing.
 inline std::optional<int> sign(Approx2 a) {
     if (!std::isfinite(a.hi) || !std::isfinite(a.lo) || !std::isfinite(a.e)) return std::nullopt;

@@ -463,6 +463,33 @@ double contact_time(const Leg& leg, const Obstacle& o, const Contact& c) {
     return std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
 }
 
+std::optional<RoundedContact> nearest_contact_fine(const Leg& leg, const Obstacle& o, const Contact& c) {
+    if (c.at_start) return RoundedContact{0.0, leg.q};
+    const Vec2 d = leg.b - leg.q;
+    double m = std::fmax(inf_norm(d), leg.R);
+    if (o.wall != nullptr)
+        m = std::fmax(m, std::fmax(inf_norm(o.wall->p0 - leg.q), inf_norm(o.wall->p1 - leg.q)));
+    else
+        m = std::fmax(m, std::fmax(inf_norm(o.c - leg.q), o.r));
+    const FineFrame f{ApproxFrame(leg.q, {m})};
+    const Root<Approx2> r = root(Setup<FineFrame>(f, leg, o), c);
+    // t = (a + b·√c)/d does not depend on the frame's scale; B_i's coordinates are q + t·(b − q) unscaled, the
+    // differences exact as two-sum's pairs.
+    const Approx2 t = (r.a + r.b * sqrt(r.c)) / r.d;
+    const auto along = [&](double from, double to) {
+        Approx2 diff;
+        fine::two_sum(to, -from, diff.hi, diff.lo);
+        return Approx2{from, 0.0, 0.0} + t * diff;
+    };
+    const auto tn = nearest_double(t);
+    if (!tn) return std::nullopt;
+    const auto x = nearest_double(along(leg.q.x, leg.b.x));
+    if (!x) return std::nullopt;
+    const auto y = nearest_double(along(leg.q.y, leg.b.y));
+    if (!y) return std::nullopt;
+    return RoundedContact{std::clamp(*tn, 0.0, 1.0), {*x, *y}};
+}
+
 TimeRoot contact_root(const Leg& leg, const Obstacle& o, const Contact& c) {
     Scale scale;
     scale.add(leg.q);

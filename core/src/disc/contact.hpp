@@ -80,6 +80,16 @@ struct TimeEstimate {
 /// ulps over its length divides a rounding error by a tiny n·d or √Δ).
 TimeEstimate contact_time_estimate(const Leg& leg, const Obstacle& o, const Contact& c);
 
+/// A contact's leg fraction t and centre B_i = q + t·(b − q), each the double nearest to its exact value.
+struct RoundedContact {
+    double t = 0.0;
+    Vec2 x;
+};
+/// The contact's t (clamped to [0, 1]) and B_i, each the double nearest to its exact value, from the second
+/// stage's double-double (arith.hpp) when its bound decides every rounding; nothing when it cannot (a value too
+/// near a midpoint, or a cancellation deeper than its precision: then exact_disc.cpp's bracket in rationals).
+std::optional<RoundedContact> nearest_contact_fine(const Leg& leg, const Obstacle& o, const Contact& c);
+
 /// The part of wall w nearest to p, exactly: the face, or the cap at the nearer end ((p − P_k)·e's sign).
 Part nearest_part(Vec2 p, const Wall& w);
 

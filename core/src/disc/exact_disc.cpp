@@ -62,6 +62,8 @@ bool same(const disc::Constructions::Point& u, const disc::Constructions::Point&
 
 /// The contact's time and point, each the double nearest to its exact value (the bracket above).
 disc::Constructions::Point disc::nearest_contact_point(const Leg& leg, const Obstacle& o, const Contact& c) {
+    // The same nearest doubles from double-double where its bound decides them (contact.cpp), without GMP.
+    if (const auto fine = nearest_contact_fine(leg, o, c)) return {fine->t, fine->x};
     const disc::TimeRoot r = disc::contact_root(leg, o, c);
     const Rational a = rat(r.a), b = rat(r.b), d = rat(r.d);
     if (bignum::sign(r.b) == 0 || bignum::sign(r.c) == 0) return round_at(leg, a / d);
