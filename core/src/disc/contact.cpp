@@ -463,8 +463,10 @@ double contact_time(const Leg& leg, const Obstacle& o, const Contact& c) {
     return std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
 }
 
-std::optional<RoundedContact> nearest_contact_fine(const Leg& leg, const Obstacle& o, const Contact& c) {
-    if (c.at_start) return RoundedContact{0.0, leg.q};
+namespace {
+
+/// A contact's t = (a + b·√c)/d in double-double (it does not depend on the frame's scale).
+Approx2 fine_time(const Leg& leg, const Obstacle& o, const Contact& c) {
     const Vec2 d = leg.b - leg.q;
     double m = std::fmax(inf_norm(d), leg.R);
     if (o.wall != nullptr)
@@ -473,9 +475,25 @@ std::optional<RoundedContact> nearest_contact_fine(const Leg& leg, const Obstacl
         m = std::fmax(m, std::fmax(inf_norm(o.c - leg.q), o.r));
     const FineFrame f{ApproxFrame(leg.q, {m})};
     const Root<Approx2> r = root(Setup<FineFrame>(f, leg, o), c);
-    // t = (a + b·√c)/d does not depend on the frame's scale; B_i's coordinates are q + t·(b − q) unscaled, the
-    // differences exact as two-sum's pairs.
-    const Approx2 t = (r.a + r.b * sqrt(r.c)) / r.d;
+    return (r.a + r.b * sqrt(r.c)) / r.d;
+}
+
+}  // namespace
+
+TimeEstimate contact_time_fine(const Leg& leg, const Obstacle& o, const Contact& c) {
+    if (c.at_start) return {0.0, 0.0};
+    const Approx2 t = fine_time(leg, o, c);
+    const double v = t.hi + t.lo;
+    // hi + lo rounds by at most half an ulp of v.
+    const double error = (t.e + std::fabs(v) * 0x1p-53) * (1.0 + 0x1p-40);
+    if (!std::isfinite(v) || !std::isfinite(error)) return {0.0, std::numeric_limits<double>::infinity()};
+    return {v, error};
+}
+
+std::optional<RoundedContact> nearest_contact_fine(const Leg& leg, const Obstacle& o, const Contact& c) {
+    if (c.at_start) return RoundedContact{0.0, leg.q};
+    // B_i's coordinates are q + t·(b − q) unscaled, the differences exact as two-sum's pairs.
+    const Approx2 t = fine_time(leg, o, c);
     const auto along = [&](double from, double to) {
         Approx2 diff;
         fine::two_sum(to, -from, diff.hi, diff.lo);

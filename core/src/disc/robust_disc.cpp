@@ -93,20 +93,30 @@ Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
     return piece_allowed(q, half, R, obstacles) ? half : q;
 }
 
-/// The most robust's t_i from doubles may be off by (its running error bound) before the exact kernel's construction
-/// is taken instead: a contact point within 2^−24·|b − q| of its exact place along the leg.
+/// The most robust's t_i from doubles may be off by (its running error bound) before a finer construction is taken
+/// instead: a contact point within 2^−24·|b − q| of its exact place along the leg.
 constexpr double k_time_tolerance = 0x1p-24;
 
+/// B_i = q + t·(b − q) in doubles, for a t in (0, 1].
+disc::Constructions::Point on_leg(const disc::Leg& leg, double t) {
+    t = std::min(t, 1.0);
+    return {t, t == 1.0 ? leg.b : leg.q + t * (leg.b - leg.q)};
+}
+
 /// Robust's constructions: t_i rounded from doubles (contact_time), B_i = q + t_i·(b − q) in doubles, the bounce
-/// about normal_at's rounded normal with reflect_about. Where the doubles cannot place t_i (a leg that approaches
-/// the line or the circle by ulps over its length: t_i = a rounding error over a tiny n·d or √Δ, anywhere in
-/// [0, 1]), or cannot tell it from 0 (a bounce at the leg's start that would leave the ball where it was, and the
-/// same leg again), the exact kernel's correctly rounded t_i and B_i (nearest_contact_point).
+/// about normal_at's rounded normal with reflect_about. Where the doubles cannot place t_i within 2^−24 (a leg
+/// that approaches the line or the circle by ulps over its length: t_i = a rounding error over a tiny n·d or √Δ,
+/// anywhere in [0, 1]), or cannot tell it from 0 (a bounce at the leg's start that would leave the ball where it
+/// was, and the same leg again): the nearest doubles to t_i and B_i where double-double decides them
+/// (nearest_contact_fine), else t_i from double-double where it is within 2^−24 and clear of 0
+/// (contact_time_fine), else the exact kernel's bracket in rationals (nearest_contact_point).
 disc::Constructions::Point robust_point(const disc::Leg& leg, const disc::Obstacle& o, const disc::Contact& c) {
     const disc::TimeEstimate e = disc::contact_time_estimate(leg, o, c);
-    if (!(e.error <= k_time_tolerance && e.t - e.error > 0.0)) return disc::nearest_contact_point(leg, o, c);
-    const double t = std::min(e.t, 1.0);
-    return {t, t == 1.0 ? leg.b : leg.q + t * (leg.b - leg.q)};
+    if (e.error <= k_time_tolerance && e.t - e.error > 0.0) return on_leg(leg, e.t);
+    if (const auto nearest = disc::nearest_contact_fine(leg, o, c)) return {nearest->t, nearest->x};
+    const disc::TimeEstimate fine = disc::contact_time_fine(leg, o, c);
+    if (fine.error <= k_time_tolerance && fine.t - fine.error > 0.0) return on_leg(leg, fine.t);
+    return disc::nearest_contact_point(leg, o, c);
 }
 /// v reflected about normal_at's rounded normal with reflect_about, or, where that does not leave the obstacle (a
 /// grazing v, whose normal component is below the rounding of v·n: v′ = v, or v′ exactly parallel, and the frame
