@@ -65,12 +65,12 @@ bool piece_allowed(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
 }
 
 /// How many doublings the walk back tries before x's own neighbours.
-constexpr int k_walk_before_neighbours = 20;
+constexpr int k_walk_before_neighbours = 4;
 
 /// x, or the first point on the way back towards q whose piece from q is allowed (q itself at worst): the walk
 /// of path.hpp's make_safe, 1, 2, 4, … ulps of the piece's largest coordinate, then half the piece, then q. A
 /// piece that meets the capsule at a grazing angle gains almost no distance from it along the way back, and
-/// whether a rounded point on it is clear is a matter of its rounding: before the walk goes past 2^20 ulps, the
+/// whether a rounded point on it is clear is a matter of its rounding: before the walk goes past 16 ulps, the
 /// eight doubles next to x (one ulp in x, in y, or both) are tried, in a fixed order, and the first allowed kept.
 Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
     if (piece_allowed(q, x, R, obstacles)) return x;
@@ -94,8 +94,8 @@ Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
 }
 
 /// The most robust's t_i from doubles may be off by (its running error bound) before a finer construction is taken
-/// instead: a contact point within 2^−24·|b − q| of its exact place along the leg.
-constexpr double k_time_tolerance = 0x1p-24;
+/// instead: a contact point within 2^−40·|b − q| of its exact place along the leg.
+constexpr double k_time_tolerance = 0x1p-40;
 
 /// B_i = q + t·(b − q) in doubles, for a t in (0, 1].
 disc::Constructions::Point on_leg(const disc::Leg& leg, double t) {
@@ -104,11 +104,11 @@ disc::Constructions::Point on_leg(const disc::Leg& leg, double t) {
 }
 
 /// Robust's constructions: t_i rounded from doubles (contact_time), B_i = q + t_i·(b − q) in doubles, the bounce
-/// about normal_at's rounded normal with reflect_about. Where the doubles cannot place t_i within 2^−24 (a leg
+/// about normal_at's rounded normal with reflect_about. Where the doubles cannot place t_i within 2^−40 (a leg
 /// that approaches the line or the circle by ulps over its length: t_i = a rounding error over a tiny n·d or √Δ,
 /// anywhere in [0, 1]), or cannot tell it from 0 (a bounce at the leg's start that would leave the ball where it
 /// was, and the same leg again): the nearest doubles to t_i and B_i where double-double decides them
-/// (nearest_contact_fine), else t_i from double-double where it is within 2^−24 and clear of 0
+/// (nearest_contact_fine), else t_i from double-double where it is within 2^−40 and clear of 0
 /// (contact_time_fine), else the exact kernel's bracket in rationals (nearest_contact_point).
 disc::Constructions::Point robust_point(const disc::Leg& leg, const disc::Obstacle& o, const disc::Contact& c) {
     const disc::TimeEstimate e = disc::contact_time_estimate(leg, o, c);
