@@ -14,6 +14,7 @@
 #include <gmpxx.h>
 
 #include "checks/frame_check.hpp"
+#include "disc/contact.hpp"
 #include "ricochet/checks.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/world.hpp"
@@ -253,6 +254,37 @@ TEST(DiscRobust, GrazingLegsPrintTheirContactNearTheExactOne) {
             }
         }
     EXPECT_GT(hits, 900);
+    // Random walls (the bench's third kind of grazing leg): B_s and B_e rounded from points of the wall plus R·n̂, so
+    // within ulps of tangent in any direction; |n| is irrational and t_f's cancellation deeper than double-double
+    // can round, where robust once walked a point it had placed two ulps off the contact back to the leg's start.
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int faces = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Wall w{{unit(rng), unit(rng)}, {unit(rng), unit(rng)}};
+        const double R = 0.05 + 0.1 * std::fabs(unit(rng));
+        const double ex = w.p1.x - w.p0.x, ey = w.p1.y - w.p0.y, len = std::hypot(ex, ey);
+        const double nx = ey / len * R, ny = -ex / len * R;
+        const double u0 = 0.1 + 0.3 * std::fabs(unit(rng)), u1 = u0 + 0.2 + 0.3 * std::fabs(unit(rng));
+        const Vec2 q{w.p0.x + u0 * ex + nx, w.p0.y + u0 * ey + ny};
+        const Vec2 b{w.p0.x + u1 * ex + nx, w.p0.y + u1 * ey + ny};
+        const Vec2 v = b - q;
+        const auto c = disc::first_contact(disc::Leg{q, q + v, R}, w);
+        if (!c || c->at_start || c->part != disc::Part::face) continue;
+        ++faces;
+        Scene s;
+        s.frames = 1;
+        s.walls = {w};
+        s.balls = {{q, v, R}};
+        for (const Event& e : run_scene(s, KernelId::robust, 1)) {
+            if (e.kind != Event::Kind::hit) continue;
+            const double d_inf = std::fmax(std::fabs(v.x), std::fabs(v.y));
+            EXPECT_LE(face_contact_error(q, q + v, R, w, e.pos), 0x1p-40 * d_inf + 0x1p-50)
+                << fmt::format("wall {} {} ball {} v {} R {}", w.p0, w.p1, q, v, R);
+            break;
+        }
+    }
+    EXPECT_GT(faces, 300);
 }
 
 TEST(DiscRobust, AGrazingLegThatEndsAtItsRadiusHitsThere) {

@@ -478,32 +478,34 @@ Approx2 fine_time(const Leg& leg, const Obstacle& o, const Contact& c) {
     return (r.a + r.b * sqrt(r.c)) / r.d;
 }
 
+/// from + t·(to − from) in double-double, the difference exact as two-sum's pair (unscaled).
+Approx2 along(const Approx2& t, double from, double to) {
+    Approx2 diff;
+    fine::two_sum(to, -from, diff.hi, diff.lo);
+    return Approx2{from, 0.0, 0.0} + t * diff;
+}
+
 }  // namespace
 
-TimeEstimate contact_time_fine(const Leg& leg, const Obstacle& o, const Contact& c) {
-    if (c.at_start) return {0.0, 0.0};
+FineContact contact_fine(const Leg& leg, const Obstacle& o, const Contact& c) {
+    if (c.at_start) return {0.0, leg.q, 0.0};
     const Approx2 t = fine_time(leg, o, c);
     const double v = t.hi + t.lo;
     // hi + lo rounds by at most half an ulp of v.
     const double error = (t.e + std::fabs(v) * 0x1p-53) * (1.0 + 0x1p-40);
-    if (!std::isfinite(v) || !std::isfinite(error)) return {0.0, std::numeric_limits<double>::infinity()};
-    return {v, error};
+    if (!std::isfinite(v) || !std::isfinite(error)) return {0.0, leg.q, std::numeric_limits<double>::infinity()};
+    const Approx2 x = along(t, leg.q.x, leg.b.x), y = along(t, leg.q.y, leg.b.y);
+    return {v, {x.hi + x.lo, y.hi + y.lo}, error};
 }
 
 std::optional<RoundedContact> nearest_contact_fine(const Leg& leg, const Obstacle& o, const Contact& c) {
     if (c.at_start) return RoundedContact{0.0, leg.q};
-    // B_i's coordinates are q + t·(b − q) unscaled, the differences exact as two-sum's pairs.
     const Approx2 t = fine_time(leg, o, c);
-    const auto along = [&](double from, double to) {
-        Approx2 diff;
-        fine::two_sum(to, -from, diff.hi, diff.lo);
-        return Approx2{from, 0.0, 0.0} + t * diff;
-    };
     const auto tn = nearest_double(t);
     if (!tn) return std::nullopt;
-    const auto x = nearest_double(along(leg.q.x, leg.b.x));
+    const auto x = nearest_double(along(t, leg.q.x, leg.b.x));
     if (!x) return std::nullopt;
-    const auto y = nearest_double(along(leg.q.y, leg.b.y));
+    const auto y = nearest_double(along(t, leg.q.y, leg.b.y));
     if (!y) return std::nullopt;
     return RoundedContact{std::clamp(*tn, 0.0, 1.0), {*x, *y}};
 }

@@ -90,10 +90,17 @@ struct RoundedContact {
 /// near a midpoint, or a cancellation deeper than its precision: then exact_disc.cpp's bracket in rationals).
 std::optional<RoundedContact> nearest_contact_fine(const Leg& leg, const Obstacle& o, const Contact& c);
 
-/// The contact's t from the second stage's double-double (hi + lo rounded) and a bound on its distance to the exact
-/// t: about 2^−100 relative where contact_time_estimate's is 2^−53, so a leg that approaches the line by ulps still
-/// gets t to 2^−45 or so.
-TimeEstimate contact_time_fine(const Leg& leg, const Obstacle& o, const Contact& c);
+/// A contact from the second stage's double-double: t and B_i = q + t·(b − q) each rounded from their double-double
+/// values (hi + lo), and a bound on t's distance to the exact t.
+struct FineContact {
+    double t = 0.0;
+    Vec2 x;
+    double error = 0.0;
+};
+/// The contact's t and B_i from double-double: t's bound is about 2^−100 relative where contact_time_estimate's is
+/// 2^−53, so a leg that approaches the line by ulps still gets t to 2^−45 or so, and B_i within half an ulp and
+/// that error along the leg.
+FineContact contact_fine(const Leg& leg, const Obstacle& o, const Contact& c);
 
 /// The part of wall w nearest to p, exactly: the face, or the cap at the nearer end ((p − P_k)·e's sign).
 Part nearest_part(Vec2 p, const Wall& w);

@@ -108,14 +108,15 @@ disc::Constructions::Point on_leg(const disc::Leg& leg, double t) {
 /// that approaches the line or the circle by ulps over its length: t_i = a rounding error over a tiny n·d or √Δ,
 /// anywhere in [0, 1]), or cannot tell it from 0 (a bounce at the leg's start that would leave the ball where it
 /// was, and the same leg again): the nearest doubles to t_i and B_i where double-double decides them
-/// (nearest_contact_fine), else t_i from double-double where it is within 2^−40 and clear of 0
-/// (contact_time_fine), else the exact kernel's bracket in rationals (nearest_contact_point).
+/// (nearest_contact_fine), else t_i and B_i rounded from double-double where t_i is within 2^−40 and clear of 0
+/// (contact_fine), else the exact kernel's bracket in rationals (nearest_contact_point).
 disc::Constructions::Point robust_point(const disc::Leg& leg, const disc::Obstacle& o, const disc::Contact& c) {
     const disc::TimeEstimate e = disc::contact_time_estimate(leg, o, c);
     if (e.error <= k_time_tolerance && e.t - e.error > 0.0) return on_leg(leg, e.t);
     if (const auto nearest = disc::nearest_contact_fine(leg, o, c)) return {nearest->t, nearest->x};
-    const disc::TimeEstimate fine = disc::contact_time_fine(leg, o, c);
-    if (fine.error <= k_time_tolerance && fine.t - fine.error > 0.0) return on_leg(leg, fine.t);
+    const disc::FineContact fine = disc::contact_fine(leg, o, c);
+    if (fine.error <= k_time_tolerance && fine.t - fine.error > 0.0)
+        return fine.t >= 1.0 ? disc::Constructions::Point{1.0, leg.b} : disc::Constructions::Point{fine.t, fine.x};
     return disc::nearest_contact_point(leg, o, c);
 }
 /// v reflected about normal_at's rounded normal with reflect_about, or, where that does not leave the obstacle (a
