@@ -64,14 +64,14 @@ bool piece_allowed(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
     return true;
 }
 
-/// How many doublings the walk back tries before x's own neighbours.
+/// How many doublings walk_back tries before x's own neighbours. A piece that meets the capsule at a grazing angle
+/// gains almost no distance from it along the way back, and whether a rounded point on it is clear is a matter of
+/// its rounding: before the walk goes past 16 ulps, the eight doubles next to x (one ulp in x, in y, or both) are
+/// tried, in a fixed order, and the first allowed kept.
 constexpr int k_walk_before_neighbours = 4;
 
 /// x, or the first point on the way back towards q whose piece from q is allowed (q itself at worst): the walk
-/// of path.hpp's make_safe, 1, 2, 4, … ulps of the piece's largest coordinate, then half the piece, then q. A
-/// piece that meets the capsule at a grazing angle gains almost no distance from it along the way back, and
-/// whether a rounded point on it is clear is a matter of its rounding: before the walk goes past 16 ulps, the
-/// eight doubles next to x (one ulp in x, in y, or both) are tried, in a fixed order, and the first allowed kept.
+/// of path.hpp's make_safe, 1, 2, 4, … ulps of the piece's largest coordinate, then half the piece, then q.
 Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
     if (piece_allowed(q, x, R, obstacles)) return x;
     const Vec2 d = x - q;
