@@ -6,6 +6,8 @@
 
 #include <gmpxx.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <optional>
 #include <random>
@@ -255,6 +257,68 @@ TEST(DiscContact, RandomLegsAgreeWithAnIndependentComputation) {
     }
     EXPECT_GT(compared, 5000);
     EXPECT_GT(hits, 500);
+}
+
+/// x is a double nearest to v: no neighbour of x is closer.
+bool is_nearest(double x, const mpf_class& v) {
+    const mpf_class d0 = abs(mpf_class(x, 1100) - v);
+    for (const double n : {std::nextafter(x, -INFINITY), std::nextafter(x, INFINITY)})
+        if (abs(mpf_class(n, 1100) - v) < d0) return false;
+    return true;
+}
+
+TEST(DiscContact, TheDoubleDoubleContactPointIsTheNearestDoubles) {
+    // nearest_contact_fine (the exact kernel's construction without GMP, and robust's where its doubles cannot place
+    // t) must answer only with the doubles nearest to t* and q + t*·(b − q), t* from the contact's formula in
+    // 1100-bit floating point. Random legs, and legs grazing a 3-4-5 wall's face by ulps (t_f's cancellation).
+    mpf_set_default_prec(1100);
+    using F = mpf_class;
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> coord(-10, 10);
+    int answered = 0, checked = 0;
+    const auto check = [&](const Leg& leg, const Wall& w) {
+        const auto c = first_contact(leg, w);
+        if (!c || c->at_start) return;
+        ++checked;
+        const auto got = nearest_contact_fine(leg, of(w), *c);
+        if (!got) return;
+        ++answered;
+        const F qx(leg.q.x), qy(leg.q.y), dx = F(leg.b.x) - qx, dy = F(leg.b.y) - qy;
+        F t;
+        if (c->part == Part::face) {
+            const F nx = F(w.p1.y) - F(w.p0.y), ny = F(w.p0.x) - F(w.p1.x);
+            const F nw = nx * (qx - F(w.p0.x)) + ny * (qy - F(w.p0.y)), nd = nx * dx + ny * dy;
+            t = (c->side * nw - F(leg.R) * sqrt(nx * nx + ny * ny)) / (-c->side * nd);
+        } else {
+            const Vec2 p = c->part == Part::cap0 ? w.p0 : w.p1;
+            const F px = qx - F(p.x), py = qy - F(p.y);
+            const F a = dx * dx + dy * dy, beta = dx * px + dy * py, gamma = px * px + py * py - F(leg.R) * F(leg.R);
+            t = (-beta - sqrt(beta * beta - a * gamma)) / a;
+        }
+        EXPECT_TRUE(is_nearest(got->t, t)) << got->t;
+        EXPECT_TRUE(is_nearest(got->x.x, qx + t * dx)) << got->x.x;
+        EXPECT_TRUE(is_nearest(got->x.y, qy + t * dy)) << got->x.y;
+    };
+    for (int i = 0; i < 4000; ++i) {
+        const Wall w{{coord(rng), coord(rng)}, {coord(rng), coord(rng)}};
+        const Leg leg{{coord(rng), coord(rng)}, {coord(rng), coord(rng)}, std::fabs(coord(rng)) / 4};
+        if (point_clear(leg.q, leg.R, of(w))) check(leg, w);
+    }
+    // A 3-4-5 floor from (0, 0) to (40, 30), R = 5 (R·n̂ = (3, −4)): starts on the line shifted by R, moved by
+    // ulps, legs one or two ulps from parallel.
+    const Wall slope{{0, 0}, {40, 30}};
+    for (int k = 1; k < 30; ++k)
+        for (int away = 1; away <= 2; ++away)
+            for (int skew = 1; skew <= 3; ++skew) {
+                Vec2 q{4.0 * k / 3 + 3, static_cast<double>(k) - 4};
+                for (int u = 0; u < away; ++u) q.y = std::nextafter(q.y, -INFINITY);
+                Vec2 b{q.x + 8, q.y + 6};
+                for (int u = 0; u < skew; ++u) b.y = std::nextafter(b.y, INFINITY);
+                check({q, b, 5.0}, slope);
+            }
+    EXPECT_GT(checked, 500);
+    EXPECT_GT(answered, checked * 9 / 10);
+    fmt::print("double-double contact points: {} of {} answered, each the nearest doubles\n", answered, checked);
 }
 
 TEST(DiscContact, ClearanceIsExact) {

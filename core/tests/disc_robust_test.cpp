@@ -11,8 +11,10 @@
 #include <string>
 
 #include <fmt/format.h>
+#include <gmpxx.h>
 
 #include "checks/frame_check.hpp"
+#include "disc/contact.hpp"
 #include "ricochet/checks.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/world.hpp"
@@ -181,6 +183,129 @@ TEST(DiscRobust, ClosedPolygonsHoldEveryCheck) {
         frames_run += static_cast<int>(s.frames);
     }
     EXPECT_EQ(frames_run, 60 * 40);
+}
+
+/// The exact contact point of a leg entering a wall's face, q + t*·d, t* = (σR − h)/(n̂·d) with h = n̂·(q − P0) and
+/// σ = sign(h), in 512-bit floating point (independent of the kernels' code), and its distance in ∞-norm to x.
+double face_contact_error(Vec2 q, Vec2 b, double R, const Wall& w, Vec2 x) {
+    mpf_set_default_prec(512);
+    using F = mpf_class;
+    const F qx(q.x), qy(q.y), dx = F(b.x) - qx, dy = F(b.y) - qy;
+    const F ex = F(w.p1.x) - F(w.p0.x), ey = F(w.p1.y) - F(w.p0.y);
+    const F len = sqrt(ex * ex + ey * ey);
+    const F nx = ey / len, ny = -ex / len;
+    const F h = nx * (qx - F(w.p0.x)) + ny * (qy - F(w.p0.y));
+    const F t = (sgn(h) * F(R) - h) / (nx * dx + ny * dy);
+    const F ex_err = abs(qx + t * dx - F(x.x)), ey_err = abs(qy + t * dy - F(x.y));
+    return std::fmax(ex_err.get_d(), ey_err.get_d());
+}
+
+TEST(DiscRobust, GrazingLegsPrintTheirContactNearTheExactOne) {
+    // A leg that approaches a wall's face by ulps over its length: the wall along a Pythagorean direction (a, b, c)
+    // on a grid of 2^−7, a disc of radius R = k·c/2^7 (so R·n̂ is on the grid) starting at a point of the wall plus
+    // R·n̂ with its y moved by one or two ulps away from the wall, moving along the wall with its velocity one or two
+    // ulps from parallel. From doubles t_f = (s·n·w − R·|n|)/(−s·n·d) is a rounding error over a rounding error
+    // (robust once printed t = 0 where the exact entry was at 0.2 or 1, and bounced at its start 16 times). The
+    // printed first hit must lie within 2^−40·|d|∞ (robust's tolerance on t) and a few ulps of the exact contact
+    // point: neither a rounded t nor a walk back along a leg that gains no distance from the wall may move it
+    // (measured: within 5.7e−15·|d|∞ on all of them). Later hits in the frame follow the rules (a reflected leg may
+    // graze the face again), but a frame never runs into the bounce limit.
+    const int dirs[][3] = {{3, 4, 5}, {5, 12, 13}, {8, 15, 17}, {7, 24, 25}, {20, 21, 29}};
+    int hits = 0;
+    for (const auto& abc : dirs)
+        for (int flip = 0; flip < 8; ++flip) {
+            double a = abc[0], b = abc[1];
+            if (flip & 1) std::swap(a, b);
+            if (flip & 2) a = -a;
+            if (flip & 4) b = -b;
+            const Vec2 p0{0.75390625, -0.1875};
+            const Wall w{p0, {p0.x + a / 8, p0.y + b / 8}};
+            for (int k = 1; k <= 3; ++k) {
+                const double R = k * abc[2] / 128.0;
+                // n̂ = (b, −a)/c; the start at a quarter of the wall plus R·n̂ on either side.
+                for (const int side : {-1, 1}) {
+                    const Vec2 on{p0.x + a / 32, p0.y + b / 32};
+                    const Vec2 exact_start{on.x + side * k * b / 128, on.y - side * k * a / 128};
+                    for (const int away : {1, 2})
+                        for (const int skew : {-2, -1, 1, 2}) {
+                            // Away from the wall's line by `away` ulps of y (the side n̂'s y points to).
+                            Vec2 q = exact_start;
+                            const double up = -side * a > 0 ? 1.0 : -1.0;
+                            for (int u = 0; u < away; ++u) q.y = std::nextafter(q.y, up * 1e300);
+                            Vec2 v{a / 16, b / 16};
+                            for (int u = 0; u < std::abs(skew); ++u) v.y = std::nextafter(v.y, skew * 1e300);
+                            Scene s;
+                            s.frames = 1;
+                            s.walls = {w};
+                            s.balls = {{q, v, R}};
+                            int frame_hits = 0;
+                            for (const Event& e : run_scene(s, KernelId::robust, 1)) {
+                                if (e.kind != Event::Kind::hit || ++frame_hits > 1) continue;
+                                ++hits;
+                                const double err = face_contact_error(q, q + v, R, w, e.pos);
+                                const double d_inf = std::fmax(std::fabs(v.x), std::fabs(v.y));
+                                EXPECT_LE(err, 0x1p-40 * d_inf + 0x1p-50)
+                                    << fmt::format("wall {} {} ball {} v {} R {}", w.p0, w.p1, q, v, R);
+                            }
+                            EXPECT_LT(frame_hits, 16) << fmt::format("wall {} {} ball {} v {} R {}", w.p0, w.p1, q, v, R);
+                            EXPECT_EQ(checked(s), "");
+                        }
+                }
+            }
+        }
+    EXPECT_GT(hits, 900);
+    // Random walls (the bench's third kind of grazing leg): B_s and B_e rounded from points of the wall plus R·n̂, so
+    // within ulps of tangent in any direction; |n| is irrational and t_f's cancellation deeper than double-double
+    // can round, where robust once walked a point it had placed two ulps off the contact back to the leg's start.
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int faces = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Wall w{{unit(rng), unit(rng)}, {unit(rng), unit(rng)}};
+        const double R = 0.05 + 0.1 * std::fabs(unit(rng));
+        const double ex = w.p1.x - w.p0.x, ey = w.p1.y - w.p0.y, len = std::hypot(ex, ey);
+        const double nx = ey / len * R, ny = -ex / len * R;
+        const double u0 = 0.1 + 0.3 * std::fabs(unit(rng)), u1 = u0 + 0.2 + 0.3 * std::fabs(unit(rng));
+        const Vec2 q{w.p0.x + u0 * ex + nx, w.p0.y + u0 * ey + ny};
+        const Vec2 b{w.p0.x + u1 * ex + nx, w.p0.y + u1 * ey + ny};
+        const Vec2 v = b - q;
+        const auto c = disc::first_contact(disc::Leg{q, q + v, R}, w);
+        if (!c || c->at_start || c->part != disc::Part::face) continue;
+        ++faces;
+        Scene s;
+        s.frames = 1;
+        s.walls = {w};
+        s.balls = {{q, v, R}};
+        for (const Event& e : run_scene(s, KernelId::robust, 1)) {
+            if (e.kind != Event::Kind::hit) continue;
+            const double d_inf = std::fmax(std::fabs(v.x), std::fabs(v.y));
+            EXPECT_LE(face_contact_error(q, q + v, R, w, e.pos), 0x1p-40 * d_inf + 0x1p-50)
+                << fmt::format("wall {} {} ball {} v {} R {}", w.p0, w.p1, q, v, R);
+            break;
+        }
+    }
+    EXPECT_GT(faces, 300);
+}
+
+TEST(DiscRobust, AGrazingLegThatEndsAtItsRadiusHitsThere) {
+    // The bench's disc-grazing case that ran into the bounce limit: the wall along 8-15-17, the disc 2^−55 farther
+    // than R from its line, v exactly parallel to it; the leg ends at fl(B + v) = (1.37109375, 0.6875), exactly R
+    // from the line, approaching: the exact entry is at t = 1. Robust printed t = 0 sixteen times; now the leg's end,
+    // once. (ghost-bounce is left out: it judges the path B + t·v, parallel to the wall, not the leg to fl(B + v)
+    // that the kernels step, and fails this hit under exact and robust alike.)
+    Scene s;
+    s.frames = 1;
+    s.walls = {{{1.37890625, 0.984375}, {0.75390625, -0.1875}}};
+    s.balls = {{{0.93359375, -0.13281250000000003}, {0.4375, 0.8203125}, 0.1328125}};
+    std::vector<std::string> hits;
+    for (const Event& e : run_scene(s, KernelId::robust, 1))
+        if (e.kind == Event::Kind::hit) hits.push_back(format_event(e));
+    EXPECT_EQ(hits, (std::vector<std::string>{"hit 1 0 0 1.37109375 0.6875"}));
+    const Check checks[] = {Check::no_tunnel, Check::penetration, Check::speed, Check::no_escape, Check::event_order,
+                            Check::deterministic};
+    const CheckedRun run = run_checked(s, KernelId::robust, 4, checks);
+    EXPECT_FALSE(run.error);
+    EXPECT_FALSE(run.failure);
 }
 
 TEST(DiscRobust, BumpersWorkedByHand) {

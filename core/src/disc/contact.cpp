@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "arith.hpp"
 #include "contact_root.hpp"
@@ -64,6 +65,38 @@ struct ApproxFrame {
     static Approx constant(double x) { return approx(x); }
 };
 
+/// Doubles as Approx2 numbers (the second stage) in the filter's frame: p − o is two-sum's exact pair, the scale a
+/// power of two, so every input is exact (e = 0) unless the scaling underflowed.
+struct FineFrame {
+    using T = Approx2;
+    Vec2 o;
+    double s = 1.0;
+    explicit FineFrame(const ApproxFrame& f) : o(f.o), s(f.s) {}
+    /// x·s, exact unless it falls below 2^−1000 (then, 0 included, within 2^−1000 of x·s).
+    static double scale(double x, double k, double& e) {
+        const double y = x * k;
+        if (x != 0.0 && std::fabs(y) < 0x1p-1000) e += 0x1p-1000;
+        return y;
+    }
+    /// (a − b)·s
+    Approx2 difference(double a, double b) const {
+        double h, t;
+        fine::two_sum(a, -b, h, t);
+        Approx2 out;
+        const double hs = scale(h, s, out.e), ts = scale(t, s, out.e);
+        fine::two_sum(hs, ts, out.hi, out.lo);
+        return out;
+    }
+    P2<Approx2> point(Vec2 p) const { return {difference(p.x, o.x), difference(p.y, o.y)}; }
+    P2<Approx2> vector(Vec2 a, Vec2 b) const { return {difference(a.x, b.x), difference(a.y, b.y)}; }
+    Approx2 length(double x) const {
+        Approx2 out;
+        out.hi = scale(x, s, out.e);
+        return out;
+    }
+    static Approx2 constant(double x) { return {x, 0.0, 0.0}; }
+};
+
 /// Doubles as exact integers at the common scale 2^k of every double the decision reads.
 struct ZFrame {
     using T = Z;
@@ -81,11 +114,14 @@ struct ZFrame {
     }
 };
 
-/// Evaluates decision(frame) on the filter's frame, then, only if it could not tell, on the exact one.
+/// Evaluates decision(frame) on the filter's frame, then, only if it could not tell, on the second stage's, and
+/// only if that could not either, on the exact one.
 template <class Decision>
 auto decide(Vec2 origin, std::initializer_list<double> lengths, std::initializer_list<Vec2> points,
             std::initializer_list<double> numbers, Decision&& decision) {
-    if (auto r = decision(ApproxFrame(origin, lengths))) return *r;
+    const ApproxFrame filter(origin, lengths);
+    if (auto r = decision(filter)) return *r;
+    if (auto r = decision(FineFrame(filter))) return *r;
     Scale scale;
     for (Vec2 p : points) scale.add(p);
     for (double x : numbers) scale.add(x);
@@ -197,17 +233,16 @@ std::optional<Answer> circle_contact(const Setup<F>& s, Part part, bool at_centr
     using T = typename F::T;
     const P2<T>& p = s.centre(part);
     const T& rho = s.radius(part);
+    // Not moving closer, d·(q − P) ≥ 0 (at the centre too, which has no normal): |X(t) − P| never decreases along
+    // the leg (its square is convex in t with a slope ≥ 0 at 0), so the leg neither enters the circle nor, within
+    // reach, hits at t = 0. Decided first: the reach of a leg that starts at its last contact is a near-tie.
+    const auto closer = disc::sign(-dot(s.d, p));
+    if (!closer) return std::nullopt;
+    if (*closer >= 0 || at_centre) return Answer{};
     const auto reach = disc::sign(dot(p, p) - rho * rho);
     if (!reach) return std::nullopt;
-    if (*reach <= 0) {
-        // Degenerate: at the centre there is no normal.
-        if (at_centre) return Answer{};
-        // Within reach: a hit at t = 0 if moving closer, d·(q − P) < 0; else leaving, no hit this leg.
-        const auto closer = disc::sign(-dot(s.d, p));
-        if (!closer) return std::nullopt;
-        if (*closer < 0) return Answer{Contact{part, 0, true}};
-        return Answer{};
-    }
+    // Within reach and moving closer: a hit at t = 0.
+    if (*reach <= 0) return Answer{Contact{part, 0, true}};
     const auto in = circle_entered(s.d, p, rho);
     if (!in) return std::nullopt;
     if (*in) return Answer{Contact{part, 0, false}};
@@ -233,6 +268,20 @@ std::optional<Answer> wall_contact(const F& f, const Leg& leg, const Wall& w) {
     }
     const auto side = disc::sign(s.nw);
     if (!side) return std::nullopt;
+    // Not moving closer to the segment (its distance's slope at t = 0: s·(n·d) on the face, d·(q − P_k) at a cap),
+    // or q on the segment (no normal): the distance to the segment is convex along the leg, so it never decreases,
+    // and the leg neither enters the capsule nor, within reach, hits at t = 0: no contact, whatever the reach (a
+    // near-tie for a leg that starts at its last contact).
+    if (nearest == Part::face) {
+        if (*side == 0) return Answer{};
+        const auto away = disc::sign(F::constant(*side) * s.nd);
+        if (!away) return std::nullopt;
+        if (*away >= 0) return Answer{};
+    } else {
+        const auto away = disc::sign(-dot(s.d, s.centre(nearest)));
+        if (!away) return std::nullopt;
+        if (*away >= 0) return Answer{};
+    }
     const T R2nn = s.R * s.R * s.nn;
     if (nearest != Part::face) {
         // Within reach of that cap: its rules (a centre at the end point has no normal).
@@ -243,15 +292,8 @@ std::optional<Answer> wall_contact(const F& f, const Leg& leg, const Wall& w) {
         // Within reach of the face: distance² = (n·w)²/(n·n) ≤ R².
         const auto reach = disc::sign(s.nw * s.nw - R2nn);
         if (!reach) return std::nullopt;
-        if (*reach <= 0) {
-            // Degenerate: a centre on the segment itself has no normal.
-            if (*side == 0) return Answer{};
-            // Moving closer: s·(n·d) < 0, a hit at t = 0; else leaving.
-            const auto closer = disc::sign(F::constant(*side) * s.nd);
-            if (!closer) return std::nullopt;
-            if (*closer < 0) return Answer{Contact{Part::face, static_cast<std::int8_t>(*side), true}};
-            return Answer{};
-        }
+        // Within reach and moving closer (above): a hit at t = 0.
+        if (*reach <= 0) return Answer{Contact{Part::face, static_cast<std::int8_t>(*side), true}};
     }
     // q is outside the capsule: the earliest of the face entry and the cap entries.
     std::optional<Contact> best;
@@ -374,12 +416,14 @@ int compare(const Leg& leg, const Obstacle& a, const Contact& ca, const Obstacle
         using F = std::decay_t<decltype(f)>;
         return compare_roots(root(Setup<F>(f, leg, a), ca), root(Setup<F>(f, leg, b), cb));
     };
-    if (auto r = decision(ApproxFrame(leg.q, {m}))) return *r;
+    const ApproxFrame filter(leg.q, {m});
+    if (auto r = decision(filter)) return *r;
+    if (auto r = decision(FineFrame(filter))) return *r;
     return *decision(ZFrame(leg.q, scale));
 }
 
-double contact_time(const Leg& leg, const Obstacle& o, const Contact& c) {
-    if (c.at_start) return 0.0;
+TimeEstimate contact_time_estimate(const Leg& leg, const Obstacle& o, const Contact& c) {
+    if (c.at_start) return {0.0, 0.0};
     const Vec2 d = leg.b - leg.q;
     double m = std::fmax(inf_norm(d), leg.R);
     if (o.wall != nullptr)
@@ -388,21 +432,82 @@ double contact_time(const Leg& leg, const Obstacle& o, const Contact& c) {
         m = std::fmax(m, std::fmax(inf_norm(o.c - leg.q), o.r));
     const ApproxFrame f(leg.q, {m});
     const Setup<ApproxFrame> s(f, leg, o);
-    double t = 0.0;
+    // t = num/den; each Approx operation rounds its value exactly as the plain double expression would.
+    Approx num, den;
     if (c.part == Part::face) {
         // t_f = (s·n·w − R·|n|)/(−s·n·d)
-        const double side = c.side;
-        t = (side * s.nw.v - s.R.v * std::sqrt(s.nn.v)) / (-side * s.nd.v);
+        const Approx side = approx(c.side);
+        num = side * s.nw - s.R * sqrt(s.nn);
+        den = -(side * s.nd);
     } else {
-        // t_c = (−β − √Δ)/a = γ/(−β + √Δ): the second form has no cancellation (−β > 0).
+        // t_c = (−β − √Δ)/a = γ/(−β + √Δ): the second form has no cancellation (−β > 0). Δ may round below 0
+        // (a grazing entry): √ then takes 0, as √(max(Δ, 0)).
         const P2<Approx>& p = s.centre(c.part);
-        const double rho = s.radius(c.part).v;
-        const double beta = -(s.d.x.v * p.x.v + s.d.y.v * p.y.v);
-        const double a = s.d.x.v * s.d.x.v + s.d.y.v * s.d.y.v;
-        const double gamma = p.x.v * p.x.v + p.y.v * p.y.v - rho * rho;
-        t = gamma / (-beta + std::sqrt(std::fmax(beta * beta - a * gamma, 0.0)));
+        const Approx& rho = s.radius(c.part);
+        const Approx beta = -dot(s.d, p);
+        const Approx a = dot(s.d, s.d);
+        num = dot(p, p) - rho * rho;
+        den = -beta + sqrt(beta * beta - a * num);
     }
+    const double t = num.v / den.v;
+    // |N/D − n/d| ≤ (|N − n| + |t|·|D − d|)/(|d| − |D − d|) for |d| > |D − d|, and the quotient's own rounding;
+    // the factor covers the bound's own roundings.
+    const double room = std::fabs(den.v) - den.e;
+    if (!std::isfinite(t) || !(room > 0.0)) return {t, std::numeric_limits<double>::infinity()};
+    const double error = ((num.e + std::fabs(t) * den.e) / room + std::fabs(t) * k_u) * (1.0 + 0x1p-40);
+    return {t, std::isfinite(error) ? error : std::numeric_limits<double>::infinity()};
+}
+
+double contact_time(const Leg& leg, const Obstacle& o, const Contact& c) {
+    const double t = contact_time_estimate(leg, o, c).t;
     return std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
+}
+
+namespace {
+
+/// A contact's t = (a + b·√c)/d in double-double (it does not depend on the frame's scale).
+Approx2 fine_time(const Leg& leg, const Obstacle& o, const Contact& c) {
+    const Vec2 d = leg.b - leg.q;
+    double m = std::fmax(inf_norm(d), leg.R);
+    if (o.wall != nullptr)
+        m = std::fmax(m, std::fmax(inf_norm(o.wall->p0 - leg.q), inf_norm(o.wall->p1 - leg.q)));
+    else
+        m = std::fmax(m, std::fmax(inf_norm(o.c - leg.q), o.r));
+    const FineFrame f{ApproxFrame(leg.q, {m})};
+    const Root<Approx2> r = root(Setup<FineFrame>(f, leg, o), c);
+    return (r.a + r.b * sqrt(r.c)) / r.d;
+}
+
+/// from + t·(to − from) in double-double, the difference exact as two-sum's pair (unscaled).
+Approx2 along(const Approx2& t, double from, double to) {
+    Approx2 diff;
+    fine::two_sum(to, -from, diff.hi, diff.lo);
+    return Approx2{from, 0.0, 0.0} + t * diff;
+}
+
+}  // namespace
+
+FineContact contact_fine(const Leg& leg, const Obstacle& o, const Contact& c) {
+    if (c.at_start) return {0.0, leg.q, 0.0};
+    const Approx2 t = fine_time(leg, o, c);
+    const double v = t.hi + t.lo;
+    // hi + lo rounds by at most half an ulp of v.
+    const double error = (t.e + std::fabs(v) * 0x1p-53) * (1.0 + 0x1p-40);
+    if (!std::isfinite(v) || !std::isfinite(error)) return {0.0, leg.q, std::numeric_limits<double>::infinity()};
+    const Approx2 x = along(t, leg.q.x, leg.b.x), y = along(t, leg.q.y, leg.b.y);
+    return {v, {x.hi + x.lo, y.hi + y.lo}, error};
+}
+
+std::optional<RoundedContact> nearest_contact_fine(const Leg& leg, const Obstacle& o, const Contact& c) {
+    if (c.at_start) return RoundedContact{0.0, leg.q};
+    const Approx2 t = fine_time(leg, o, c);
+    const auto tn = nearest_double(t);
+    if (!tn) return std::nullopt;
+    const auto x = nearest_double(along(t, leg.q.x, leg.b.x));
+    if (!x) return std::nullopt;
+    const auto y = nearest_double(along(t, leg.q.y, leg.b.y));
+    if (!y) return std::nullopt;
+    return RoundedContact{std::clamp(*tn, 0.0, 1.0), {*x, *y}};
 }
 
 TimeRoot contact_root(const Leg& leg, const Obstacle& o, const Contact& c) {

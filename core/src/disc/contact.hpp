@@ -70,6 +70,38 @@ int compare(const Leg& leg, const Obstacle& a, const Contact& ca, const Obstacle
 /// The contact's leg fraction t, rounded, in [0, 1].
 double contact_time(const Leg& leg, const Obstacle& o, const Contact& c);
 
+/// contact_time's t before clamping, and a bound on its distance to the exact t (∞ when none is known).
+struct TimeEstimate {
+    double t = 0.0;
+    double error = 0.0;
+};
+/// The contact's t from doubles, as contact_time computes it (the same operations, so the same bits), with a
+/// running error bound: large where the formula cancels (a leg that approaches the line or the circle by a few
+/// ulps over its length divides a rounding error by a tiny n·d or √Δ).
+TimeEstimate contact_time_estimate(const Leg& leg, const Obstacle& o, const Contact& c);
+
+/// A contact's leg fraction t and centre B_i = q + t·(b − q), each the double nearest to its exact value.
+struct RoundedContact {
+    double t = 0.0;
+    Vec2 x;
+};
+/// The contact's t (clamped to [0, 1]) and B_i, each the double nearest to its exact value, from the second
+/// stage's double-double (arith.hpp) when its bound decides every rounding; nothing when it cannot (a value too
+/// near a midpoint, or a cancellation deeper than its precision: then exact_disc.cpp's bracket in rationals).
+std::optional<RoundedContact> nearest_contact_fine(const Leg& leg, const Obstacle& o, const Contact& c);
+
+/// A contact from the second stage's double-double: t and B_i = q + t·(b − q) each rounded from their double-double
+/// values (hi + lo), and a bound on t's distance to the exact t.
+struct FineContact {
+    double t = 0.0;
+    Vec2 x;
+    double error = 0.0;
+};
+/// The contact's t and B_i from double-double: t's bound is about 2^−100 relative where contact_time_estimate's is
+/// 2^−53, so a leg that approaches the line by ulps still gets t to 2^−45 or so, and B_i within half an ulp and
+/// that error along the leg.
+FineContact contact_fine(const Leg& leg, const Obstacle& o, const Contact& c);
+
 /// The part of wall w nearest to p, exactly: the face, or the cap at the nearer end ((p − P_k)·e's sign).
 Part nearest_part(Vec2 p, const Wall& w);
 

@@ -58,8 +58,12 @@ bool same(const disc::Constructions::Point& u, const disc::Constructions::Point&
     return u.t == v.t && u.x == v.x;
 }
 
+}  // namespace
+
 /// The contact's time and point, each the double nearest to its exact value (the bracket above).
-disc::Constructions::Point exact_point(const disc::Leg& leg, const disc::Obstacle& o, const disc::Contact& c) {
+disc::Constructions::Point disc::nearest_contact_point(const Leg& leg, const Obstacle& o, const Contact& c) {
+    // The same nearest doubles from double-double where its bound decides them (contact.cpp), without GMP.
+    if (const auto fine = nearest_contact_fine(leg, o, c)) return {fine->t, fine->x};
     const disc::TimeRoot r = disc::contact_root(leg, o, c);
     const Rational a = rat(r.a), b = rat(r.b), d = rat(r.d);
     if (bignum::sign(r.b) == 0 || bignum::sign(r.c) == 0) return round_at(leg, a / d);
@@ -80,7 +84,7 @@ disc::Constructions::Point exact_point(const disc::Leg& leg, const disc::Obstacl
 }
 
 /// v reflected about the exact outward normal at x, each coordinate rounded to the nearest double.
-Vec2 exact_reflect(Vec2 v, Vec2 x, const disc::Obstacle& o) {
+Vec2 disc::nearest_reflection(Vec2 v, Vec2 x, const Obstacle& o) {
     Rational nx, ny;
     if (o.wall == nullptr) {
         nx = rat(x.x) - rat(o.c.x);
@@ -106,11 +110,9 @@ Vec2 exact_reflect(Vec2 v, Vec2 x, const disc::Obstacle& o) {
     return {nearest(rat(v.x) - k * nx), nearest(rat(v.y) - k * ny)};
 }
 
-}  // namespace
-
 FrameStatus ExactKernel::step_disc(Ball& ball, BallMemory& /*memory*/, const Obstacles& obstacles,
                                    std::vector<HitEvent>& hits, StepScratch& scratch) {
-    return disc::step_frame(ball, obstacles, hits, scratch, {&exact_point, &exact_reflect});
+    return disc::step_frame(ball, obstacles, hits, scratch, {&disc::nearest_contact_point, &disc::nearest_reflection});
 }
 
 }  // namespace ricochet

@@ -24,6 +24,14 @@ struct Constructions {
     Vec2 (*reflect)(Vec2 v, Vec2 x, const Obstacle& o) = nullptr;
 };
 
+/// The exact kernel's contact point (exact_disc.cpp): t and each coordinate of B_i the doubles nearest their exact
+/// values. Robust takes it where its own double construction is ill-conditioned.
+Constructions::Point nearest_contact_point(const Leg& leg, const Obstacle& o, const Contact& c);
+
+/// The exact kernel's bounce (exact_disc.cpp): v reflected about the exact outward normal at x, each coordinate the
+/// nearest double. Robust takes it where its own reflection in doubles still goes into the obstacle.
+Vec2 nearest_reflection(Vec2 v, Vec2 x, const Obstacle& o);
+
 /// One frame of a disc (or of a point ball in a scene with bumpers) among the obstacles: every decision exact,
 /// the constructions from make, every rounded contact point walked back until the piece to it keeps the disc
 /// clear (robust_disc.cpp).

@@ -64,6 +64,12 @@ bool piece_allowed(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
     return true;
 }
 
+/// How many doublings walk_back tries before x's own neighbours. A piece that meets the capsule at a grazing angle
+/// gains almost no distance from it along the way back, and whether a rounded point on it is clear is a matter of
+/// its rounding: before the walk goes past 16 ulps, the eight doubles next to x (one ulp in x, in y, or both) are
+/// tried, in a fixed order, and the first allowed kept.
+constexpr int k_walk_before_neighbours = 4;
+
 /// x, or the first point on the way back towards q whose piece from q is allowed (q itself at worst): the walk
 /// of path.hpp's make_safe, 1, 2, 4, … ulps of the piece's largest coordinate, then half the piece, then q.
 Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
@@ -71,7 +77,15 @@ Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
     const Vec2 d = x - q;
     const double m = std::max({std::fabs(q.x), std::fabs(q.y), std::fabs(x.x), std::fabs(x.y)});
     const double d_inf = std::max(std::fabs(d.x), std::fabs(d.y));
-    for (double g = std::max(m * 0x1p-52 / d_inf, 0x1p-60); g < 0.5; g *= 2.0) {
+    int step = 0;
+    for (double g = std::max(m * 0x1p-52 / d_inf, 0x1p-60); g < 0.5; g *= 2.0, ++step) {
+        if (step == k_walk_before_neighbours)
+            for (const double dx : {0.0, -1.0, 1.0})
+                for (const double dy : {0.0, -1.0, 1.0}) {
+                    const Vec2 c{dx == 0.0 ? x.x : std::nextafter(x.x, dx * HUGE_VAL),
+                                 dy == 0.0 ? x.y : std::nextafter(x.y, dy * HUGE_VAL)};
+                    if (c != x && std::isfinite(c.x) && std::isfinite(c.y) && piece_allowed(q, c, R, obstacles)) return c;
+                }
         const Vec2 c = q + (1.0 - g) * d;
         if (c != x && piece_allowed(q, c, R, obstacles)) return c;
     }
@@ -79,13 +93,41 @@ Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
     return piece_allowed(q, half, R, obstacles) ? half : q;
 }
 
-/// Robust's constructions: t_i rounded from doubles (contact_time), B_i = q + t_i·(b − q) in doubles, the bounce
-/// about normal_at's rounded normal with reflect_about.
-disc::Constructions::Point robust_point(const disc::Leg& leg, const disc::Obstacle& o, const disc::Contact& c) {
-    const double t = disc::contact_time(leg, o, c);
-    return {t, t == 0.0 ? leg.q : t == 1.0 ? leg.b : leg.q + t * (leg.b - leg.q)};
+/// The most robust's t_i from doubles may be off by (its running error bound) before a finer construction is taken
+/// instead: a contact point within 2^−40·|b − q| of its exact place along the leg.
+constexpr double k_time_tolerance = 0x1p-40;
+
+/// B_i = q + t·(b − q) in doubles, for a t in (0, 1].
+disc::Constructions::Point on_leg(const disc::Leg& leg, double t) {
+    t = std::min(t, 1.0);
+    return {t, t == 1.0 ? leg.b : leg.q + t * (leg.b - leg.q)};
 }
-Vec2 robust_reflect(Vec2 v, Vec2 x, const disc::Obstacle& o) { return reflect_about(v, disc::normal_at(x, o)); }
+
+/// Robust's constructions: t_i rounded from doubles (contact_time), B_i = q + t_i·(b − q) in doubles, the bounce
+/// about normal_at's rounded normal with reflect_about. Where the doubles cannot place t_i within 2^−40 (a leg
+/// that approaches the line or the circle by ulps over its length: t_i = a rounding error over a tiny n·d or √Δ,
+/// anywhere in [0, 1]), or cannot tell it from 0 (a bounce at the leg's start that would leave the ball where it
+/// was, and the same leg again): the nearest doubles to t_i and B_i where double-double decides them
+/// (nearest_contact_fine), else t_i and B_i rounded from double-double where t_i is within 2^−40 and clear of 0
+/// (contact_fine), else the exact kernel's bracket in rationals (nearest_contact_point).
+disc::Constructions::Point robust_point(const disc::Leg& leg, const disc::Obstacle& o, const disc::Contact& c) {
+    const disc::TimeEstimate e = disc::contact_time_estimate(leg, o, c);
+    if (e.error <= k_time_tolerance && e.t - e.error > 0.0) return on_leg(leg, e.t);
+    if (const auto nearest = disc::nearest_contact_fine(leg, o, c)) return {nearest->t, nearest->x};
+    const disc::FineContact fine = disc::contact_fine(leg, o, c);
+    if (fine.error <= k_time_tolerance && fine.t - fine.error > 0.0)
+        return fine.t >= 1.0 ? disc::Constructions::Point{1.0, leg.b} : disc::Constructions::Point{fine.t, fine.x};
+    return disc::nearest_contact_point(leg, o, c);
+}
+/// v reflected about normal_at's rounded normal with reflect_about, or, where that does not leave the obstacle (a
+/// grazing v, whose normal component is below the rounding of v·n: v′ = v, or v′ exactly parallel, and the frame
+/// would send the disc straight back, or meet the same face again at once), the exact kernel's correctly rounded
+/// reflection (nearest_reflection).
+Vec2 robust_reflect(Vec2 v, Vec2 x, const disc::Obstacle& o) {
+    const Vec2 w = reflect_about(v, disc::normal_at(x, o));
+    if (disc::normal_sign(x, w, o) > 0) return w;
+    return disc::nearest_reflection(v, x, o);
+}
 
 }  // namespace
 
