@@ -30,17 +30,37 @@ namespace {
 /// Most frames a decoded scene runs.
 constexpr std::int64_t k_disc_max_frames = 32;
 
+/// (1 + a byte) · 2^(base + sign·(the next byte % span)): the mantissa's byte read first. Read into variables, in
+/// order: a function's arguments are evaluated in an unspecified order (gcc on x86-64 right to left, on aarch64
+/// and clang left to right), and an input must decode to the same scene on every platform.
+double scaled(ByteReader& in, int base, int sign, unsigned span) {
+    const double m = 1.0 + in.u8();
+    const int e = base + sign * static_cast<int>(in.u8() % span);
+    return std::ldexp(m, e);
+}
+
 /// A radius from every regime: zero of both signs, subnormal, tiny, a small dyadic, any number, huge (to 2^256).
 double radius(ByteReader& in) {
     switch (in.u8() % 8) {
         case 0: return 0.0;
         case 1: return -0.0;
-        case 2: return std::ldexp(1.0 + in.u8(), -static_cast<int>(1000 + in.u8() % 75));  // subnormal or nearly
-        case 3: return std::ldexp(1.0 + in.u8(), -static_cast<int>(20 + in.u8() % 64));   // tiny
-        case 4: return clamp_to_range(std::ldexp(1.0 + in.u8(), 30 + static_cast<int>(in.u8() % 220)));  // huge
+        case 2: return scaled(in, -1000, -1, 75);                  // subnormal or nearly
+        case 3: return scaled(in, -20, -1, 64);                    // tiny
+        case 4: return clamp_to_range(scaled(in, 30, 1, 220));     // huge
         case 5: return in.magnitude();
-        default: return std::ldexp(1.0 + in.u8(), -static_cast<int>(in.u8() % 9));  // 1/256 .. 256
+        default: return scaled(in, 0, -1, 9);                      // 1/256 .. 256
     }
+}
+
+/// |e|, the same double on every platform: std::hypot is libm's and not correctly rounded everywhere; this is
+/// scaled by a power of two (exact) around one correctly rounded square root.
+double length(Vec2 e) {
+    const double big = std::fmax(std::fabs(e.x), std::fabs(e.y));
+    if (big == 0.0 || !std::isfinite(big)) return big;
+    int k = 0;
+    std::frexp(big, &k);
+    const double x = std::ldexp(e.x, -k), y = std::ldexp(e.y, -k);
+    return std::ldexp(std::sqrt(x * x + y * y), k);
 }
 
 /// p moved by d along an axis direction (±x, ±y): exactly tangent where the sum is exact.
@@ -107,8 +127,9 @@ Scene decode(const std::uint8_t* data, std::size_t size, bool bumpers) {
                     // At its radius from a wall's line, beside a point of it: exact for axis-aligned walls.
                     const Wall& w = s.walls[in.u8() % s.walls.size()];
                     const Vec2 e = w.p1 - w.p0;
-                    const double len = std::hypot(e.x, e.y);
-                    const double f = std::ldexp(static_cast<double>(static_cast<std::int8_t>(in.u8())), -static_cast<int>(in.u8() % 8));
+                    const double len = length(e);
+                    const double fm = static_cast<std::int8_t>(in.u8());
+                    const double f = std::ldexp(fm, -static_cast<int>(in.u8() % 8));
                     const Vec2 on{clamp_to_range(w.p0.x + f * e.x), clamp_to_range(w.p0.y + f * e.y)};
                     const double side = in.u8() & 1 ? 1.0 : -1.0;
                     b.pos = len > 0 && std::isfinite(reach / len)
@@ -121,7 +142,8 @@ Scene decode(const std::uint8_t* data, std::size_t size, bool bumpers) {
                 if (!s.walls.empty()) {
                     // At its radius from an end point, along an axis: touching the cap.
                     const Wall& w = s.walls[in.u8() % s.walls.size()];
-                    b.pos = along_axis(in.u8() & 1 ? w.p1 : w.p0, reach, in.u8());
+                    const Vec2 end = in.u8() & 1 ? w.p1 : w.p0;
+                    b.pos = along_axis(end, reach, in.u8());
                     break;
                 }
                 [[fallthrough]];

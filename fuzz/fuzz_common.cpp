@@ -74,7 +74,9 @@ double ByteReader::number() {
         case 5: {
             // A small integer far from the origin: 1e9 and beyond, where an ulp is large.
             const double base = std::ldexp(1.0, 20 + static_cast<int>(u8() % 40));
-            return (u8() & 1 ? -base : base) + static_cast<double>(static_cast<std::int8_t>(u8()));
+            // Read in order (the operands of + are evaluated in an unspecified order).
+            const double signed_base = u8() & 1 ? -base : base;
+            return signed_base + static_cast<double>(static_cast<std::int8_t>(u8()));
         }
         case 6: {
             // Any double; out of range folds back into it keeping the mantissa.
@@ -111,7 +113,8 @@ Vec2 ByteReader::point() {
     } else if (mode == 5 && !walls_.empty()) {
         // On a wall's line: P0 + f·e with f dyadic (inside the segment, at its ends or beyond).
         const Wall& w = walls_[u8() % walls_.size()];
-        const double f = std::ldexp(static_cast<double>(static_cast<std::int8_t>(u8())), -static_cast<int>(u8() % 8));
+        const double fm = static_cast<std::int8_t>(u8());  // read before the exponent: see number()
+        const double f = std::ldexp(fm, -static_cast<int>(u8() % 8));
         p = {clamp_to_range(w.p0.x + f * (w.p1.x - w.p0.x)), clamp_to_range(w.p0.y + f * (w.p1.y - w.p0.y))};
     } else if (mode == 6 && !points_.empty()) {
         // Near a point seen before: a small step away (grazing, corners).
@@ -150,7 +153,8 @@ Vec2 ByteReader::velocity(Vec2 from) {
             if (!walls_.empty()) {
                 // Along a wall, or a few ulps off parallel.
                 const Wall& w = walls_[u8() % walls_.size()];
-                const double k = std::ldexp(static_cast<double>(static_cast<std::int8_t>(u8())), -static_cast<int>(u8() % 8));
+                const double km = static_cast<std::int8_t>(u8());  // read before the exponent: see number()
+                const double k = std::ldexp(km, -static_cast<int>(u8() % 8));
                 v = {nudge(clamp_to_range(k * (w.p1.x - w.p0.x))), nudge(clamp_to_range(k * (w.p1.y - w.p0.y)))};
                 break;
             }
