@@ -67,6 +67,13 @@ TEST_P(Scenes, NoTunnelWalls) {
                  GetParam());
 }
 
+/// The path a scene's plan picks (axis-aligned walls: sides by comparison, wall_plan.hpp) prints the events of the
+/// general path bit for bit; the generators make horizontal, vertical, sloped and zero-length walls, far or near.
+TEST_P(Scenes, PlanChangesNoBits) {
+    run_property({"PlanChangesNoBits", Check::plan, gen::moving_scene(6), checked({Check::plan}, classify_legs), 1500},
+                 GetParam());
+}
+
 /// Balls strictly inside a closed polygon never get out, and never tunnel.
 TEST_P(Scenes, NoEscapeClosedPolygon) {
     run_property({"NoEscapeClosedPolygon", Check::no_escape, gen::polygon_scene(true, 24),

@@ -24,6 +24,7 @@ std::string_view check_name(Check c) {
         case Check::event_order: return "event-order";
         case Check::penetration: return "penetration";
         case Check::ghost_bounce: return "ghost-bounce";
+        case Check::plan: return "plan";
     }
     return "?";
 }
@@ -40,7 +41,8 @@ bool defined_for_discs(Check c) {
         case Check::speed:
         case Check::no_escape:
         case Check::penetration:
-        case Check::ghost_bounce: return true;
+        case Check::ghost_bounce:
+        case Check::plan: return true;
         // Written for points among walls: not yet given a meaning for discs and bumpers.
         case Check::symmetry:
         case Check::boundary:

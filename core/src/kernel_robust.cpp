@@ -5,6 +5,7 @@
 
 #include "kernel_impl.hpp"
 #include "path.hpp"
+#include "ricochet/bits.hpp"
 #include "ricochet/predicates.hpp"
 #include "ricochet/step_trace.hpp"
 #include "robust_leg.hpp"
@@ -35,6 +36,24 @@ bool RobustKernel::circles_overlap(const Circle& a, const Circle& b) { return ex
 
 Vec2 RobustKernel::reflect(Vec2 v, const Wall& w) { return reflect_about(v, normal(w)); }
 
+namespace {
+
+/// n·2^-k with k = ilogb(big), big = |n|∞ > 0: the larger component in [1, 2), exactly as ldexp(n, −k) rounds
+/// (a product by a power of two is correctly rounded, as ldexp is). For a normal big with biased exponent E in
+/// [1, 2045], 2^-k = 2^(1023 − E) is a double whose biased exponent 2046 − E is built directly (2^-1023, E = 2046,
+/// would be subnormal; and a subnormal big has no such 2^-k): those rare cases go to ldexp.
+Vec2 scaled_to_unit(Vec2 n, double big) {
+    const auto e = static_cast<unsigned>((bits_of(big) >> 52) & 0x7ffu);
+    if (e >= 1 && e <= 2045) {
+        const double s = double_of_bits(static_cast<std::uint64_t>(2046 - e) << 52);
+        return {n.x * s, n.y * s};
+    }
+    const int k = std::ilogb(big);
+    return {std::ldexp(n.x, -k), std::ldexp(n.y, -k)};
+}
+
+}  // namespace
+
 Vec2 reflect_about(Vec2 v, Vec2 n) {
     const double big = std::max(std::fabs(n.x), std::fabs(n.y));
     // Degenerate: a zero-length wall (a zero vector) has no normal.
@@ -42,8 +61,7 @@ Vec2 reflect_about(Vec2 v, Vec2 n) {
     // m = n·2^-k with its larger component in [1, 2): exact, and m·m can neither overflow nor underflow,
     // so n̂ = m/|m| is good to a few ulps for walls of any length. sqrt is correctly rounded: the same
     // bits everywhere (std::hypot is not required to be).
-    const int k = std::ilogb(big);
-    const Vec2 m{std::ldexp(n.x, -k), std::ldexp(n.y, -k)};
+    const Vec2 m = scaled_to_unit(n, big);
     const double len = std::sqrt(dot(m, m));
     const Vec2 u{m.x / len, m.y / len};
     // v' = v − 2(v·n̂)n̂; with |n̂| ≈ 1 no intermediate underflows before v itself does.
@@ -58,11 +76,15 @@ Sweep RobustKernel::sweep(Vec2 bs, Vec2 v, const Wall& w) {
     return {Miss::none, s, leg.sb == 0 ? be : bs + s * (be - bs)};
 }
 
-FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> walls,
-                                    std::vector<HitEvent>& hits, StepScratch& scratch, const WallIndex* index) {
-    // Degenerate: a ball at rest does no sweep. The loop below would leave at once with ball and memory
-    // unchanged, bit for bit; returning here says so, and no caller needs a rule of its own for rest.
-    if (ball.vel == Vec2{}) return FrameStatus::ok;
+namespace {
+
+/// RobustKernel::step_ball's frame; Axis: the walls' plan found axis-aligned walls (wall_plan.hpp), whose sides
+/// are comparisons. Both instances make the same decisions, so the same bits.
+template <bool Axis>
+FrameStatus step_frame(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
+                       StepScratch& scratch, const WallIndex* index) {
+    constexpr auto side = exact::detail::side_as<Axis>;
+    const auto reflect = RobustKernel::reflect;
     Vec2 q = ball.pos, v = ball.vel;
     double rest = 1.0, now = 0.0;
     FrameStatus status = FrameStatus::ok;
@@ -81,7 +103,7 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
         // A leg that would leave a contact wall to its far side bounces off that wall instead.
         const Contact* blocked = nullptr;
         for (std::uint8_t k = 0; k < memory.count; ++k)
-            if (exact::side(b, walls[memory.contacts[k].wall]) == -memory.contacts[k].side) {
+            if (side(b, walls[memory.contacts[k].wall]) == -memory.contacts[k].side) {
                 blocked = &memory.contacts[k];
                 break;
             }
@@ -107,7 +129,7 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
         // b's side of the wall bounced off, once its leg test has decided it (2: not tried).
         int bounced_sb = 2;
         for (std::uint32_t i : detail::candidates(walls, index, q, b, scratch.candidates, scratch.all_walls)) {
-            const Leg leg = test_leg(q, b, walls[i]);
+            const Leg leg = test_leg<Axis>(q, b, walls[i]);
             if (traced != nullptr) {
                 scratch.trace->decisions.push_back({i, leg.miss});
                 ++traced->decision_count;
@@ -128,7 +150,7 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
             // No wall meets q → b, so no wall is crossed and none is touched from a side. Straight on from a
             // bounce the ball stays on the side it met that wall from: an end point rounded just across its
             // line (beyond an end) is walked back.
-            if (bounced.wall != nullptr && bounced_sb == 2) bounced_sb = exact::side(b, *bounced.wall);
+            if (bounced.wall != nullptr && bounced_sb == 2) bounced_sb = side(b, *bounced.wall);
             const detail::SafePoint safe =
                 bounced.wall != nullptr && bounced_sb == -bounced.from
                     ? detail::make_safe({.q = q, .r = b, .memory = memory, .walls = walls, .index = index,
@@ -140,7 +162,7 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
             BallMemory kept = end != b ? safe.arrived : BallMemory{};
             for (std::uint8_t k = 0; k < memory.count && end == b; ++k) {
                 const Wall& w = walls[memory.contacts[k].wall];
-                if (exact::side(end, w) == 0 && detail::on_closed_segment(end, w)) kept.contacts[kept.count++] = memory.contacts[k];
+                if (side(end, w) == 0 && detail::on_closed_segment(end, w)) kept.contacts[kept.count++] = memory.contacts[k];
             }
             memory = kept;
             q = end;
@@ -185,6 +207,17 @@ FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<co
     memory.bounced_wall = bounced_wall;
     ball = {q, v};
     return status;
+}
+
+}  // namespace
+
+FrameStatus RobustKernel::step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> walls,
+                                    std::vector<HitEvent>& hits, StepScratch& scratch, const WallIndex* index) {
+    // Degenerate: a ball at rest does no sweep. The frame's loop would leave at once with ball and memory
+    // unchanged, bit for bit; returning here says so, and no caller needs a rule of its own for rest.
+    if (ball.vel == Vec2{}) return FrameStatus::ok;
+    return planned(scratch, walls).axis_aligned != 0 ? step_frame<true>(ball, memory, walls, hits, scratch, index)
+                                                     : step_frame<false>(ball, memory, walls, hits, scratch, index);
 }
 
 }  // namespace ricochet

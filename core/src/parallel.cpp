@@ -67,6 +67,10 @@ void ParallelStepper::step(KernelId k, std::span<Ball> balls, std::span<BallMemo
 #endif
 }
 
+void ParallelStepper::set_plan(const WallPlan& plan) {
+    for (Part& part : parts_) part.scratch.plan = plan;
+}
+
 std::span<const HitEvent> ParallelStepper::hits(std::size_t i) const {
     const BallHits& h = ball_hits_[i];
     return std::span<const HitEvent>(parts_[h.part].hits).subspan(h.first, h.last - h.first);

@@ -9,6 +9,7 @@
 
 #include "ricochet/kernel.hpp"
 #include "ricochet/wall_grid.hpp"
+#include "ricochet/wall_plan.hpp"
 
 namespace ricochet::detail {
 
@@ -24,6 +25,8 @@ public:
     /// (results unchanged).
     void step(KernelId k, std::span<Ball> balls, std::span<BallMemory> memories, const Obstacles& obstacles,
               const WallGrid* prefetch);
+    /// Hands every part the walls' plan (wall_plan.hpp), so that no part works it out again.
+    void set_plan(const WallPlan& plan);
     /// Ball i's hits in the last step, in order.
     std::span<const HitEvent> hits(std::size_t i) const;
     /// Ball i's status in the last step.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "orient_filter.hpp"
 #include "ricochet/predicates.hpp"
 
 namespace ricochet::detail {
@@ -63,15 +64,20 @@ bool piece_allowed(Vec2 q, Vec2 r, const BallMemory& memory, std::span<const Wal
         arrived = memory;
         return true;
     }
+    // The walls' plan picks the cheapest exact side test (wall_plan.hpp); the same sign either way.
+    const bool axis = planned(scratch, walls).axis_aligned != 0;
+    const auto side = [axis](Vec2 p, const Wall& w) {
+        return axis ? exact::detail::side_planned(p, w) : exact::detail::side(p, w);
+    };
     for (std::uint8_t k = 0; k < memory.count; ++k) {
         const Contact& c = memory.contacts[k];
-        if (exact::side(r, walls[c.wall]) == -c.side) return false;
+        if (side(r, walls[c.wall]) == -c.side) return false;
     }
     arrived = BallMemory{};
     for (std::uint32_t i : candidates(walls, index, q, r, scratch.candidates, scratch.all_walls)) {
         const Wall& w = walls[i];
-        const int sq = exact::side(q, w);
-        const int sr = exact::side(r, w);
+        const int sq = side(q, w);
+        const int sr = side(r, w);
         if (sq * sr < 0) {
             // Strictly opposite sides: the piece crosses the line; it tunnels if P0 and P1 are not
             // strictly on one side of the line q → r.

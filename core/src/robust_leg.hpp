@@ -16,17 +16,8 @@ struct Leg {
     int sb = 0;
 };
 
-/// The leg q → b against w: the lecture's five tests, each decided exactly.
-inline Leg test_leg(Vec2 q, Vec2 b, const Wall& w) {
-    // Degenerate: a zero-length wall has no normal, a zero-length leg no motion.
-    if (w.p0 == w.p1 || q == b) return {Miss::degenerate};
-    // Tests 1 and 2 on the exact signs of BC at both ends.
-    const int sq = exact::detail::side(q, w);
-    const int sb = exact::detail::side(b, w);
-    if (sq < 0 && sb < 0) return {Miss::both_inside, sq, sb};
-    if (sq > 0 && sb > 0) return {Miss::both_outside, sq, sb};
-    // Test 3: both on the line, so the motion is along it, n·v = 0.
-    if (sq == 0 && sb == 0) return {Miss::parallel, sq, sb};
+/// Tests 4 and 5, once q and b are known on opposite sides of w's line or one of them on it (not both).
+inline Leg cross_tests(Vec2 q, Vec2 b, const Wall& w, int sq, int sb) {
     if (sq == 0) return {Miss::leaving, sq, sb};
     // Tests 4 and 5 without constructing B_i. The leg meets the line at X = P0 + u·e with
     // u = −o0/(d × e), 1 − u = o1/(d × e), where o_k = orient(q, b, P_k) and sign(d × e) = −sign(sq).
@@ -35,6 +26,37 @@ inline Leg test_leg(Vec2 q, Vec2 b, const Wall& w) {
     if (exact::detail::orient(q, b, w.p0) == -sq) return {Miss::before_p0, sq, sb};
     if (exact::detail::orient(q, b, w.p1) == sq) return {Miss::past_p1, sq, sb};
     return {Miss::none, sq, sb};
+}
+
+/// Tests 1 to 3 on the exact sides sq, sb of q and b, then tests 4 and 5.
+inline Leg side_tests(Vec2 q, Vec2 b, const Wall& w, int sq, int sb) {
+    if (sq < 0 && sb < 0) return {Miss::both_inside, sq, sb};
+    if (sq > 0 && sb > 0) return {Miss::both_outside, sq, sb};
+    // Test 3: both on the line, so the motion is along it, n·v = 0.
+    if (sq == 0 && sb == 0) return {Miss::parallel, sq, sb};
+    return cross_tests(q, b, w, sq, sb);
+}
+
+/// The leg q → b against w: the lecture's five tests, each decided exactly. Axis: the scene has axis-aligned
+/// walls (wall_plan.hpp), whose sides are comparisons (orient_filter.hpp, side_planned); the same decisions
+/// either way.
+template <bool Axis = false>
+[[gnu::always_inline]] inline Leg test_leg(Vec2 q, Vec2 b, const Wall& w) {
+    if constexpr (Axis) {
+        // Classified once for both ends; e = 0 only on a zero-length wall, which has no normal: degenerate.
+        const exact::detail::AxisWall a = exact::detail::axis_wall(w);
+        if (a.kind != 0) {
+            if (a.e == 0 || q == b) return {Miss::degenerate};
+            using exact::detail::sign_of_difference;
+            // axis_side at both ends, with the coordinate picked once.
+            if (a.kind == 1) return side_tests(q, b, w, a.e * sign_of_difference(q.y, a.c), a.e * sign_of_difference(b.y, a.c));
+            return side_tests(q, b, w, a.e * sign_of_difference(q.x, a.c), a.e * sign_of_difference(b.x, a.c));
+        }
+    }
+    // Degenerate: a zero-length wall has no normal, a zero-length leg no motion.
+    if (w.p0 == w.p1 || q == b) return {Miss::degenerate};
+    // Tests 1 and 2 on the exact signs of BC at both ends.
+    return side_tests(q, b, w, exact::detail::side(q, w), exact::detail::side(b, w));
 }
 
 }  // namespace ricochet::robust

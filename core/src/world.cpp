@@ -7,6 +7,7 @@
 
 #include "parallel.hpp"
 #include "ricochet/format.hpp"
+#include "ricochet/wall_plan.hpp"
 
 namespace ricochet {
 
@@ -36,6 +37,9 @@ World::World(const Scene& scene, KernelId kernel, WorldOptions options)
       memories_(scene.balls.size()),
       stepper_(std::make_unique<detail::ParallelStepper>(options.threads)) {
     if (auto why = unsupported_scene(kernel, balls_, bumpers_.size())) throw UnsupportedScene(*why);
+    // The scene is looked at once, here. Without a plan every decision takes the general path: a plan that
+    // describes the walls and found none axis-aligned (the same bits, wall_plan.hpp).
+    stepper_->set_plan(options.plan ? plan_walls(walls_) : WallPlan{walls_.data(), walls_.size(), 0});
     if (options.broad_phase == BroadPhase::none) return;
     // The exact kernel always tries every wall: a wall index would be built for nothing.
     if (kernel != KernelId::exact && !walls_.empty()) {

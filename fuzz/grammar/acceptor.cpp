@@ -19,15 +19,15 @@ constexpr std::size_t k_from_limit = 64;
 constexpr std::int64_t k_frame_limit = 10'000'000;
 
 constexpr std::array<std::string_view, 4> k_kernels = {"lecture-float", "lecture-double", "robust", "exact"};
-constexpr std::array<std::string_view, 16> k_checks = {
+constexpr std::array<std::string_view, 17> k_checks = {
     "no-tunnel",   "symmetry",    "boundary",   "speed",     "deterministic", "oracle",   "swap",       "translation",
     "broad-phase", "round-trip",  "no-escape",  "bounce-side", "accuracy",    "event-order", "penetration",
-    "ghost-bounce"};
+    "ghost-bounce", "plan"};
 
 /// The checks "Checks" defines for a log with discs or bumpers.
-constexpr std::array<std::string_view, 9> k_disc_checks = {"no-tunnel",  "speed",     "deterministic", "broad-phase",
+constexpr std::array<std::string_view, 10> k_disc_checks = {"no-tunnel",  "speed",     "deterministic", "broad-phase",
                                                            "round-trip", "no-escape", "event-order",   "penetration",
-                                                           "ghost-bounce"};
+                                                           "ghost-bounce", "plan"};
 
 template <std::size_t N>
 bool one_of(const std::array<std::string_view, N>& names, std::string_view s) {

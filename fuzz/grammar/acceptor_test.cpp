@@ -101,7 +101,7 @@ TEST(GrammarAcceptor, CheckNames) {
     std::string all = h;
     for (const char* c : {"no-tunnel", "symmetry", "boundary", "speed", "deterministic", "oracle", "swap", "translation",
                           "broad-phase", "round-trip", "no-escape", "bounce-side", "accuracy", "event-order", "penetration",
-                          "ghost-bounce"})
+                          "ghost-bounce", "plan"})
         all += std::string("check ") + c + "\n";
     accepted(all);
     rejected_at(h + "check speedy\n", 2);
@@ -197,7 +197,7 @@ TEST(GrammarAcceptor, DiscsAndBumpers) {
     // Only the checks defined for discs and bumpers: an error at the first other check line, after the whole-log
     // checks of the expect lines.
     accepted(h + "ball 0 0 1 1 0.5\ncheck deterministic\ncheck broad-phase\ncheck round-trip\ncheck event-order\n");
-    accepted(h + "bumper 0 0 1\ncheck no-tunnel\ncheck speed\ncheck no-escape\ncheck penetration\ncheck ghost-bounce\n");
+    accepted(h + "bumper 0 0 1\ncheck no-tunnel\ncheck speed\ncheck no-escape\ncheck penetration\ncheck ghost-bounce\ncheck plan\n");
     accepted(h + "ball 0 0 1 1 0\ncheck oracle\ncheck penetration\n");  // R = 0: a point ball
     rejected_at(h + "check boundary\nball 0 0 1 1 0.5\n", 2);
     rejected_at(h + "check round-trip\ncheck oracle\nbumper 0 0 1\ncheck boundary\n", 3);

@@ -27,13 +27,14 @@ enum class Check : std::uint8_t {
     event_order,
     penetration,
     ghost_bounce,
+    plan,
 };
 /// Every check, in the order of the enumeration.
-inline constexpr std::array<Check, 16> k_all_checks = {
+inline constexpr std::array<Check, 17> k_all_checks = {
     Check::no_tunnel, Check::symmetry,    Check::boundary,    Check::speed,       Check::deterministic,
     Check::oracle,    Check::swap,        Check::translation, Check::broad_phase, Check::round_trip,
     Check::no_escape, Check::bounce_side, Check::accuracy,    Check::event_order, Check::penetration,
-    Check::ghost_bounce};
+    Check::ghost_bounce, Check::plan};
 /// The check's name as logs spell it ("no-tunnel", …).
 std::string_view check_name(Check c);
 /// The check called name, or nothing.

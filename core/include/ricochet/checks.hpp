@@ -119,11 +119,14 @@
 //                  the disc can at most touch W, and a tangent is no hit. Exactly on the printed doubles
 //                  (truth::parallel_clear_of_line). Later hits in a frame are not judged: the velocity a ball
 //                  leaves a hit with is not printed.
+//   plan           The scene stepped with every decision on the general exact path (WorldOptions::plan off, the
+//                  run's other options) prints the checked run's events bit for bit: the path a scene's plan picks
+//                  (wall_plan.hpp) changes the time a decision takes, never its answer.
 //
 // Discs and bumpers: in a scene with a disc or a bumper only the checks defined_for_discs (check.hpp) names are
 // defined: no-tunnel, speed, no-escape (each as written above, read for the disc's centre: its printed path, its
 // velocity; m counts the bounces off bumpers and the corner reflections too), deterministic, broad-phase,
-// round-trip, event-order (a bump names a bumper of the scene and no shape), penetration and ghost-bounce.
+// round-trip, event-order (a bump names a bumper of the scene and no shape), penetration, ghost-bounce and plan.
 // run_checked refuses any other (UnsupportedScene), the reader rejects its `check` line.
 //
 // speed, oracle and accuracy read the frame's StepTrace: each ball is stepped again from its state and memory before

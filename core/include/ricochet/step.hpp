@@ -3,9 +3,11 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "ricochet/vec2.hpp"
+#include "ricochet/wall_plan.hpp"
 
 namespace ricochet {
 
@@ -33,6 +35,15 @@ struct StepScratch {
     /// If set, step_ball fills it with the frame's legs, decisions and reflections (appending; the caller
     /// clears it). Unset, a step pays one null test per leg and per reflection.
     StepTrace* trace = nullptr;
+    /// The plan of the walls last stepped among (wall_plan.hpp), made on the first step among them and again
+    /// only when a step names other walls: a scene is looked at once per scratch, not once per frame.
+    WallPlan plan;
 };
+
+/// scratch.plan, made afresh first if it does not describe these walls.
+inline const WallPlan& planned(StepScratch& scratch, std::span<const Wall> walls) {
+    if (!scratch.plan.describes(walls)) scratch.plan = plan_walls(walls);
+    return scratch.plan;
+}
 
 }  // namespace ricochet

@@ -61,6 +61,9 @@ struct WorldOptions {
     unsigned threads = 1;                       ///< threads stepping the balls (0 is taken as 1)
     GridOptions grid{};                         ///< the wall grid's layout (the World raises the margin
                                                 ///< to k_float_margin for lecture-float)
+    /// Look at the walls once and let each decision take the cheapest exact path they allow (wall_plan.hpp);
+    /// false takes the general path everywhere (the `plan` check compares the two).
+    bool plan = true;
 };
 
 namespace detail {

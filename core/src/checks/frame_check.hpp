@@ -51,6 +51,7 @@ std::unique_ptr<FrameCheck> make_accuracy(const Scene& scene, KernelId kernel, c
 std::unique_ptr<FrameCheck> make_event_order(const Scene& scene, KernelId kernel, const WorldOptions& world);
 std::unique_ptr<FrameCheck> make_penetration(const Scene& scene, KernelId kernel, const WorldOptions& world);
 std::unique_ptr<FrameCheck> make_ghost_bounce(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_plan(const Scene& scene, KernelId kernel, const WorldOptions& world);
 
 /// A failure of check c at frame f for ball.
 inline CheckFailure failure(Check c, std::int64_t f, std::uint32_t ball, std::string message) {

@@ -55,6 +55,7 @@ std::unique_ptr<FrameCheck> make_check(Check c, const Scene& scene, KernelId ker
         case Check::event_order: return make_event_order(scene, kernel, world);
         case Check::penetration: return make_penetration(scene, kernel, world);
         case Check::ghost_bounce: return make_ghost_bounce(scene, kernel, world);
+        case Check::plan: return make_plan(scene, kernel, world);
     }
     return nullptr;
 }
