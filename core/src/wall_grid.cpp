@@ -98,7 +98,8 @@ void WallGrid::query(Vec2 a, Vec2 b, std::vector<std::uint32_t>& out) const {
     int cells = 0;
     visit(a, b, [&](std::size_t c) {
         ++cells;
-        out.insert(out.end(), items_.begin() + start_[c], items_.begin() + start_[c + 1]);
+        // A cell holds a few walls: element by element beats insert's range copy (a memmove call) here.
+        for (std::uint32_t k = start_[c], end = start_[c + 1]; k < end; ++k) out.push_back(items_[k]);
     });
     // One cell holds each wall once; several cells may share walls.
     if (cells > 1) dedupe_tail(out, base);

@@ -2,6 +2,8 @@
 // per bounce, shared by every kernel.
 #pragma once
 
+#include <cmath>
+
 namespace ricochet {
 
 /// Largest accepted magnitude of any coordinate, radius or velocity component.
@@ -19,7 +21,8 @@ inline constexpr double k_speed_rel_bound = 0x1p-48;
 /// is subnormal (each operation then errs by up to 2^-1075 absolutely, not relatively): 2^-1068.
 inline constexpr double k_speed_abs_bound = 0x1p-1068;
 
-/// True if x is finite and |x| ≤ k_coordinate_limit.
-bool in_range(double x);
+/// True if x is finite and |x| ≤ k_coordinate_limit: one comparison, as |±∞| > k_coordinate_limit and NaN
+/// compares false (inline: every kernel's frame asks it of four numbers twice).
+inline bool in_range(double x) { return std::fabs(x) <= k_coordinate_limit; }
 
 }  // namespace ricochet
