@@ -16,6 +16,7 @@
 
 #include "box2d_peer.hpp"
 #include "ricochet_bench/result_file.hpp"
+#include "ricochet_bench/targets.hpp"
 #include "ricochet/predicates.hpp"
 #include "ricochet/wall_grid.hpp"
 #include "ricochet/world.hpp"
@@ -272,6 +273,41 @@ void measure(const Config& cfg, const std::string& sweep, int n, std::size_t bal
     }
 }
 
+/// The maze targets: robust+grid at most limit ns per ball-frame in the walls sweep's maze of about `walls` walls
+/// (within a factor of 2: the lattice rounds), with Box2D's row at the same point.
+bench::Verdict maze_target(const std::vector<Row>& rows, std::string label, double walls, double limit) {
+    bench::Verdict v{.workload = std::move(label), .limit = limit, .target = fmt::format("≤ {} ns", limit)};
+    const auto at = [&](const Row& r, const char* method) {
+        const double w = static_cast<double>(r.walls);
+        return r.sweep == "walls" && r.method == method && w >= walls / 2 && w <= walls * 2;
+    };
+    for (const Row& r : rows)
+        if (at(r, "robust+grid")) {
+            v.value = r.ns_per_ball_frame;
+            v.robust = fmt::format("{:.0f} ns per ball-frame ({} walls, {} balls), {} tunnels", r.ns_per_ball_frame,
+                                   r.walls, r.balls, r.tunnels);
+            for (const Row& p : rows)
+                if (at(p, "box2d-2.4.1"))
+                    v.peers = fmt::format("Box2D 2.4.1 {:.0f} ns ({:.1f}×), {} tunnels", p.ns_per_ball_frame,
+                                          p.ns_per_ball_frame / r.ns_per_ball_frame, p.tunnels);
+        }
+    return v;
+}
+
+/// The maze and thread targets of one run (bench/include/ricochet_bench/targets.hpp); speed_up2: the thread sweep's
+/// speed-up on 2 threads, NaN if it had fewer.
+std::vector<bench::Verdict> scale_targets(const std::vector<Row>& rows, double speed_up2, std::size_t walls,
+                                          std::size_t balls) {
+    std::vector<bench::Verdict> out{maze_target(rows, "maze, 10^4 walls", 1e4, 50),
+                                    maze_target(rows, "maze, 10^5 walls", 1e5, 80),
+                                    maze_target(rows, "maze, 10^6 walls", 1e6, 80)};
+    bench::Verdict t{.workload = "2 threads against 1", .value = speed_up2, .limit = 1.96, .at_least = true,
+                     .target = "≥ 1.96× (kept)"};
+    if (!std::isnan(speed_up2)) t.robust = fmt::format("speed-up {:.2f}× ({} walls, {} balls)", speed_up2, walls, balls);
+    out.push_back(t);
+    return out;
+}
+
 int lattice_for(std::size_t walls) { return std::max(2, static_cast<int>(std::lround(std::sqrt(static_cast<double>(walls))))); }
 
 }  // namespace
@@ -287,6 +323,8 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
     for (std::size_t w : cfg.wall_sizes) measure(cfg, "walls", lattice_for(w), cfg.sweep_balls, rows);
     for (std::size_t b : cfg.ball_sizes) measure(cfg, "balls", lattice_for(cfg.maze_walls), b, rows);
 
+    double speed_up2 = NAN;
+    std::size_t thread_walls = 0;
     // Threads: the headline scene (10^4 walls, 10^5 balls; smaller with --smoke) on 1 .. max_threads threads.
     {
         const int n = lattice_for(cfg.maze_walls);
@@ -299,6 +337,7 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
         for (unsigned t = 1; t < max_threads; t *= 2) counts.push_back(t);
         counts.push_back(max_threads);
         double one = 0;
+        thread_walls = walls.size();
         for (unsigned t : counts) {
             World world(scene, KernelId::robust, {.broad_phase = BroadPhase::grid, .threads = t});
             std::vector<Event> events;
@@ -310,6 +349,7 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
                                  cfg.budget)
                                  .wall;
             if (t == 1) one = s;
+            if (t == 2) speed_up2 = one / s;
             Row r;
             r.sweep = "threads";
             r.method = "robust+grid";
@@ -374,6 +414,13 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
     const std::string cmd = fmt::format("gnuplot '{}/scale.gp'", out_dir);
     if (std::system(cmd.c_str()) != 0) fmt::print("gnuplot failed; the data is in {}\n", csv_path);
     fmt::print("wrote {}, {}/scale.png\n", csv_path, out_dir);
+
+    bench::report_targets(scale_targets(rows, speed_up2, thread_walls, cfg.thread_balls),
+                          size == ScaleSize::smoke
+                              ? "scale targets (--smoke: sizes too small to measure; a check of the table only)"
+                              : fmt::format("scale targets: ricochet bench scale{}, one thread unless stated",
+                                            size_flag(size)),
+                          out_dir + "/scale_targets.md");
 
     long long robust_tunnels = 0;
     for (const Row& r : rows)

@@ -11,8 +11,8 @@ namespace ricochet {
 /// walls and 1 000 balls, a second: a correctness check of every column, not a measurement).
 enum class ScaleSize { full, quick, smoke };
 
-/// Runs the scale benchmark: prints the table, writes OUT_DIR/scale.csv, scale.dat, scale.gp and (with
-/// gnuplot) scale.png. threads: the most threads for the thread sweep (0: all cores). Returns 0, or 1 if
+/// Runs the scale benchmark: prints the table and the maze and thread targets' verdicts, writes OUT_DIR/scale.csv,
+/// scale.dat, scale.gp, scale_targets.md and (with gnuplot) scale.png. threads: the most threads for the thread sweep (0: all cores). Returns 0, or 1 if
 /// the robust kernel tunnelled (never expected).
 int run_scale_bench(ScaleSize size, unsigned threads = 0, const std::string& out_dir = "bench-results");
 

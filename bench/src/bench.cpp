@@ -16,6 +16,7 @@
 
 #include <fmt/format.h>
 
+#include "bench_targets.hpp"
 #include "disc_score.hpp"
 #include "disc_workloads.hpp"
 #include "methods.hpp"
@@ -23,6 +24,7 @@
 #include "ricochet/batch.hpp"
 #include "ricochet/predicates.hpp"
 #include "ricochet/tunnel.hpp"
+#include "row.hpp"
 #include "workloads.hpp"
 
 namespace ricochet::bench {
@@ -71,23 +73,6 @@ Sizes sizes(const Options& o) {
     return {200000, 7, 64, 20000};
 }
 
-/// One row of the table.
-struct Row {
-    std::string kind;  // sweep, static, box, extra
-    std::string workload;
-    std::string method;
-    std::size_t n = 0;
-    double ns = NAN;     // median ns per query (or per ball-frame, per pair)
-    double ratio = NAN;  // against lecture-double in the same run
-    long fn = -1, fp = -1, conv = -1;
-    double t_ulps = NAN, t_abs = NAN, p_ulps = NAN, p_abs = NAN;
-    long tunnels = -1;
-    long escaped = -1;  // balls that ended the run outside the box
-    double drift = NAN;
-    // Disc rows (disc_score.hpp): wrong obstacle or part, ghost bounces, printed points inside and how deep.
-    long part = -1, ghosts = -1, inside = -1;
-    double depth = NAN, depth_rel = NAN;
-};
 
 std::string cell(long v) { return v < 0 ? "-" : fmt::format("{}", v); }
 std::string cell(double v, const char* f = "{:.3g}") {
@@ -599,6 +584,11 @@ int run_bench(const Options& opt) {
                " hit decisions differing from the exact truth (truth.hpp); part = hits whose wall, bumper or face/cap differs\n"
                " from exact's; ghosts = hits on a leg sliding past a joint at its radius; inside = printed contact points\n"
                " closer than R (R + r) to an obstacle, exactly; depth = the deepest, R - distance, absolute and over R)\n");
+    // The speed targets on this run's own rows: the README's table "Where each speed target stands".
+    report_targets(bench_targets(rows),
+                   opt.smoke ? "speed targets (--smoke: sizes too small to measure; a check of the table only)"
+                             : "speed targets: robust against lecture-double in this run",
+                   opt.out_dir + "/targets.md");
     const std::string csv = opt.out_dir + "/bench.csv";
     write_csv(rows, csv);
     fmt::print("wrote {}\n", csv);

@@ -78,7 +78,23 @@ case "$case" in
                    bad=$(grep '^[a-z]*,robust+grid,' "$csv" | awk -F, '$10 > 0' | head -n 1)
                    [ -z "$bad" ] || fail "robust tunnelled: $bad"
                    grep -q '^walls,robust+grid,[0-9]*,100,1,[^,]*,[^,]*,[^,]*,[^,]*,0,500$' "$csv" ||
-                     fail "the walls sweep checked not 100 balls x 5 frames with 0 tunnels" ;;
+                     fail "the walls sweep checked not 100 balls x 5 frames with 0 tunnels"
+                   # The scale targets: no maze of 10^4 walls or more in --smoke, so those are not measured; the
+                   # thread sweep ran on 2 threads, so its row has a verdict (which one is the machine's business).
+                   md=$dir/res/scale_targets.md
+                   [ -s "$md" ] || fail "no scale_targets.md"
+                   [ "$(grep -c '^| maze, 10^[456] walls | .* | not measured | ' "$md")" = 3 ] || fail "maze rows not 'not measured'"
+                   grep -q '^| 2 threads against 1 | speed-up [0-9.]*× .* | ≥ 1.96× (kept) | \(met\|\*\*missed\*\*\) | ' "$md" ||
+                     fail "no verdict on the 2-thread row" ;;
+  targets)         # bench --smoke: the speed targets, a verdict each, printed and written to targets.md.
+                   "$bench" bench --smoke --no-chart --out "$dir/res" >"$dir/out" 2>"$dir/err" || fail "exit $?"
+                   md=$dir/res/targets.md
+                   [ -s "$md" ] || fail "no targets.md"
+                   [ "$(grep -c '^| [a-z]' "$md")" = 11 ] || fail "not a header and 10 targets in targets.md"
+                   [ "$(grep -c ' | \(met\|\*\*missed\*\*\) | ' "$md")" = 10 ] || fail "not 10 verdicts in targets.md"
+                   grep -q '^| closed box, turned | [0-9.]* ns per ball-frame, 0 tunnels | [0-9.]*× | ≤ 1.5× | ' "$md" ||
+                     fail "no closed-box row with robust's time, 0 tunnels and its ratio"
+                   grep -qF "$(sed -n 4p "$md")" "$dir/out" || fail "the table is not printed too" ;;
   *) echo "unknown case $case" >&2; exit 1 ;;
 esac
 echo "ok $case"
