@@ -2,6 +2,12 @@
 // is least sure: legs ending on the wall, aimed at its end points, grazing, tiny motions, far away.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "ricochet/batch.hpp"
 #include "workloads.hpp"
 
@@ -60,6 +66,65 @@ TEST(Batch, EqualsRobustOnExactlyDegenerateLegs) {
     qs.push_back({{1e300, 1e300}, {-1e300, -1e300}, w});
     qs.push_back({{1e-310, 3e-310}, {2e-310, -4e-310}, Wall{{0, 0}, {4e-310, 2e-310}}});
     expect_same(qs, qs.size());
+}
+
+const SweepWorkload& workload(const std::vector<SweepWorkload>& wls, const std::string& name) {
+    for (const SweepWorkload& wl : wls)
+        if (wl.name == name) return wl;
+    throw std::runtime_error("no workload " + name);
+}
+
+/// q scaled by 2^k: exact while nothing under- or overflows, so a leg ending a rounding away from its wall's line
+/// stays that close at every scale; where the scaling rounds, the scaled query is just another degenerate input.
+SweepQuery scaled(const SweepQuery& q, int k) {
+    const auto s = [k](Vec2 p) { return Vec2{std::ldexp(p.x, k), std::ldexp(p.y, k)}; };
+    return {s(q.bs), s(q.v), Wall{s(q.wall.p0), s(q.wall.p1)}};
+}
+
+/// Many balls against one wall, every leg ending on it (as the bench's batch rows): every lane degenerate.
+std::vector<SweepQuery> one_wall(const char* kind, std::size_t n, std::uint64_t seed) {
+    const Wall w{{-0.7 + 0.01 * static_cast<double>(seed), 0.3}, {0.9, -0.55 + 0.02 * static_cast<double>(seed)}};
+    return one_wall_workload(kind, w, n, seed).queries;
+}
+
+TEST(Batch, EqualsRobustOnLegsEndingOnTheWallAtEveryScale) {
+    // The lanes the filter declines and the second stage decides (batch.cpp), from subnormal to near overflow:
+    // scales where that stage's guards (|l| + |r| in [2^-900, 2^900]) send lanes on to the exact predicates too.
+    const std::vector<SweepWorkload> wls = sweep_workloads(32, 5);
+    std::vector<std::pair<std::string, std::vector<SweepQuery>>> sets;
+    for (const char* name : {"end-on-wall", "at-endpoint", "grazing"}) sets.emplace_back(name, workload(wls, name).queries);
+    for (const char* kind : {"end-on-wall", "grazing"}) sets.emplace_back(std::string(kind) + " one wall", one_wall(kind, 40, 3));
+    for (const auto& [name, queries] : sets)
+        for (int k = -1074; k <= 1020; k += 53) {
+            SCOPED_TRACE(name + " scaled by 2^" + std::to_string(k));
+            std::vector<SweepQuery> qs;
+            for (const SweepQuery& q : queries) qs.push_back(scaled(q, k));
+            expect_same(qs, 8);
+        }
+}
+
+TEST(Batch, TheSecondStageDecidesLegsEndingOnTheWall) {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+    if (!__builtin_cpu_supports("avx512f")) GTEST_SKIP() << "no AVX-512F: every pair takes the exact predicates";
+#else
+    GTEST_SKIP() << "not x86-64: every pair takes the exact predicates";
+#endif
+    // Many balls against one wall, every end point the double nearest a point of the wall: the filter alone leaves
+    // about 70 % of these lanes to the exact predicates; with the second stage a lane goes there only if the
+    // stage's bound cannot place it. A count, not a time: the same inputs give the same count on every AVX-512F
+    // machine.
+    std::size_t slow = 0, lanes = 0;
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+        const std::vector<SweepQuery> qs = one_wall("end-on-wall", 1024, seed);
+        std::vector<double> x, y, vx, vy;
+        for (const SweepQuery& q : qs) x.push_back(q.bs.x), y.push_back(q.bs.y), vx.push_back(q.v.x), vy.push_back(q.v.y);
+        std::vector<Miss> out(qs.size());
+        slow += sweep_decisions(BallsSoA{x, y, vx, vy}, qs[0].wall, out);
+        lanes += qs.size();
+        for (std::size_t i = 0; i < qs.size(); ++i)
+            ASSERT_EQ(out[i], sweep(KernelId::robust, qs[i].bs, qs[i].v, qs[i].wall).miss) << "seed " << seed << " ball " << i;
+    }
+    EXPECT_LE(slow * 100, lanes) << slow << " of " << lanes << " lanes left to the exact predicates";
 }
 
 }  // namespace

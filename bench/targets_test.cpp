@@ -43,7 +43,7 @@ TEST(Targets, TheBoundIsMetAndTheNextDoublePastItMissed) {
     EXPECT_EQ(named(vs, "closed box, turned").robust, "100.0 ns per ball-frame, 0 tunnels");
     EXPECT_EQ(named(vs, "closed box, turned").ratio, "1.49×");
     EXPECT_EQ(verdict_word(named(vs, "batch, end-on-wall pairs")), "met");
-    EXPECT_EQ(named(vs, "batch, end-on-wall pairs").robust, "10.0 ns per pair, 70.0 % of lanes to the exact path");
+    EXPECT_EQ(named(vs, "batch, end-on-wall pairs").robust, "10.0 ns per pair, 70.0 % of lanes to the exact predicates");
     EXPECT_EQ(verdict_word(named(vs, "batch, uniform pairs")), "**missed**");
     // Rows the run lacks, and a lecture-double missing from a workload (no ratio): not measured, never met.
     EXPECT_EQ(verdict_word(named(vs, "closed box")), "not measured");

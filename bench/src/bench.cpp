@@ -406,7 +406,7 @@ std::vector<Row> extras(const Sizes& sz, std::uint64_t seed, int reps) {
         b.ratio = b.ns / s.ns;
         b.fn = wrong;  // here: decisions differing from sweep(robust)
         b.fp = 0;
-        // conv column here: the share of lanes the filter left to the exact path, per mille.
+        // conv column here: the share of lanes left to the exact predicates (after both SIMD stages), per mille.
         b.conv = static_cast<long>(1000.0 * static_cast<double>(slow) / static_cast<double>(nb * walls * static_cast<std::size_t>(reps)));
         rows.push_back(s);
         rows.push_back(b);
@@ -576,7 +576,7 @@ int run_bench(const Options& opt) {
     fmt::print(" box rows: ns per ball-frame, tunnels = events where the printed path crosses a wall (exact TunnelChecker;\n"
                " a bounce point rounded past the wall and back counts 2), escaped = balls outside the box at the end, drift = max | |v_end|/|v_0| - 1 |;\n"
                " batch rows: ns per ball-wall decision, FN = decisions differing from sweep(robust), conv = lanes left to the\n"
-               " exact path, per mille;\n"
+               " exact predicates after the SIMD filter and second stage, per mille;\n"
                " conv = disagreements where exact's miss rests on a convention: leaving the line, moving along it)\n");
     fmt::print("\n");
     print_disc_table(disc_rows);

@@ -48,8 +48,8 @@ Verdict batch_target(std::span<const Row> rows, std::string label, std::string_v
     if (const Row* r = find(rows, workload, "robust-batch"); r != nullptr && !std::isnan(r->ns)) {
         v.value = r->ns;
         v.robust = fmt::format("{:.1f} ns per pair", r->ns);
-        // conv: lanes the filter left to the scalar exact path, per mille.
-        if (r->conv >= 0) v.robust += fmt::format(", {:.1f} % of lanes to the exact path", 0.1 * static_cast<double>(r->conv));
+        // conv: lanes left to the scalar exact predicates (after both SIMD stages), per mille.
+        if (r->conv >= 0) v.robust += fmt::format(", {:.1f} % of lanes to the exact predicates", 0.1 * static_cast<double>(r->conv));
     }
     return v;
 }

@@ -1,9 +1,10 @@
 // Batched robust sweep decisions (batch.hpp). Eight lanes at a time (AVX-512F where the CPU has it):
 // each lane evaluates the four orientation determinants of the robust kernel's leg test (robust_leg.hpp) with exactly
-// the operations of exact::orient's filter (so the certified signs are the same bits), and any lane
-// whose needed signs are not certified is decided again, alone, by the exact predicates. Without
-// AVX-512F every pair goes through the exact predicates one at a time (their own filter first), which
-// gives the same decisions at the scalar robust cost.
+// the operations of exact::orient's filter (so the certified signs are the same bits); the signs it declines get the
+// exact path's second stage (staged_sign.hpp, bounded_det) in the same eight lanes, and a lane whose needed signs
+// are still not certified is decided again, alone, by the exact predicates. Every certified sign is the exact one,
+// so the decisions are robust's whichever stage certifies them. Without AVX-512F every pair goes through the exact
+// predicates one at a time (their own filter first), which gives the same decisions at the scalar robust cost.
 #include "ricochet/batch.hpp"
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 
 #include "ricochet/predicates.hpp"
 #include "robust_leg.hpp"
+#include "staged_sign.hpp"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
@@ -50,8 +52,61 @@ struct Signs {
             _mm512_cmp_pd_mask(_mm512_abs_pd(value), bound, _CMP_GT_OQ)};
 }
 
-/// Eight lanes of the leg test; writes eight Miss codes to out and returns the mask of lanes the filter
-/// left undecided (their codes are garbage until the caller decides them exactly).
+/// A difference a − b in eight lanes: its rounded head and its exact rounding error (Shewchuk's Two-Diff, exact for
+/// every finite a, b whose difference does not overflow; the tail is 0 when the difference is exact).
+struct Diff8 {
+    __m512d head, tail;
+};
+
+[[gnu::target("avx512f"), gnu::always_inline]] inline Diff8 two_diff(__m512d a, __m512d b) {
+    const __m512d x = _mm512_sub_pd(a, b);
+    const __m512d b_virtual = _mm512_sub_pd(a, x);
+    const __m512d a_virtual = _mm512_add_pd(x, b_virtual);
+    const __m512d b_round = _mm512_sub_pd(b_virtual, b);
+    const __m512d a_round = _mm512_sub_pd(a, a_virtual);
+    return {x, _mm512_add_pd(a_round, b_round)};
+}
+
+/// staged::bounded_det in eight lanes: sign((A + a)(B + b) − (C + c)(D + d)) from l = fl(A·B), r = fl(C·D), each
+/// tail at most ε of its head. The same operations in the same order (le = fma(A, B, −l) is one rounding, as
+/// std::fma; l − r = s + t exactly by Two-Diff, as two_sum(l, −r)), so the derivation over bounded_det holds lane by
+/// lane: certain where |est| > k_det_tail·(|l| + |r|) with |l| + |r| in [k_tiny, k_stage_huge], never a zero.
+[[gnu::target("avx512f"), gnu::always_inline]] inline Signs bounded_det(Diff8 p, Diff8 q, Diff8 u, Diff8 v, __m512d l,
+                                                                         __m512d r) {
+    const __m512d big = _mm512_add_pd(_mm512_abs_pd(l), _mm512_abs_pd(r));
+    const __mmask8 usable = _mm512_cmp_pd_mask(big, _mm512_set1_pd(k_tiny), _CMP_GE_OQ) &
+                              _mm512_cmp_pd_mask(big, _mm512_set1_pd(exact::staged::k_stage_huge), _CMP_LE_OQ);
+    const __m512d le = _mm512_fmsub_pd(p.head, q.head, l);
+    const __m512d re = _mm512_fmsub_pd(u.head, v.head, r);
+    const Diff8 st = two_diff(l, r);
+    // rest = ((t + le) − re) + ((A·b + a·B) − (C·d + c·D)); est = s + rest.
+    const __m512d first = _mm512_sub_pd(_mm512_add_pd(st.tail, le), re);
+    const __m512d ab = _mm512_add_pd(_mm512_mul_pd(p.head, q.tail), _mm512_mul_pd(p.tail, q.head));
+    const __m512d cd = _mm512_add_pd(_mm512_mul_pd(u.head, v.tail), _mm512_mul_pd(u.tail, v.head));
+    const __m512d est = _mm512_add_pd(st.head, _mm512_add_pd(first, _mm512_sub_pd(ab, cd)));
+    const __m512d bound = _mm512_mul_pd(_mm512_set1_pd(exact::staged::k_det_tail), big);
+    return {_mm512_cmp_pd_mask(est, _mm512_setzero_pd(), _CMP_LT_OQ),
+            static_cast<__mmask8>(usable & _mm512_cmp_pd_mask(_mm512_abs_pd(est), bound, _CMP_GT_OQ))};
+}
+
+/// s, with the lanes it left uncertain taken from t where t is certain (both exact signs where both are certain).
+[[gnu::target("avx512f"), gnu::always_inline]] inline Signs either(Signs s, Signs t) {
+    const auto taken = static_cast<__mmask8>(t.certain & ~s.certain);
+    return {static_cast<__mmask8>((s.neg & s.certain) | (t.neg & taken)), static_cast<__mmask8>(s.certain | t.certain)};
+}
+
+/// The four orientation signs of a leg test (oq, ob: orient(P0, P1, q) and (…, b); o0, o1: orient(q, b, P0) and
+/// (…, P1)) and the lanes they decide: the same certified side at both ends decides alone; otherwise all four.
+struct LegSigns {
+    Signs oq, ob, o0, o1;
+    __mmask8 decided() const {
+        const __mmask8 inside = static_cast<__mmask8>(~oq.neg & ~ob.neg), outside = oq.neg & ob.neg;
+        return oq.certain & ob.certain & (inside | outside | (o0.certain & o1.certain));
+    }
+};
+
+/// Eight lanes of the leg test; writes eight Miss codes to out and returns the mask of lanes left undecided
+/// (their codes are garbage until the caller decides them exactly).
 [[gnu::target("avx512f"), gnu::always_inline]] inline __mmask8 lanes(__m512d qx, __m512d qy, __m512d vx, __m512d vy,
                                                                      __m512d x0, __m512d y0, __m512d x1, __m512d y1,
                                                                      Miss* out) {
@@ -63,30 +118,40 @@ struct Signs {
     const __m512d eqx = _mm512_sub_pd(qx, x1), eqy = _mm512_sub_pd(qy, y1);  // q − P1
     const __m512d ebx = _mm512_sub_pd(bx, x1), eby = _mm512_sub_pd(by, y1);  // b − P1
     // orient(P0, P1, q) = (P0 − q) × (P1 − q) = (q − P0) × (q − P1); side(q) = −orient(P0, P1, q).
-    const Signs oq = filtered(_mm512_mul_pd(dqx, eqy), _mm512_mul_pd(dqy, eqx));
-    const Signs ob = filtered(_mm512_mul_pd(dbx, eby), _mm512_mul_pd(dby, ebx));
+    const __m512d lq = _mm512_mul_pd(dqx, eqy), rq = _mm512_mul_pd(dqy, eqx);
+    const __m512d lb = _mm512_mul_pd(dbx, eby), rb = _mm512_mul_pd(dby, ebx);
     // orient(q, b, P0) = (q − P0) × (b − P0); orient(q, b, P1) = (q − P1) × (b − P1).
-    const Signs o0 = filtered(_mm512_mul_pd(dqx, dby), _mm512_mul_pd(dqy, dbx));
-    const Signs o1 = filtered(_mm512_mul_pd(eqx, eby), _mm512_mul_pd(eqy, ebx));
+    const __m512d l0 = _mm512_mul_pd(dqx, dby), r0 = _mm512_mul_pd(dqy, dbx);
+    const __m512d l1 = _mm512_mul_pd(eqx, eby), r1 = _mm512_mul_pd(eqy, ebx);
+    LegSigns s{filtered(lq, rq), filtered(lb, rb), filtered(l0, r0), filtered(l1, r1)};
+    // Degenerate: a zero-length leg, b = q.
+    const __mmask8 still = _mm512_cmp_pd_mask(bx, qx, _CMP_EQ_OQ) & _mm512_cmp_pd_mask(by, qy, _CMP_EQ_OQ);
+    if (static_cast<__mmask8>(~(s.decided() | still)) != 0) {
+        // Stage 2 for the lanes the filter declined (a leg ending a rounding away from the wall's line: the
+        // end-on-wall lanes); its tails are formed only here, so a batch the filter decides pays nothing for it.
+        const Diff8 Dqx = two_diff(qx, x0), Dqy = two_diff(qy, y0), Dbx = two_diff(bx, x0), Dby = two_diff(by, y0);
+        const Diff8 Eqx = two_diff(qx, x1), Eqy = two_diff(qy, y1), Ebx = two_diff(bx, x1), Eby = two_diff(by, y1);
+        s.oq = either(s.oq, bounded_det(Dqx, Eqy, Dqy, Eqx, lq, rq));
+        s.ob = either(s.ob, bounded_det(Dbx, Eby, Dby, Ebx, lb, rb));
+        s.o0 = either(s.o0, bounded_det(Dqx, Dby, Dqy, Dbx, l0, r0));
+        s.o1 = either(s.o1, bounded_det(Eqx, Eby, Eqy, Ebx, l1, r1));
+    }
+    const Signs oq = s.oq, ob = s.ob, o0 = s.o0, o1 = s.o1;
     // On certain lanes (no zeros): side = −orient, so Inside (sq < 0) where orient > 0.
     const __mmask8 inside = static_cast<__mmask8>(~oq.neg & ~ob.neg), outside = oq.neg & ob.neg;
     // before P0 iff sign(orient(q, b, P0)) = −sq = sign(orient(P0, P1, q)); past P1 iff sign(orient(q, b, P1)) = sq.
     const __mmask8 before = static_cast<__mmask8>(~(o0.neg ^ oq.neg));
     const __mmask8 past = o1.neg ^ oq.neg;
     // Lowest priority first, so that each later blend overrides: test_leg's order reversed. (Parallel
-    // and leaving need a zero side, which the filter never certifies: those lanes go to the fallback.)
+    // and leaving need a zero side, which no stage here certifies: those lanes go to the fallback.)
     __m512i code = _mm512_set1_epi64(static_cast<long long>(Miss::none));
     code = _mm512_mask_blend_epi64(past, code, _mm512_set1_epi64(static_cast<long long>(Miss::past_p1)));
     code = _mm512_mask_blend_epi64(before, code, _mm512_set1_epi64(static_cast<long long>(Miss::before_p0)));
     code = _mm512_mask_blend_epi64(outside, code, _mm512_set1_epi64(static_cast<long long>(Miss::both_outside)));
     code = _mm512_mask_blend_epi64(inside, code, _mm512_set1_epi64(static_cast<long long>(Miss::both_inside)));
-    // Degenerate: a zero-length leg, b = q.
-    const __mmask8 still = _mm512_cmp_pd_mask(bx, qx, _CMP_EQ_OQ) & _mm512_cmp_pd_mask(by, qy, _CMP_EQ_OQ);
     code = _mm512_mask_blend_epi64(still, code, _mm512_set1_epi64(static_cast<long long>(Miss::degenerate)));
     _mm_storel_epi64(reinterpret_cast<__m128i*>(out), _mm512_cvtepi64_epi8(code));
-    // The same certified side at both ends decides alone; otherwise all four signs are needed.
-    const __mmask8 decided = oq.certain & ob.certain & (inside | outside | (o0.certain & o1.certain));
-    return static_cast<__mmask8>(~(decided | still));
+    return static_cast<__mmask8>(~(s.decided() | still));
 }
 
 // The two AVX-512F loops below run only on a CPU that has it (have_avx512): not on this project's CI

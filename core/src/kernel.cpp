@@ -127,8 +127,7 @@ namespace {
 template <class Step>
 FrameStatus step_in_range(Ball& ball, BallMemory& memory, std::vector<HitEvent>& hits, Step&& step) {
     const auto ok = [](const Ball& b) {
-        // & rather than &&: four comparisons and one branch.
-        return in_range(b.pos.x) & in_range(b.pos.y) & in_range(b.vel.x) & in_range(b.vel.y);
+        return in_range(b.pos.x) && in_range(b.pos.y) && in_range(b.vel.x) && in_range(b.vel.y);
     };
     if (!ok(ball)) return FrameStatus::out_of_range;
     Ball next = ball;

@@ -1,7 +1,8 @@
 // Batched robust sweep decisions: many balls against one wall, or one ball against many walls, with
 // the inputs laid out as a structure of arrays so that the floating-point filter runs in SIMD lanes.
 // Every decision equals sweep(KernelId::robust, …).miss exactly: the lanes compute bit-for-bit the
-// filter of exact::orient, and a lane the filter cannot certify is decided by the exact predicates.
+// filter of exact::orient, then for the signs it declines the exact path's second stage (a double-double
+// estimate against a proven bound), and a lane neither certifies is decided by the exact predicates.
 #pragma once
 
 #include <cstddef>
@@ -22,11 +23,11 @@ struct WallsSoA {
 };
 
 /// Robust decisions for every ball of balls against w: out[i] = sweep(robust, Bs_i, v_i, w).miss.
-/// out must hold balls.x.size() entries. Returns how many lanes the filter left to the exact path.
+/// out must hold balls.x.size() entries. Returns how many lanes were left to the exact predicates.
 std::size_t sweep_decisions(const BallsSoA& balls, const Wall& w, std::span<Miss> out);
 
 /// Robust decisions for one ball (bs, v) against every wall of walls: out[i] = sweep(robust, bs, v, wall i).miss.
-/// out must hold walls.x0.size() entries. Returns how many lanes the filter left to the exact path.
+/// out must hold walls.x0.size() entries. Returns how many lanes were left to the exact predicates.
 std::size_t sweep_decisions(Vec2 bs, Vec2 v, const WallsSoA& walls, std::span<Miss> out);
 
 }  // namespace ricochet
