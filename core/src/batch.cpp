@@ -67,12 +67,13 @@ struct Diff8 {
     return {x, _mm512_add_pd(a_round, b_round)};
 }
 
-/// staged::bounded_det in eight lanes: sign((A + a)(B + b) − (C + c)(D + d)) from l = fl(A·B), r = fl(C·D), each
+/// staged::bounded_det in eight lanes: sign((A + a)(B + b) − (C + c)(D + d)) with l = fl(A·B), r = fl(C·D), each
 /// tail at most ε of its head. The same operations in the same order (le = fma(A, B, −l) is one rounding, as
 /// std::fma; l − r = s + t exactly by Two-Diff, as two_sum(l, −r)), so the derivation over bounded_det holds lane by
 /// lane: certain where |est| > k_det_tail·(|l| + |r|) with |l| + |r| in [k_tiny, k_stage_huge], never a zero.
-[[gnu::target("avx512f"), gnu::always_inline]] inline Signs bounded_det(Diff8 p, Diff8 q, Diff8 u, Diff8 v, __m512d l,
-                                                                         __m512d r) {
+[[gnu::target("avx512f"), gnu::always_inline]] inline Signs bounded_det(Diff8 p, Diff8 q, Diff8 u, Diff8 v) {
+    // l and r as the filter formed them: the same products of the same heads.
+    const __m512d l = _mm512_mul_pd(p.head, q.head), r = _mm512_mul_pd(u.head, v.head);
     const __m512d big = _mm512_add_pd(_mm512_abs_pd(l), _mm512_abs_pd(r));
     const __mmask8 usable = _mm512_cmp_pd_mask(big, _mm512_set1_pd(k_tiny), _CMP_GE_OQ) &
                               _mm512_cmp_pd_mask(big, _mm512_set1_pd(exact::staged::k_stage_huge), _CMP_LE_OQ);
@@ -105,6 +106,20 @@ struct LegSigns {
     }
 };
 
+/// The signs s with those the filter declined decided by stage 2 where it can, for the legs q → b (the differences'
+/// tails formed here; their heads are the filter's differences, the same operations on the same inputs).
+[[gnu::target("avx512f"), gnu::noinline]] LegSigns second_stage(LegSigns s, __m512d qx, __m512d qy, __m512d bx,
+                                                                 __m512d by, __m512d x0, __m512d y0, __m512d x1,
+                                                                 __m512d y1) {
+    const Diff8 dqx = two_diff(qx, x0), dqy = two_diff(qy, y0), dbx = two_diff(bx, x0), dby = two_diff(by, y0);
+    const Diff8 eqx = two_diff(qx, x1), eqy = two_diff(qy, y1), ebx = two_diff(bx, x1), eby = two_diff(by, y1);
+    s.oq = either(s.oq, bounded_det(dqx, eqy, dqy, eqx));
+    s.ob = either(s.ob, bounded_det(dbx, eby, dby, ebx));
+    s.o0 = either(s.o0, bounded_det(dqx, dby, dqy, dbx));
+    s.o1 = either(s.o1, bounded_det(eqx, eby, eqy, ebx));
+    return s;
+}
+
 /// Eight lanes of the leg test; writes eight Miss codes to out and returns the mask of lanes left undecided
 /// (their codes are garbage until the caller decides them exactly).
 [[gnu::target("avx512f"), gnu::always_inline]] inline __mmask8 lanes(__m512d qx, __m512d qy, __m512d vx, __m512d vy,
@@ -126,15 +141,12 @@ struct LegSigns {
     LegSigns s{filtered(lq, rq), filtered(lb, rb), filtered(l0, r0), filtered(l1, r1)};
     // Degenerate: a zero-length leg, b = q.
     const __mmask8 still = _mm512_cmp_pd_mask(bx, qx, _CMP_EQ_OQ) & _mm512_cmp_pd_mask(by, qy, _CMP_EQ_OQ);
-    if (static_cast<__mmask8>(~(s.decided() | still)) != 0) {
-        // Stage 2 for the lanes the filter declined (a leg ending a rounding away from the wall's line: the
-        // end-on-wall lanes); its tails are formed only here, so a batch the filter decides pays nothing for it.
-        const Diff8 Dqx = two_diff(qx, x0), Dqy = two_diff(qy, y0), Dbx = two_diff(bx, x0), Dby = two_diff(by, y0);
-        const Diff8 Eqx = two_diff(qx, x1), Eqy = two_diff(qy, y1), Ebx = two_diff(bx, x1), Eby = two_diff(by, y1);
-        s.oq = either(s.oq, bounded_det(Dqx, Eqy, Dqy, Eqx, lq, rq));
-        s.ob = either(s.ob, bounded_det(Dbx, Eby, Dby, Ebx, lb, rb));
-        s.o0 = either(s.o0, bounded_det(Dqx, Dby, Dqy, Dbx, l0, r0));
-        s.o1 = either(s.o1, bounded_det(Eqx, Eby, Eqy, Ebx, l1, r1));
+    // Stage 2 for the lanes the filter declined (a leg ending a rounding away from the wall's line: the end-on-wall
+    // lanes), out of line: a batch the filter decides pays a branch for it.
+    auto undecided = static_cast<__mmask8>(~(s.decided() | still));
+    if (undecided != 0) {
+        s = second_stage(s, qx, qy, bx, by, x0, y0, x1, y1);
+        undecided = static_cast<__mmask8>(~(s.decided() | still));
     }
     const Signs oq = s.oq, ob = s.ob, o0 = s.o0, o1 = s.o1;
     // On certain lanes (no zeros): side = −orient, so Inside (sq < 0) where orient > 0.
@@ -151,7 +163,7 @@ struct LegSigns {
     code = _mm512_mask_blend_epi64(inside, code, _mm512_set1_epi64(static_cast<long long>(Miss::both_inside)));
     code = _mm512_mask_blend_epi64(still, code, _mm512_set1_epi64(static_cast<long long>(Miss::degenerate)));
     _mm_storel_epi64(reinterpret_cast<__m128i*>(out), _mm512_cvtepi64_epi8(code));
-    return static_cast<__mmask8>(~(s.decided() | still));
+    return undecided;
 }
 
 // The two AVX-512F loops below run only on a CPU that has it (have_avx512): not on this project's CI
