@@ -10,7 +10,9 @@
 // closed box (box, box-turned, box-far-1e6, box-far-1e12: N ball-frames, 8 balls of `ricochet bench --quick`'s
 // box stepped N/8 frames each, the loop in run_frames alone:  --toggle-collect='*run_frames*'); or a disc workload
 // (disc-uniform, disc-grazing, disc-cap, disc-joint, bumper) of src/disc_workloads.cpp: one frame of step_ball per
-// query, as `ricochet bench` times it, the loop in run_queries; "hit" counts the frames with a contact. The fallback
+// query, as `ricochet bench` times it, the loop in run_queries; "hit" counts the frames with a contact; or the maze
+// of `ricochet bench scale` (maze: 10 444 walls, 2 000 balls in a World with the grid, N/2000 frames, the loop in
+// run_frames; "hit" counts the events). The fallback
 // counts are the point predicates' (predicates.hpp): the disc code keeps none, so they read 0 for a disc workload.
 // Exit status 2 for an unknown workload or kernel, or a count or seed that is not a number.
 #include <algorithm>
@@ -23,7 +25,9 @@
 
 #include "ricochet/kernel.hpp"
 #include "ricochet/predicates.hpp"
+#include "ricochet/world.hpp"
 #include "disc_workloads.hpp"
+#include "scale_bench.hpp"
 #include "workloads.hpp"
 
 using namespace ricochet;
@@ -84,6 +88,18 @@ namespace {
     return bounces;
 }
 
+/// A World stepped frames frames (the maze: the scale bench's scene, grid on, one thread): how many events.
+[[gnu::noinline]] long run_frames(World& world, std::uint64_t frames) {
+    std::vector<Event> events;
+    long n = 0;
+    for (std::uint64_t f = 0; f < frames; ++f) {
+        events.clear();
+        (void)world.step(events);
+        n += static_cast<long>(events.size());
+    }
+    return n;
+}
+
 std::optional<std::uint64_t> number(const char* s) {
     try {
         std::size_t used = 0;
@@ -130,6 +146,17 @@ int main(int argc, char** argv) {
             const std::vector<Ball> balls = make_balls(box.offset, box.angle, k_balls, *seed + 2);
             answers = run_frames(box, balls, std::max<std::uint64_t>(*n / k_balls, 1), *kernel);
         }
+    if (!answers && name == "maze") {
+        // The scale bench's maze of lattice 100 (10 444 walls, drawn from seed 1100 as the bench draws it) and 2 000
+        // balls (seed 4000, as its walls sweep with --quick), the World made first; N ball-frames; SEED unused.
+        constexpr int k_lattice = 100;
+        constexpr std::uint64_t k_balls = 2000;
+        Scene scene;
+        scene.walls = scale::make_maze(k_lattice, 1000 + k_lattice);
+        scene.balls = scale::make_balls(k_balls, k_lattice, 2000 + k_balls);
+        World world(scene, *kernel, {.broad_phase = BroadPhase::grid, .threads = 1});
+        answers = run_frames(world, std::max<std::uint64_t>(*n / k_balls, 1));
+    }
     if (!answers) return usage(fmt::format("unknown workload '{}'", name));
 
     const exact::FallbackCounts f = exact::fallback_counts();

@@ -33,13 +33,8 @@ void Box2dPeer::step(FloatBall&, std::vector<Vec2>*) const {}
 }  // namespace scale
 #endif
 
-namespace {
+namespace scale {
 
-using Clock = std::chrono::steady_clock;
-using scale::FloatBall;
-
-/// A maze on an n×n lattice of pitch 1: the closed border and each inner lattice edge with
-/// probability 1/2, so about n² walls.
 std::vector<Wall> make_maze(int n, std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     std::bernoulli_distribution coin(0.5);
@@ -59,7 +54,6 @@ std::vector<Wall> make_maze(int n, std::uint64_t seed) {
     return walls;
 }
 
-/// Balls at random points of the maze, random directions, 0.05 to 0.5 cells a frame.
 std::vector<Ball> make_balls(std::size_t count, int n, std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> pos(0.001, n - 0.001), angle(0.0, 6.283185307179586), speed(0.05, 0.5);
@@ -71,6 +65,15 @@ std::vector<Ball> make_balls(std::size_t count, int n, std::uint64_t seed) {
     }
     return balls;
 }
+
+}  // namespace scale
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using scale::FloatBall;
+using scale::make_balls;
+using scale::make_maze;
 
 /// Seconds per frame: wall-clock and this thread's CPU time (on a shared machine the CPU time leaves
 /// out the time the thread waited for a core).

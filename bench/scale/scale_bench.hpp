@@ -3,9 +3,23 @@
 // b2DynamicTree, one RayCast per ball per leg), with each method's tunnelling count; CSV and chart.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
+#include <vector>
+
+#include "ricochet/shapes.hpp"
 
 namespace ricochet {
+
+namespace scale {
+/// The maze of the bench: an n×n lattice of pitch 1, its closed border and each inner lattice edge a wall with
+/// probability 1/2 (about n² walls). The bench draws a maze of lattice n from seed 1000 + n.
+std::vector<Wall> make_maze(int n, std::uint64_t seed);
+/// count balls at random points of a lattice-n maze, random directions, 0.05 to 0.5 cells a frame. The bench draws
+/// b balls from seed 2000 + b.
+std::vector<Ball> make_balls(std::size_t count, int n, std::uint64_t seed);
+}  // namespace scale
 
 /// How big the scenes are: full (to 10^6 walls and balls), quick (to 10^5, about a minute), smoke (to 100
 /// walls and 1 000 balls, a second: a correctness check of every column, not a measurement).
