@@ -26,8 +26,8 @@ std::vector<Ball> make_balls(std::size_t count, int n, std::uint64_t seed);
 enum class ScaleSize { full, quick, smoke };
 
 /// Runs the scale benchmark: prints the table and the maze and thread targets' verdicts, writes OUT_DIR/scale.csv,
-/// scale.dat, scale.gp, scale_targets.md and (with gnuplot) scale.png. threads: the most threads for the thread sweep (0: all cores). Returns 0, or 1 if
-/// the robust kernel tunnelled (never expected).
+/// scale.dat, scale.gp, scale_targets.md and (with gnuplot) scale.png. threads: the most threads for the thread
+/// sweep (0: all cores). Returns 0, or 1 if the robust kernel tunnelled (never expected).
 int run_scale_bench(ScaleSize size, unsigned threads = 0, const std::string& out_dir = "bench-results");
 
 }  // namespace ricochet

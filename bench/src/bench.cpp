@@ -73,7 +73,6 @@ Sizes sizes(const Options& o) {
     return {200000, 7, 64, 20000};
 }
 
-
 std::string cell(long v) { return v < 0 ? "-" : fmt::format("{}", v); }
 std::string cell(double v, const char* f = "{:.3g}") {
     return std::isnan(v) ? "-" : fmt::format(fmt::runtime(f), v);

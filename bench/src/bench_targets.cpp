@@ -49,7 +49,8 @@ Verdict batch_target(std::span<const Row> rows, std::string label, std::string_v
         v.value = r->ns;
         v.robust = fmt::format("{:.1f} ns per pair", r->ns);
         // conv: lanes left to the scalar exact predicates (after both SIMD stages), per mille.
-        if (r->conv >= 0) v.robust += fmt::format(", {:.1f} % of lanes to the exact predicates", 0.1 * static_cast<double>(r->conv));
+        if (r->conv >= 0)
+            v.robust += fmt::format(", {:.1f} % of lanes to the exact predicates", 0.1 * static_cast<double>(r->conv));
     }
     return v;
 }
