@@ -1,4 +1,4 @@
-// Issue 16's speed targets judged on one `ricochet bench` run (bench_targets.hpp).
+// The README's speed targets judged on one `ricochet bench` run (bench_targets.hpp).
 #include "bench_targets.hpp"
 
 #include <array>

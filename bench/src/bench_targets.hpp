@@ -1,4 +1,5 @@
-// Internal: issue 16's speed targets on `ricochet bench`'s own rows (targets.hpp says what a verdict is).
+// Internal: the README's speed targets ("Where each speed target stands") on `ricochet bench`'s own rows (targets.hpp
+// says what a verdict is).
 #pragma once
 
 #include <span>
