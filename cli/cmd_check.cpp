@@ -1,5 +1,5 @@
 // `ricochet check`: the whole regression gate. Replays the project's corpus (--replay-dir, else
-// $RICOCHET_REPLAY_DIR, else replays/ of the project folder: ricochet_cli/project.hpp), runs the lecture's
+// $RICOCHET_REPLAY_DIR, else replays/ of the project folder: ricochet_app/project.hpp), runs the lecture's
 // pinball example, then the property suite if it was built, then a short fuzz campaign if the fuzz targets
 // were built (both saving what they find into that same folder); one summary, non-zero exit if anything
 // failed, 2 if there is no project. SIGINT or SIGTERM stops it between two stages (a stage's replay between
@@ -20,10 +20,10 @@
 #include "ricochet/checks.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/scene_log.hpp"
-#include "ricochet_cli/json.hpp"
-#include "ricochet_cli/json_stdout.hpp"
-#include "ricochet_cli/project.hpp"
-#include "ricochet_cli/stop_signal.hpp"
+#include "ricochet_app/json.hpp"
+#include "ricochet_app/json_stdout.hpp"
+#include "ricochet_app/project.hpp"
+#include "ricochet_app/stop_signal.hpp"
 
 extern char** environ;
 
@@ -55,7 +55,7 @@ int run_program(const std::vector<std::string>& argv, const std::vector<std::str
         std::_Exit(127);
     }
     // A SIGINT or SIGTERM that reached check only (not its process group) is passed on.
-    return wait_passing_stop(pid);
+    return app::wait_passing_stop(pid);
 }
 
 std::string self_exe() {
@@ -125,9 +125,9 @@ void register_check(CLI::App& app) {
         if (opt->fuzz_time < 0) opt->fuzz_time = env_fuzz_seconds();
         // Plug-ins before the corpus: their failure logs there name their kernels.
         load_plugins_or_exit(opt->plugins);
-        const auto project = find_project(opt->replay_dir);
+        const auto project = app::find_project(opt->replay_dir);
         if (!project) {
-            fmt::print(stderr, "{}\n", no_project_message("check", "run it in a project folder or pass --replay-dir DIR"));
+            fmt::print(stderr, "{}\n", app::no_project_message("check", "run it in a project folder or pass --replay-dir DIR"));
             throw Exit{2};
         }
         const std::filesystem::path replays = project->replay_dir;
@@ -139,21 +139,21 @@ void register_check(CLI::App& app) {
         bool failed = false;
         // Under --json every stage's output, the children's too, goes to stderr; the document is built as
         // the stages run.
-        JsonStdout json_out(opt->json);
-        JsonWriter json;
-        json.begin_object().member("schema", fmt::format("ricochet-check/{}", k_json_schema_version));
+        app::JsonStdout json_out(opt->json);
+        app::JsonWriter json;
+        json.begin_object().member("schema", fmt::format("ricochet-check/{}", app::k_json_schema_version));
         json.member("replay_dir", replays.string()).key("stages").begin_object();
         // stage(NAME, STATUS): opens the stage's object; the caller adds members and closes it.
-        const auto stage = [&](std::string_view name, std::string_view status) -> JsonWriter& {
+        const auto stage = [&](std::string_view name, std::string_view status) -> app::JsonWriter& {
             return json.key(name).begin_object().member("status", status);
         };
         // The end, after the last stage or at a SIGINT or SIGTERM between two: the summary (or the
         // document) of the stages that ran, then the exit.
-        const StopOnSignal stop;
+        const app::StopOnSignal stop;
         const auto finish = [&] {
             json.end_object();
-            const bool stopped = stop_requested();
-            const int code = stopped ? stop_exit_code() : failed ? 1 : 0;
+            const bool stopped = app::stop_requested();
+            const int code = stopped ? app::stop_exit_code() : failed ? 1 : 0;
             if (json_out.on()) {
                 json_out.restore();
                 write_stdout(json.member("stopped", stopped).member("passed", code == 0).member("exit", code).end_object().str());
@@ -161,7 +161,7 @@ void register_check(CLI::App& app) {
             }
             fmt::print("== summary\n");
             for (const auto& s : summary) fmt::print("{}\n", s);
-            fmt::print("{}\n", stopped ? fmt::format("check stopped by {}", stop_signal_name()) : failed ? "check FAILED" : "check passed");
+            fmt::print("{}\n", stopped ? fmt::format("check stopped by {}", app::stop_signal_name()) : failed ? "check FAILED" : "check passed");
             throw Exit{code};
         };
         const auto timed = [](auto&& f) {
@@ -179,7 +179,7 @@ void register_check(CLI::App& app) {
         stage("replay", r.failed > 0 || r.bad_input ? "failed" : "passed").member("seconds", t_replay);
         write_replay_members(json, r);
         json.end_object();
-        if (stop_requested()) finish();
+        if (app::stop_requested()) finish();
 
         // 2. The lecture's pinball experiment, under every kernel: robust must keep its checks.
         const std::filesystem::path pinball = replays / "pinball.scene";
@@ -227,7 +227,7 @@ void register_check(CLI::App& app) {
             json.end_object().member("status", pinball_failed ? "failed" : "passed").end_object();
         }
 
-        if (stop_requested()) finish();
+        if (app::stop_requested()) finish();
 
         // 3. The property suite, if this build has it.
         const std::string props = RICOCHET_PROPERTIES_EXE;
@@ -241,13 +241,13 @@ void register_check(CLI::App& app) {
             fmt::print("== properties {}\n", props);
             int rc = 0;
             // The suite saves its failures into (and first replays the saved logs of) the same corpus.
-            const double t = timed([&] { rc = run_program({props}, {fmt::format("{}={}", k_replay_dir_env, replays_abs.string())}); });
+            const double t = timed([&] { rc = run_program({props}, {fmt::format("{}={}", app::k_replay_dir_env, replays_abs.string())}); });
             failed = failed || rc != 0;
             summary.push_back(fmt::format("properties  {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
             stage("properties", rc == 0 ? "passed" : "failed").member("exit", rc).member("seconds", t).end_object();
         }
 
-        if (stop_requested()) finish();
+        if (app::stop_requested()) finish();
 
         // 4. A short fuzz campaign through `ricochet fuzz`, if the targets are built.
         if (by_time ? opt->fuzz_time == 0 : opt->fuzz_runs == 0) {

@@ -13,7 +13,7 @@
 #include "ricochet/hash.hpp"
 #include "ricochet/record.hpp"
 #include "ricochet/scene_log.hpp"
-#include "ricochet_cli/stop_signal.hpp"
+#include "ricochet_app/stop_signal.hpp"
 
 namespace ricochet::cli {
 
@@ -71,7 +71,7 @@ void register_record(CLI::App& app) {
         stage_plugin_run(scene.kernel, fmt::format("recording {}", opt->log));
         // The run is one call into the core, with no frame to stop at; nothing is written yet, so a signal
         // may end the process there and then.
-        std::optional<ExitOnSignal> exit_on_signal;
+        std::optional<app::ExitOnSignal> exit_on_signal;
         exit_on_signal.emplace("ricochet record: the log is unchanged; stopped by ");
         // frame 0 (the initial states) is the first call.
         Progress progress(fmt::format("ricochet record {}", opt->log));
@@ -93,14 +93,14 @@ void register_record(CLI::App& app) {
         if (first_expect != std::string::npos) text += canonical.substr(first_expect);
         // The write is whole or not at all: a signal now waits until the rename is done (the report below
         // still says what was written; the exit status says a signal came).
-        std::optional<StopOnSignal> stop;
+        std::optional<app::StopOnSignal> stop;
         write_file_holding_signals(opt->log, text, exit_on_signal, stop);
         write_stdout(fmt::format("recorded {}: hash {}, {} expect state line(s){}\n", opt->log, format_hash(run.hash),
                                  scene.expect_states.size(),
                                  run.failure ? fmt::format(", expect failure {} {} ({})", run.failure->check,
                                                            run.failure->frame, run.failure->message)
                                              : std::string()));
-        if (stop_requested()) throw Exit{stop_exit_code()};
+        if (app::stop_requested()) throw Exit{app::stop_exit_code()};
     });
 }
 

@@ -16,7 +16,7 @@
 #include "progress.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/reduce.hpp"
-#include "ricochet_cli/stop_signal.hpp"
+#include "ricochet_app/stop_signal.hpp"
 
 namespace ricochet::cli {
 
@@ -79,9 +79,9 @@ void register_reduce(CLI::App& app) {
         check_supported_or_exit(opt->log, scene, options.kernel.value_or(scene.kernel), scene.checks);
 
         const auto start = std::chrono::steady_clock::now();
-        std::optional<StopOnSignal> stop;
+        std::optional<app::StopOnSignal> stop;
         stop.emplace();
-        options.stop = [] { return stop_requested(); };
+        options.stop = [] { return app::stop_requested(); };
         Progress progress(fmt::format("ricochet reduce {}", opt->log), Progress::Unit::frame, Progress::Shown::output_at_end);
         options.on_progress = [&](const ReduceProgress& p) {
             progress.update([&] {
@@ -103,17 +103,17 @@ void register_reduce(CLI::App& app) {
             std::fflush(stdout);
             check_stdout();
         } else {
-            std::optional<ExitOnSignal> none;
+            std::optional<app::ExitOnSignal> none;
             write_file_holding_signals(opt->out, text, none, stop);
         }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const std::string end = reduced.end == ReduceEnd::fixed_point ? "nothing smaller found"
                                 : reduced.end == ReduceEnd::budget  ? fmt::format("stopped at --max-tries {}", opt->max_tries)
-                                                                     : fmt::format("stopped by {}", stop_signal_name());
+                                                                     : fmt::format("stopped by {}", app::stop_signal_name());
         fmt::print(stderr, "ricochet reduce: {} → {}; {} tries, {:.1f} s, {}{}\n", describe(reduced.before),
                    describe(reduced.after), reduced.tries, seconds, end,
                    opt->out.empty() ? std::string() : fmt::format("; wrote {}", opt->out));
-        if (stop_requested()) throw Exit{stop_exit_code()};
+        if (app::stop_requested()) throw Exit{app::stop_exit_code()};
     });
 }
 

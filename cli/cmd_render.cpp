@@ -12,7 +12,7 @@
 #include "progress.hpp"
 #include "ricochet/render.hpp"
 #include "ricochet/scene_log.hpp"
-#include "ricochet_cli/stop_signal.hpp"
+#include "ricochet_app/stop_signal.hpp"
 
 namespace ricochet::cli {
 
@@ -86,18 +86,18 @@ void register_render(CLI::App& app) {
         check_supported_or_exit(opt->log, scene, scene.kernel, scene.checks);
         RenderResult result;
         // Nothing is written before the run ends, so a signal during it may end the process there and then.
-        std::optional<ExitOnSignal> exit_on_signal;
+        std::optional<app::ExitOnSignal> exit_on_signal;
         exit_on_signal.emplace("ricochet render: nothing written; stopped by ");
         {
             Progress progress(fmt::format("ricochet render {}", opt->log));
             result = render_run(scene, scene.kernel, r,
                                 [&](std::int64_t done, std::int64_t total) { progress.update(done, total); });
         }
-        std::optional<StopOnSignal> stop;
+        std::optional<app::StopOnSignal> stop;
         write_file_holding_signals(opt->out, result.svg, exit_on_signal, stop);
         write_stdout(fmt::format("wrote {}{}\n", opt->out,
                                  result.failure ? fmt::format(" (marked: {})", result.failure->str()) : ""));
-        if (stop_requested()) throw Exit{stop_exit_code()};
+        if (app::stop_requested()) throw Exit{app::stop_exit_code()};
     });
 }
 

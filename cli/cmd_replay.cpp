@@ -7,10 +7,10 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "ricochet_cli/json.hpp"
-#include "ricochet_cli/json_stdout.hpp"
-#include "ricochet_cli/project.hpp"
-#include "ricochet_cli/stop_signal.hpp"
+#include "ricochet_app/json.hpp"
+#include "ricochet_app/json_stdout.hpp"
+#include "ricochet_app/project.hpp"
+#include "ricochet_app/stop_signal.hpp"
 
 namespace ricochet::cli {
 
@@ -37,21 +37,21 @@ void register_replay(CLI::App& app) {
         std::vector<std::string> paths = opt->paths;
         if (paths.empty()) {
             // The project's corpus, never the tree this binary was built from.
-            const auto project = find_project();
+            const auto project = app::find_project();
             if (!project) {
-                fmt::print(stderr, "{}\n", no_project_message("replay", "name the logs or folders to replay (ricochet replay PATH...)"));
+                fmt::print(stderr, "{}\n", app::no_project_message("replay", "name the logs or folders to replay (ricochet replay PATH...)"));
                 throw Exit{2};
             }
             paths.push_back(project->replay_dir.string());
         }
-        JsonStdout json_out(opt->json);
-        const StopOnSignal stop;
+        app::JsonStdout json_out(opt->json);
+        const app::StopOnSignal stop;
         const ReplaySummary s = replay_paths(paths, opt->hashes, opt->max_work);
-        const int code = s.stopped ? stop_exit_code() : s.bad_input ? 2 : s.failed > 0 ? 1 : 0;
+        const int code = s.stopped ? app::stop_exit_code() : s.bad_input ? 2 : s.failed > 0 ? 1 : 0;
         if (json_out.on()) {
             json_out.restore();
-            JsonWriter json;
-            json.begin_object().member("schema", fmt::format("ricochet-replay/{}", k_json_schema_version)).member("exit", code);
+            app::JsonWriter json;
+            json.begin_object().member("schema", fmt::format("ricochet-replay/{}", app::k_json_schema_version)).member("exit", code);
             write_replay_members(json, s);
             write_stdout(json.end_object().str());
         }

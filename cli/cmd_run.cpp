@@ -11,7 +11,7 @@
 #include "progress.hpp"
 #include "ricochet/event.hpp"
 #include "ricochet/world.hpp"
-#include "ricochet_cli/stop_signal.hpp"
+#include "ricochet_app/stop_signal.hpp"
 
 namespace ricochet::cli {
 
@@ -51,16 +51,16 @@ void register_run(CLI::App& app) {
             out.clear();
         };
         Progress progress(fmt::format("ricochet run {}", opt->log));
-        const StopOnSignal stop;
+        const app::StopOnSignal stop;
         world.start(events);
         for (std::int64_t f = 1; f <= frames; ++f) {
             // A frame boundary: the output so far is whole frames.
-            if (stop_requested()) {
+            if (app::stop_requested()) {
                 flush();
                 std::fflush(stdout);
                 check_stdout();
-                fmt::print(stderr, "ricochet run: stopped by {} after frame {} of {}\n", stop_signal_name(), f - 1, frames);
-                throw Exit{stop_exit_code()};
+                fmt::print(stderr, "ricochet run: stopped by {} after frame {} of {}\n", app::stop_signal_name(), f - 1, frames);
+                throw Exit{app::stop_exit_code()};
             }
             const auto error = world.step(events);
             if (error) {

@@ -12,8 +12,9 @@
 #include <vector>
 
 #include "output.hpp"
-#include "ricochet_cli/stop_signal.hpp"
 #include "ricochet/scene.hpp"
+#include "ricochet_app/json.hpp"
+#include "ricochet_app/stop_signal.hpp"
 #include "work_budget.hpp"
 
 namespace ricochet::cli {
@@ -27,7 +28,7 @@ struct Exit {
 void register_run(CLI::App& app);
 /// `ricochet record LOG`.
 void register_record(CLI::App& app);
-/// `ricochet replay [PATH...] [--hashes]` (default: the project's replays/, ricochet_cli/project.hpp).
+/// `ricochet replay [PATH...] [--hashes]` (default: the project's replays/, ricochet_app/project.hpp).
 void register_replay(CLI::App& app);
 /// `ricochet render LOG -o FILE.svg [--frames A:B]`.
 void register_render(CLI::App& app);
@@ -58,8 +59,8 @@ void print_unknown_command(const CLI::App& app, const std::string& word);
 /// SIGINT and SIGTERM held so that the file is whole or untouched. It ends running's phase (ExitOnSignal) and
 /// puts stop in scope: a signal held during the write, or one after it, is then a request to stop, which the
 /// caller answers (stop_requested()) once it has said what it wrote. A failed write is printed, Exit{1}.
-void write_file_holding_signals(const std::string& path, std::string_view text, std::optional<ExitOnSignal>& running,
-                                std::optional<StopOnSignal>& stop);
+void write_file_holding_signals(const std::string& path, std::string_view text,
+                                std::optional<app::ExitOnSignal>& running, std::optional<app::StopOnSignal>& stop);
 /// Reads a log, or prints its diagnostic on stderr and throws Exit{2}.
 Scene load_scene_or_exit(const std::filesystem::path& path);
 /// Refuses, before anything runs, a scene that kernel k cannot step with these checks (checks.hpp, refusal):
@@ -99,9 +100,8 @@ struct ReplaySummary {
 /// Under a StopOnSignal, a SIGINT or SIGTERM stops it before the next log (stopped set, summary printed).
 ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work);
 
-class JsonWriter;
 /// A replay's members of a --json document (docs/cli-json.md): passed, failed, bad_input, stopped, total,
 /// errors, logs.
-void write_replay_members(JsonWriter& json, const ReplaySummary& summary);
+void write_replay_members(app::JsonWriter& json, const ReplaySummary& summary);
 
 }  // namespace ricochet::cli

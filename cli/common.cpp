@@ -7,15 +7,15 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "ricochet/replay.hpp"
+#include "progress.hpp"
 #include "ricochet/hash.hpp"
 #include "ricochet/kernel_spec.hpp"
 #include "ricochet/plugin_guard.hpp"
 #include "ricochet/plugin_loader.hpp"
+#include "ricochet/replay.hpp"
 #include "ricochet/scene_log.hpp"
-#include "ricochet_cli/json.hpp"
-#include "ricochet_cli/stop_signal.hpp"
-#include "progress.hpp"
+#include "ricochet_app/json.hpp"
+#include "ricochet_app/stop_signal.hpp"
 
 namespace ricochet::cli {
 
@@ -35,12 +35,12 @@ void check_supported_or_exit(const std::string& log, const Scene& scene, KernelI
     }
 }
 
-void write_file_holding_signals(const std::string& path, std::string_view text, std::optional<ExitOnSignal>& running,
-                                std::optional<StopOnSignal>& stop) {
+void write_file_holding_signals(const std::string& path, std::string_view text,
+                                std::optional<app::ExitOnSignal>& running, std::optional<app::StopOnSignal>& stop) {
     std::string error;
     bool written = false;
     {
-        const HoldSignals hold;
+        const app::HoldSignals hold;
         running.reset();
         stop.emplace();
         written = write_file_atomically(path, text, &error);
@@ -119,10 +119,10 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
     std::size_t done = 0;
     for (const auto& log : logs) {
         // A log boundary: a SIGINT or SIGTERM (the caller holds a StopOnSignal) stops before the next log.
-        if (stop_requested()) {
+        if (app::stop_requested()) {
             s.stopped = true;
             progress.clear();
-            fmt::print(stderr, "ricochet replay: stopped by {} after {} of {} logs\n", stop_signal_name(), done, logs.size());
+            fmt::print(stderr, "ricochet replay: stopped by {} after {} of {} logs\n", app::stop_signal_name(), done, logs.size());
             break;
         }
         progress.update(static_cast<std::int64_t>(done++), static_cast<std::int64_t>(logs.size()));
@@ -179,7 +179,7 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
     return s;
 }
 
-void write_replay_members(JsonWriter& json, const ReplaySummary& s) {
+void write_replay_members(app::JsonWriter& json, const ReplaySummary& s) {
     json.member("passed", s.passed).member("failed", s.failed).member("bad_input", s.bad_input);
     json.member("stopped", s.stopped).member("total", static_cast<std::uint64_t>(s.total));
     json.key("errors").begin_array();

@@ -5,7 +5,7 @@
 #   cli/dev.sh check   build, then `ricochet check` (replays, properties, a short fuzz campaign)
 #   cli/dev.sh test    build, then every test (ctest: unit, replay, property, fuzz)
 #   cli/dev.sh coverage  the `coverage` preset into build-coverage/: every test under clang's source-based
-#                      coverage, then the llvm-cov report of core/ (HTML in build-coverage/coverage-html)
+#                      coverage, then the llvm-cov report of core/ and harness/ (HTML in build-coverage/coverage-html)
 #
 # Environment: BUILD_DIR (default build), JOBS (default nproc), RICOCHET_NO_APT=1 to skip apt-get.
 set -euo pipefail
@@ -22,7 +22,7 @@ jobs=${JOBS:-$(nproc)}
 # The coverage job: every CTest test (the fuzz targets on their standalone driver, since libFuzzer's and
 # ASan's instrumentation do not mix with profile counters; the ClusterFuzzLite build, which compiles its
 # own uninstrumented tree, left out), one raw profile per process and module (%p-%m), merged, then the
-# report of core/ per file. Everything it writes lands in build-coverage/.
+# report of core/ and harness/ per file. Everything it writes lands in build-coverage/.
 coverage() {
   local dir=build-coverage status=0
   cmake --preset coverage >/dev/null
@@ -38,13 +38,20 @@ coverage() {
     llvm-readelf-14 -S "$f" 2>/dev/null | grep -q __llvm_covmap || continue
     if [ ${#objects[@]} = 0 ]; then objects=("$f"); else objects+=(-object "$f"); fi
   done < <(find "$dir" -type f -perm -u+x ! -name '*.so*' ! -path '*/CMakeFiles/*' | sort)
-  local filter=(-ignore-filename-regex='/core/tests/' "$PWD/core/")
+  local filter=(-ignore-filename-regex='/(core|harness)/tests/' "$PWD/core/" "$PWD/harness/")
   llvm-cov-14 show -instr-profile="$dir/coverage.profdata" "${objects[@]}" -format=html \
     -output-dir="$dir/coverage-html" "${filter[@]}" >/dev/null
   llvm-cov-14 report -instr-profile="$dir/coverage.profdata" "${objects[@]}" "${filter[@]}"
-  # The command itself (cli/, the `ricochet` program's own files), reported apart (the aim is 90 % of its lines).
-  echo "dev.sh coverage: cli/"
-  llvm-cov-14 report -instr-profile="$dir/coverage.profdata" "${objects[@]}" "$PWD/cli/" | tail -n 1
+  # The two libraries' totals apart, then the command itself (cli/ and app/, the `ricochet` program's own files;
+  # the aim is 90 % of its lines).
+  local part
+  for part in core harness; do
+    echo "dev.sh coverage: $part/"
+    llvm-cov-14 report -instr-profile="$dir/coverage.profdata" "${objects[@]}" -ignore-filename-regex="/$part/tests/" \
+      "$PWD/$part/" | tail -n 1
+  done
+  echo "dev.sh coverage: cli/ and app/"
+  llvm-cov-14 report -instr-profile="$dir/coverage.profdata" "${objects[@]}" "$PWD/cli/" "$PWD/app/" | tail -n 1
   echo "dev.sh coverage: HTML report in $dir/coverage-html/index.html; ctest exit status $status"
   exit "$status"
 }

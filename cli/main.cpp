@@ -4,7 +4,7 @@
 // written; 2 bad usage or input (an unknown command or option, a bad value, a malformed or missing log,
 // a log over the work bound, no project folder, a plug-in that cannot be loaded); 3 a plug-in kernel crashed, hung
 // or broke ricochet/plugin.h (plugin_guard.hpp); 128 + the signal when SIGINT or SIGTERM stopped run, replay,
-// record, reduce, check or fuzz (ricochet_cli/stop_signal.hpp).
+// record, reduce, check or fuzz (ricochet_app/stop_signal.hpp).
 #include <cstdio>
 #include <string>
 #include <system_error>
@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "ricochet/kernel.hpp"
 #include "ricochet_peers/peers.hpp"
 #ifdef RICOCHET_HAVE_BENCH
 #include "ricochet_bench/command.hpp"

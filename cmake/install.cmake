@@ -1,21 +1,31 @@
-# Install rules and the package config. `cmake --install BUILD --prefix P` gives
-#   P/include/ricochet/*.hpp, plugin.h    the public headers, and the plug-in interface (plain C)
-#   P/lib/libricochet_core.a              the core (static unless BUILD_SHARED_LIBS)
-#   P/bin/ricochet                        the command
-#   P/lib/cmake/ricochet/                 ricochetConfig.cmake and its version: find_package(ricochet 0.2)
-# and find_package gives ricochet::core with its include folder, C++20 and the floating-point flags, and
-# ricochet::plugin, the include folder alone, for a plug-in kernel (ricochet/plugin.h) in C or C++.
+# Install rules and the package config. `cmake --install BUILD --prefix P` gives, by component:
+#   core      P/include/ricochet/*.hpp, plugin.h   the core's public headers, and the plug-in interface (plain C)
+#             P/lib/libricochet_core.a             the core (static unless BUILD_SHARED_LIBS)
+#             P/lib/cmake/ricochet/                ricochetConfig.cmake, its version and ricochetTargets.cmake
+#   harness   P/include/ricochet/*.hpp             the harness's public headers (checks, truth, replay, ...)
+#             P/lib/libricochet_harness.a          the harness
+#             P/lib/cmake/ricochet/ricochetHarnessTargets.cmake
+#   command   P/bin/ricochet                       the command
+# (`--component core` installs the core alone). find_package(ricochet 0.2) gives ricochet::core with its include
+# folder, C++20 and the floating-point flags; ricochet::plugin, the include folder alone, for a plug-in kernel
+# (ricochet/plugin.h) in C or C++; and, where the harness was installed, ricochet::harness, which brings the core
+# along. find_package(ricochet 0.2 COMPONENTS harness) fails where it was not.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 set(_ricochet_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/ricochet)
 
-install(TARGETS ricochet_core ricochet_plugin_interface EXPORT ricochetTargets
+install(TARGETS ricochet_core ricochet_plugin_interface EXPORT ricochetTargets COMPONENT core
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/ricochet DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/ricochet DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT core
         FILES_MATCHING PATTERN "*.hpp" PATTERN "plugin.h")
-install(TARGETS ricochet RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS ricochet_harness EXPORT ricochetHarnessTargets COMPONENT harness
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/harness/include/ricochet DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+        COMPONENT harness FILES_MATCHING PATTERN "*.hpp")
+install(TARGETS ricochet RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT command)
 
 # A static core's private xxhash is named in the export as $<LINK_ONLY:PkgConfig::XXHASH>: the config
 # must find it then, and only then.
@@ -31,7 +41,8 @@ if(RICOCHET_BIGNUM_BACKEND STREQUAL "gmp")
 else()
   set(RICOCHET_CONFIG_NEEDS_GMP FALSE)
 endif()
-install(EXPORT ricochetTargets NAMESPACE ricochet:: DESTINATION ${_ricochet_cmake_dir})
+install(EXPORT ricochetTargets NAMESPACE ricochet:: DESTINATION ${_ricochet_cmake_dir} COMPONENT core)
+install(EXPORT ricochetHarnessTargets NAMESPACE ricochet:: DESTINATION ${_ricochet_cmake_dir} COMPONENT harness)
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/ricochetConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/ricochetConfig.cmake
                               INSTALL_DESTINATION ${_ricochet_cmake_dir})
@@ -39,4 +50,4 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/ricochetConfig.cmake.i
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/ricochetConfigVersion.cmake
                                  COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/ricochetConfig.cmake ${PROJECT_BINARY_DIR}/ricochetConfigVersion.cmake
-        DESTINATION ${_ricochet_cmake_dir})
+        DESTINATION ${_ricochet_cmake_dir} COMPONENT core)

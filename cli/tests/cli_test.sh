@@ -44,7 +44,7 @@ big=$dir/big.scene
   i=0; while [ $i -lt 200 ]; do printf 'ball %d.5 50 0.25 0.125\n' $((i % 90 + 5)); i=$((i + 1)); done; } >"$big"
 enospc="ricochet: error: writing standard output: No space left on device"
 
-# The project folder (cli/include/ricochet_cli/project.hpp): a clone-like folder with replays/ and a log in
+# The project folder (cli/include/ricochet_app/project.hpp): a clone-like folder with replays/ and a log in
 # it, a subfolder two levels down, and a folder no project holds (mktemp's folder is under /tmp).
 proj=$dir/proj
 mkproj() {
@@ -458,9 +458,9 @@ case "$case" in
                      has err "ricochet record: the log is unchanged; stopped by SIGINT"
                      cmp -s "$long" "$dir/r.scene" || fail "record changed the log"
                      [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left" ;;
-  stop-reduce)       # A closed chain of 10^4 walls (core/tests/ring_log) under no-escape: every wall is needed, so the
+  stop-reduce)       # A closed chain of 10^4 walls (harness/tests/ring_log) under no-escape: every wall is needed, so the
                      # reduction would run its 20 000 tries (tens of seconds); stopped, it writes what it has.
-                     ring=$(dirname "$ricochet")/../core/tests/ring_log
+                     ring=$(dirname "$ricochet")/../harness/tests/ring_log
                      [ -x "$ring" ] || { echo "skip $case: no $ring"; exit 77; }
                      "$ring" 10000 lecture-float 3000 | sed 's/^check no-tunnel$/check no-escape/' >"$dir/ring.scene"
                      cp "$dir/ring.scene" "$dir/in.scene"

@@ -1,4 +1,4 @@
-// The two big-number backends of exact/bignum.hpp side by side, operation by operation, on the same values (fixed
+// The two big-number backends of base/bignum.hpp side by side, operation by operation, on the same values (fixed
 // seeds): every integer and rational operation gives the same number, and to_double the same bits (GMP's
 // mpq_get_d truncates; the Boost backend derives the truncation itself, since Boost's convert_to rounds), over
 // magnitudes from below the smallest subnormal to past the largest double. Their agreement is what lets a
@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "exact/bignum_boost.hpp"
-#include "exact/bignum_gmp.hpp"
+#include "base/bignum_boost.hpp"
+#include "base/bignum_gmp.hpp"
 
 namespace ricochet::bignum {
 namespace {

@@ -8,6 +8,7 @@
 
 #include "ricochet/bits.hpp"
 #include "ricochet/scene.hpp"
+#include "ricochet/scene_log_format.hpp"
 
 namespace ricochet {
 namespace {

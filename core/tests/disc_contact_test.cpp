@@ -1,4 +1,4 @@
-// A disc's first contact with a wall or a circle (core/src/disc/contact.hpp): the lecture's numbers worked by
+// A disc's first contact with a wall or a circle (core/src/kernels/disc/contact.hpp): the lecture's numbers worked by
 // hand for the face, the caps and a bumper; tangents, ties, touching at either end of the leg, degenerate
 // inputs; and on random legs the exact decision against the same geometry computed independently in 512-bit
 // floating point (skipping the rare leg whose answer that precision cannot separate).
@@ -12,7 +12,7 @@
 #include <optional>
 #include <random>
 
-#include "disc/contact.hpp"
+#include "kernels/disc/contact.hpp"
 
 namespace ricochet::disc {
 namespace {

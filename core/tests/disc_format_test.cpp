@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "ricochet/bits.hpp"
 #include "ricochet/checks.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/hash.hpp"

@@ -1,6 +1,6 @@
-// The other kernels' discs: lecture-float and lecture-double (disc/lecture_disc.hpp) agree with robust where
+// The other kernels' discs: lecture-float and lecture-double (kernels/lecture/lecture_disc.hpp) agree with robust where
 // a contact is well conditioned and fail on the degenerate cases they were written to fail on; exact
-// (disc/exact_disc.cpp) takes robust's decisions, leg for leg, on the disc corpus and on random scenes, rounds
+// (kernels/exact/exact_disc.cpp) takes robust's decisions, leg for leg, on the disc corpus and on random scenes, rounds
 // its contact points to the nearest double unless that one is not clear (checked against a 1024-bit
 // computation), and holds every disc check.
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@
 
 #include <fmt/format.h>
 
-#include "disc/contact.hpp"
+#include "kernels/disc/contact.hpp"
 #include "ricochet/checks.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/scene_log.hpp"

@@ -1,7 +1,7 @@
 // The exact kernel's arithmetic at its limits: splitting doubles (largest, smallest, subnormal), exact
 // signs where the filter must decline (cancellation, exponents 2^±1074 and up to 2^1023), and rounding
 // of integer quotients against big rationals (ties, subnormals, zero, overflow conventions), on the build's
-// big-number backend (exact/bignum.hpp; the Boost variant of this test runs it on Boost.Multiprecision too).
+// big-number backend (base/bignum.hpp; the Boost variant of this test runs it on Boost.Multiprecision too).
 #include <bit>
 #include <cfloat>
 #include <cmath>
@@ -11,17 +11,18 @@
 
 #include <gtest/gtest.h>
 
+#include "base/bignum.hpp"
+#include "base/round.hpp"
 #include "bignum_cases.hpp"
-#include "exact/bignum.hpp"
-#include "exact/filter.hpp"
-#include "exact/round.hpp"
-#include "exact/scaled.hpp"
+#include "kernels/exact/filter.hpp"
+#include "kernels/exact/scaled.hpp"
 
 namespace ricochet::exact_kernel::num {
 namespace {
 
 using bignum::Integer;
 using bignum::Rational;
+using bignum::round_quotient;
 
 TEST(ExactArith, SixtyFourBitIntegersCrossIntoBigIntegersWhole) {
     // Past 32 bits, where a 32-bit long (i386, wasm32) would cut them; both signs and INT64_MIN.

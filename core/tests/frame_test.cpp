@@ -6,8 +6,8 @@
 #include <random>
 #include <vector>
 
+#include "base/bignum.hpp"
 #include "bignum_cases.hpp"
-#include "exact/bignum.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/tunnel.hpp"
 

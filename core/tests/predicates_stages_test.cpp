@@ -1,4 +1,4 @@
-// The stages of the predicates' exact path (staged_sign.hpp) against big rationals (exact/bignum.hpp): each stage and each early exit reached on
+// The stages of the predicates' exact path (staged_sign.hpp) against big rationals (base/bignum.hpp): each stage and each early exit reached on
 // inputs worked by hand, each stage's answer checked on its own (whenever it answers, it is right) over fixed-seed
 // random inputs of every kind (boundary points from Pythagorean triples scaled by powers of two and moved by an
 // ulp, magnitudes at the edges of the expansions' range, subnormals, cancellation in every term), and the
@@ -9,9 +9,9 @@
 #include <initializer_list>
 #include <random>
 
-#include "exact/bignum.hpp"
+#include "base/bignum.hpp"
+#include "predicates/staged_sign.hpp"
 #include "ricochet/predicates.hpp"
-#include "staged_sign.hpp"
 
 namespace ricochet {
 namespace {

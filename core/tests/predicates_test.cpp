@@ -1,4 +1,4 @@
-// The exact predicates against big rationals (exact/bignum.hpp: GMP, or Boost.Multiprecision in the Boost variant),
+// The exact predicates against big rationals (base/bignum.hpp: GMP, or Boost.Multiprecision in the Boost variant),
 // on random and on near-degenerate inputs, so that the filter and both fallbacks (expansions, the big rationals
 // counted as FallbackCounts::gmp) are all exercised and all agree.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "exact/bignum.hpp"
+#include "base/bignum.hpp"
 #include "ricochet/predicates.hpp"
 
 namespace ricochet {

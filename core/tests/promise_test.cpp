@@ -14,11 +14,11 @@
 #include <variant>
 #include <vector>
 
+#include "kernels/robust/path.hpp"
 #include "ricochet/hash.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/scene_log_format.hpp"
 #include "ricochet/truth.hpp"
-#include "path.hpp"
 
 namespace ricochet {
 namespace {

@@ -5,13 +5,11 @@
 
 #include <gtest/gtest.h>
 
-#include "exact/bignum.hpp"
-#include "exact/round.hpp"
+#include "base/bignum.hpp"
+#include "base/round.hpp"
 
-namespace ricochet::exact_kernel::num {
+namespace ricochet::bignum {
 namespace {
-
-using bignum::Integer;
 
 TEST(RoundQuotient, AZeroDenominatorGivesNaNAndAZeroNumeratorZero) {
     EXPECT_TRUE(std::isnan(round_quotient(Integer(3), Integer(0), 0)));
@@ -32,4 +30,4 @@ TEST(RoundQuotient, JustBelowTwoToThe1024RoundsToTheLargestDoubleEitherSign) {
 }
 
 }  // namespace
-}  // namespace ricochet::exact_kernel::num
+}  // namespace ricochet::bignum

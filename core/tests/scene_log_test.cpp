@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "ricochet/limits.hpp"
 #include "ricochet/scene_log.hpp"
 #include "scene_text.hpp"
 

@@ -8,13 +8,13 @@
 #include <random>
 #include <vector>
 
-#include "exact/bignum.hpp"
-#include "orient_filter.hpp"
+#include "base/bignum.hpp"
+#include "kernels/robust/robust_leg.hpp"
+#include "predicates/orient_filter.hpp"
 #include "ricochet/bits.hpp"
 #include "ricochet/step.hpp"
 #include "ricochet/wall_plan.hpp"
 #include "ricochet/world.hpp"
-#include "robust_leg.hpp"
 
 namespace ricochet {
 namespace {

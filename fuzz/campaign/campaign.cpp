@@ -9,9 +9,9 @@
 #include "cache.hpp"
 #include "failure.hpp"
 #include "plan.hpp"
-#include "ricochet_cli/json.hpp"
-#include "ricochet_cli/json_stdout.hpp"
-#include "ricochet_cli/stop_signal.hpp"
+#include "ricochet_app/json.hpp"
+#include "ricochet_app/json_stdout.hpp"
+#include "ricochet_app/stop_signal.hpp"
 #include "workers.hpp"
 
 namespace ricochet::fuzz {
@@ -20,8 +20,8 @@ namespace {
 
 /// The campaign's --json document (docs/cli-json.md, ricochet-fuzz/1).
 std::string json_summary(const Plan& plan, const CampaignOptions& opt, double wall, int code, bool stopped) {
-    cli::JsonWriter json;
-    json.begin_object().member("schema", fmt::format("ricochet-fuzz/{}", cli::k_json_schema_version));
+    app::JsonWriter json;
+    json.begin_object().member("schema", fmt::format("ricochet-fuzz/{}", app::k_json_schema_version));
     json.member("kernel", plan.kernel_name).key("plugin");
     if (plan.plugin.empty())
         json.null();
@@ -68,10 +68,10 @@ std::string json_summary(const Plan& plan, const CampaignOptions& opt, double wa
 
 int run_campaign(const CampaignOptions& opt) {
     // Under --json everything the campaign prints goes to stderr; stdout gets the document at the end.
-    cli::JsonStdout json_out(opt.json);
+    app::JsonStdout json_out(opt.json);
     // SIGINT or SIGTERM: the workers are stopped, the failures found so far are saved (or kept as
     // artifacts), the corpus stays as it is (no merge), and the summary says so; exit 128 + the signal.
-    const cli::StopOnSignal stop_on_signal;
+    const app::StopOnSignal stop_on_signal;
     std::optional<Plan> plan = make_plan(opt);
     // Degenerate: bad usage or missing binaries (make_plan said which).
     if (!plan) return 2;
@@ -89,7 +89,7 @@ int run_campaign(const CampaignOptions& opt) {
         any_new = any_new || r.new_failures > 0;
     }
     // Merge: keep only the inputs that add coverage, for the next campaign.
-    if (!opt.no_merge && !cli::stop_requested())
+    if (!opt.no_merge && !app::stop_requested())
         for (TargetRun& r : plan->runs) merge_corpus(r, plan->cache, plan->kernel_env);
     // Everything worth keeping has left this campaign's own folder (artifacts to the cache, logs to the
     // replay folder).
@@ -103,10 +103,10 @@ int run_campaign(const CampaignOptions& opt) {
                    r.new_failures, r.known_failures);
     for (const TargetRun& r : plan->runs)
         for (const std::string& stop : r.stops) fmt::print("stopped early: {}\n", stop);
-    const bool stopped = cli::stop_requested();
-    const int code = stopped ? cli::stop_exit_code() : any_new ? 1 : 0;
+    const bool stopped = app::stop_requested();
+    const int code = stopped ? app::stop_exit_code() : any_new ? 1 : 0;
     fmt::print("kernel {}, {:.0f} s, exec/s per worker; {}{}\n", plan->kernel_name, wall, any_new ? "NEW FAILURES" : "no new failures",
-               stopped ? fmt::format("; stopped by {} (exit {})", cli::stop_signal_name(), code) : any_new ? " (exit 1)" : "");
+               stopped ? fmt::format("; stopped by {} (exit {})", app::stop_signal_name(), code) : any_new ? " (exit 1)" : "");
     if (json_out.on()) {
         json_out.restore();
         fmt::print("{}", json_summary(*plan, opt, wall, code, stopped));

@@ -21,14 +21,14 @@
 #include "cache.hpp"
 #include "cache_lock.hpp"
 #include "fuzz_common.hpp"
-#include "ricochet/reduce.hpp"
-#include "ricochet/replay.hpp"
 #include "process.hpp"
-#include "run_dir.hpp"
 #include "ricochet/checks.hpp"
 #include "ricochet/plugin_guard.hpp"
+#include "ricochet/reduce.hpp"
+#include "ricochet/replay.hpp"
 #include "ricochet/scene_log.hpp"
-#include "ricochet_cli/stop_signal.hpp"
+#include "ricochet_app/stop_signal.hpp"
+#include "run_dir.hpp"
 #include "sha1.hpp"
 
 namespace ricochet::fuzz {
@@ -75,7 +75,7 @@ std::string reduced_log(const std::string& text, const fs::path& path) {
     if (scene == nullptr) return text;
     ReduceOptions options;
     // A stopped campaign still saves what it converted: the reduction so far is a failure log too.
-    options.stop = [] { return cli::stop_requested(); };
+    options.stop = [] { return app::stop_requested(); };
     const auto result = reduce_log(*scene, options);
     const auto* reduced = std::get_if<ReducedLog>(&result);
     if (reduced == nullptr || reduced->error) {
@@ -249,8 +249,8 @@ void convert_failures(TargetRun& r, const CampaignOptions& opt, const Plan& plan
     int converted = 0;
     for (const std::string& a : fresh) {
         // A stopped campaign minimizes nothing more: the artifacts are kept below, to convert another time.
-        if (cli::stop_requested()) {
-            r.notes.push_back(fmt::format("stopped by {}: {} failure artifact(s) kept unconverted in {}", cli::stop_signal_name(),
+        if (app::stop_requested()) {
+            r.notes.push_back(fmt::format("stopped by {}: {} failure artifact(s) kept unconverted in {}", app::stop_signal_name(),
                                           fresh.size() - static_cast<std::size_t>(converted), r.kept.string()));
             break;
         }

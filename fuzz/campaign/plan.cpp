@@ -9,12 +9,12 @@
 
 #include "cache.hpp"
 #include "process.hpp"
-#include "run_dir.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/kernel_spec.hpp"
 #include "ricochet/plugin_loader.hpp"
-#include "ricochet_cli/project.hpp"
+#include "ricochet_app/project.hpp"
 #include "ricochet_peers/peers.hpp"
+#include "run_dir.hpp"
 
 namespace ricochet::fuzz {
 namespace {
@@ -64,9 +64,9 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
     }
     // Failures are saved into the project's corpus (--replay-dir, $RICOCHET_REPLAY_DIR, or the project
     // folder's replays/), never into the tree this binary was built from.
-    const auto project = cli::find_project(opt.replay_dir);
+    const auto project = app::find_project(opt.replay_dir);
     if (!project) {
-        fmt::print(stderr, "{}\n", cli::no_project_message("fuzz", "run it in a project folder or pass --replay-dir DIR"));
+        fmt::print(stderr, "{}\n", app::no_project_message("fuzz", "run it in a project folder or pass --replay-dir DIR"));
         return std::nullopt;
     }
     plan.replay_dir = project->replay_dir;

@@ -54,7 +54,7 @@ struct Plan {
     std::filesystem::path bin_dir;     ///< folder of the fuzz_* binaries
     std::filesystem::path cache;       ///< the cache folder (working corpora, artifacts, logs)
     std::filesystem::path run_dir;     ///< CACHE/runs/PID-XXXXXX: this campaign's own files (run_dir.hpp)
-    std::filesystem::path replay_dir;  ///< where failure logs are saved (the project's, ricochet_cli/project.hpp)
+    std::filesystem::path replay_dir;  ///< where failure logs are saved (the project's, ricochet_app/project.hpp)
     std::filesystem::path project;     ///< the project folder (its fuzz/corpus/ seeds); empty if none was found
     std::filesystem::path source;      ///< the tool's source tree, read only (dictionaries, the targets' own inputs)
     std::string kernel_env;            ///< RICOCHET_KERNEL for every worker: the kernel's name, or plugin:ABSOLUTE-PATH

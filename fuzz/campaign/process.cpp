@@ -1,7 +1,7 @@
 // Child processes of a campaign (process.hpp): posix_spawn, so that nothing runs between fork and exec.
 #include "process.hpp"
 
-#include "ricochet_cli/stop_signal.hpp"
+#include "ricochet_app/stop_signal.hpp"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -58,7 +58,7 @@ std::pair<int, std::string> run_capture(const std::vector<std::string>& argv, co
     // Degenerate: the program could not be started.
     if (pid < 0) return {127, "cannot start " + argv[0]};
     // A stop asked of the campaign (SIGINT, SIGTERM) is passed on to a minimization or merge under way.
-    const int rc = cli::wait_passing_stop(pid);
+    const int rc = app::wait_passing_stop(pid);
     return {rc, read_all(scratch)};
 }
 

@@ -20,7 +20,7 @@
 #include "cache.hpp"
 #include "fuzz_common.hpp"
 #include "process.hpp"
-#include "ricochet_cli/stop_signal.hpp"
+#include "ricochet_app/stop_signal.hpp"
 
 namespace ricochet::fuzz {
 namespace {
@@ -101,7 +101,7 @@ std::string last_words(const TargetRun& r) {
 
 /// True the first time it is called after a stop was requested (passed records that it was).
 bool stop_requested_once(bool& passed) {
-    if (passed || !cli::stop_requested()) return false;
+    if (passed || !app::stop_requested()) return false;
     passed = true;
     return true;
 }
@@ -161,16 +161,16 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
             stop_at = elapsed();
             for (TargetRun& r : plan.runs)
                 for (pid_t pid : r.pids)
-                    if (pid > 0) kill(pid, cli::stop_signal());
+                    if (pid > 0) kill(pid, app::stop_signal());
         }
         // One still there k_stop_grace_s later is stuck in that handler (it is not async-signal-safe): killed.
-        if (passed_stop && !killed && elapsed() - stop_at > cli::k_stop_grace_s) {
+        if (passed_stop && !killed && elapsed() - stop_at > app::k_stop_grace_s) {
             killed = true;
             for (TargetRun& r : plan.runs)
                 for (std::size_t w = 0; w < r.pids.size(); ++w)
                     if (r.pids[w] > 0) {
                         fmt::print("  {} worker {} did not stop within {:.0f} s of {}: killed\n", r.target, w,
-                                   cli::k_stop_grace_s, cli::stop_signal_name());
+                                   app::k_stop_grace_s, app::stop_signal_name());
                         kill(r.pids[w], SIGKILL);
                     }
         }
@@ -193,7 +193,7 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                 // at start-up (a corpus input that fails, or a kernel that fails on nearly every input, as the
                 // peers do: more restarts would find the same failures again). A campaign by runs does not restart: each worker
                 // runs its inputs once. A stopped campaign restarts nothing and says nothing: it was asked to.
-                if (cli::stop_requested()) continue;
+                if (app::stop_requested()) continue;
                 const bool time_left = !by_runs && elapsed() < opt.time - 1;
                 if (!clean && time_left && r.restarts < k_max_restarts && r.quick_crashes < k_max_quick_crashes) {
                     ++r.restarts;

@@ -1,5 +1,5 @@
 // An independent acceptor of the scene-log grammar (format 1), written from docs/scene-log.md alone: no
-// ricochet header, no call into the reader (core/src/scene_log_format.cpp), standard library only. The
+// ricochet header, no call into the reader (core/src/log/scene_log_format.cpp), standard library only. The
 // parser fuzz target asserts that it and the reader accept the same texts and reject at the same line.
 #pragma once
 

@@ -16,7 +16,7 @@ case "$1" in
 esac
 h='ricochet 1'
 # The kernel names a diagnostic lists: the built-in four, then the peers this build has (RICOCHET_PEER_KERNELS,
-# set by CTest from the build: bench/peers).
+# set by CTest from the build: peers/).
 kernels='lecture-float, lecture-double, robust, exact'
 for k in ${RICOCHET_PEER_KERNELS:-}; do kernels="$kernels, $k"; done
 # The checks defined for discs and bumpers (check.hpp, defined_for_discs), as the refusal lists them.

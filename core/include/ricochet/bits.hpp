@@ -10,8 +10,6 @@
 
 namespace ricochet {
 
-struct Scene;
-
 /// The IEEE-754 bit pattern of x: std::bit_cast<std::uint64_t>(x), which wasm32's libc++ (13, emscripten 3.1.6)
 /// does not have; a memcpy of 8 bytes compiles to the same one move.
 inline std::uint64_t bits_of(double x) {
@@ -49,7 +47,5 @@ inline bool same_bits(const Event& a, const Event& b) {
     return a.kind == b.kind && a.frame == b.frame && a.ball == b.ball && a.shape == b.shape && a.index == b.index &&
            same_bits(a.pos, b.pos) && same_bits(a.vel, b.vel);
 }
-/// True if a and b hold the same bits (operator== treats −0 and +0 as equal; this does not).
-bool same_bits(const Scene& a, const Scene& b);
 
 }  // namespace ricochet

@@ -21,9 +21,10 @@
 
 #include "ricochet/check.hpp"
 #include "ricochet/event.hpp"
-#include "ricochet/kernel.hpp"
+#include "ricochet/kernel_id.hpp"
 #include "ricochet/line.hpp"
 #include "ricochet/shapes.hpp"
+#include "ricochet/sweep.hpp"
 
 namespace ricochet::detail {
 

@@ -3,6 +3,8 @@
 // them in float and double), with the core's double overloads for a Wall.
 #pragma once
 
+#include <algorithm>
+
 #include "ricochet/shapes.hpp"
 #include "ricochet/vec2.hpp"
 
@@ -59,5 +61,11 @@ constexpr Vec2 normal(const Wall& w) { return normal(w.p0, w.p1); }
 inline Vec2 unit_normal(const Wall& w) { return unit_normal(w.p0, w.p1); }
 /// The boundary condition BC = n̂·(P − P0), the signed distance of P from the wall's line, rounded.
 inline double boundary_condition(Vec2 p, const Wall& w) { return boundary_condition(p, w.p0, unit_normal(w)); }
+/// True if p lies in the closed bounding box of w's segment: for a point on w's line, on the closed segment.
+/// Exact: comparisons of doubles.
+constexpr bool in_segment_box(Vec2 p, const Wall& w) {
+    return std::min(w.p0.x, w.p1.x) <= p.x && p.x <= std::max(w.p0.x, w.p1.x) && std::min(w.p0.y, w.p1.y) <= p.y &&
+           p.y <= std::max(w.p0.y, w.p1.y);
+}
 
 }  // namespace ricochet

@@ -176,7 +176,7 @@ typedef struct ricochet_plugin {
     /** Optional: one ball's whole frame among the walls, your own frame loop. Without it ricochet steps the
      * frame with your sweep and reflect the lecture's way: the earliest hit over every wall but the one just
      * bounced off (the lowest index on a tie), bounce at B_i, then the rest of the frame, the leg from B_i
-     * to B_i + (1 - t_i)*v', at most RICOCHET_PLUGIN_MAX_BOUNCES times (kernel_lecture.hpp); it traces every
+     * to B_i + (1 - t_i)*v', at most RICOCHET_PLUGIN_MAX_BOUNCES times, as the lecture kernels do; it traces every
      * leg, so the checks judge each sweep. With it, the checks see only the frame's result: they compare its
      * first hit with the exact kernel's, and skip what needs the legs (the per-leg decisions, `accuracy`). */
     void (*step)(void* context, ricochet_frame* frame);

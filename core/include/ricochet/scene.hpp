@@ -11,7 +11,7 @@
 #include "ricochet/check.hpp"
 #include "ricochet/event.hpp"
 #include "ricochet/expect.hpp"
-#include "ricochet/kernel.hpp"
+#include "ricochet/kernel_id.hpp"
 #include "ricochet/shapes.hpp"
 
 namespace ricochet {

@@ -8,7 +8,6 @@
 #include <string_view>
 #include <variant>
 
-#include "ricochet/bits.hpp"  // same_bits(Scene, Scene): what the round trip promises
 #include "ricochet/scene.hpp"
 
 namespace ricochet {
@@ -55,6 +54,10 @@ SceneOrDiagnostic parse_scene_log(std::string_view text, std::string_view filena
 /// checks, found, expect hash, expect failure, expect states; numbers in shortest round-trip form.
 /// parse_scene_log(write_scene_log(s)) gives s back bit for bit.
 std::string write_scene_log(const Scene& scene);
+
+/// True if a and b hold the same bits (operator== treats −0 and +0 as equal; this does not): what the round trip
+/// promises.
+bool same_bits(const Scene& a, const Scene& b);
 
 /// The case's identity: 16 lowercase hex digits of xxh64 over the canonical text of the scene without
 /// its `from`, `found` and `expect` lines. Two logs of the same case have the same id.

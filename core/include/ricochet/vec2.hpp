@@ -16,7 +16,8 @@ struct Vec2T {
     T x{};
     T y{};
 
-    friend constexpr bool operator==(const Vec2T&, const Vec2T&) = default;
+    /// Component-wise equality (−0 = +0); constexpr wherever T's own == is.
+    friend bool operator==(const Vec2T&, const Vec2T&) = default;
 
     /// Component-wise sum a + b.
     friend constexpr Vec2T operator+(const Vec2T& a, const Vec2T& b) { return {a.x + b.x, a.y + b.y}; }

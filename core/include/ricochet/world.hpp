@@ -95,8 +95,6 @@ public:
     std::span<const Ball> balls() const { return balls_; }
     /// What the kernel remembers of each ball.
     std::span<const BallMemory> memories() const { return memories_; }
-    /// Balls that stopped at k_max_bounces in the last frame (a documented outcome, not an error).
-    std::uint64_t bounce_limited() const { return bounce_limited_; }
     /// The scene's walls.
     std::span<const Wall> walls() const { return walls_; }
     /// The scene's bumpers.
@@ -122,7 +120,6 @@ private:
     bool prefetch_ = false;  // the grid is past the size where cache hints pay (world.cpp)
     std::unique_ptr<detail::ParallelStepper> stepper_;
     std::int64_t frame_ = 0;
-    std::uint64_t bounce_limited_ = 0;
 };
 
 /// Every event of frames 0..frames under kernel. Throws StepFailure if a ball leaves the accepted range, and

@@ -1,0 +1,23 @@
+// The walls a leg tries (candidates.hpp).
+#include "kernels/candidates.hpp"
+
+#include <numeric>
+
+namespace ricochet::detail {
+
+std::span<const std::uint32_t> candidates(std::span<const Wall> walls, const WallIndex* index, Vec2 a, Vec2 b,
+                                          std::vector<std::uint32_t>& out, std::vector<std::uint32_t>& all) {
+    if (index != nullptr) {
+        out.clear();
+        index->query(a, b, out);
+        return out;
+    }
+    // Every wall: the list 0..n−1 is built once per scratch, not once per leg.
+    if (all.size() != walls.size()) {
+        all.resize(walls.size());
+        std::iota(all.begin(), all.end(), std::uint32_t{0});
+    }
+    return all;
+}
+
+}  // namespace ricochet::detail

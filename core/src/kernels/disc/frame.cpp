@@ -1,0 +1,183 @@
+// A disc's frame with exact decisions (frame.hpp), written once for robust and exact: a ball of radius R > 0 among
+// walls, every decision exact (contact.hpp), every rounded point walked back until the printed piece to it keeps
+// the disc clear. The two kernels differ only in their constructions (robust_disc.cpp, exact_disc.cpp).
+//
+// A frame, as for points (kernel.hpp): the leg q → b = q + rest·v; the earliest contact over every wall,
+// ties to the lowest index; B_i = q + t_i·(b − q) rounded; the bounce; the rest of the frame from B_i with
+// rest·(1 − t_i). What a disc adds:
+// - The bounce reflects v about the contact normal at the printed B_i: ±n on a face, B_i − P_k on a cap.
+//   Corners, one rule as for points: reflect about the contact of the lowest wall, then about each other wall
+//   met at the same exact time whose normal the new velocity still goes into, in index order; if one is still
+//   gone into, go straight back (v′ = −v). Exact signs decide "goes into" (contact.hpp, normal_sign).
+// - Clearance (the `penetration` check, δ = 0): a printed piece q → x is accepted only if it keeps the centre
+//   at least R from every wall q is at least R from (exactly: the segments' distance), and crosses no wall's
+//   segment (the point ball's tunnel) where q is closer (a scene that starts a disc overlapping a wall). A
+//   rounded B_i that fails is walked back towards q, q itself at worst; a leg without a contact needs no walk:
+//   its exact path never comes closer than R (contact.hpp: only a tangent touches without entering).
+// - Discs try every wall: the wall index answers for segments, not for their neighbourhood.
+// - A point ball in a scene with bumpers is stepped here too, as a disc of radius 0: the same contacts (a face
+//   contact is then the crossing of the segment), and a rounded point walked back until its piece does not
+//   reach any wall's segment (R = 0 has no clearance to keep; the point's no-tunnel is what is kept).
+#include "kernels/disc/frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "kernels/disc/contact.hpp"
+#include "ricochet/step_trace.hpp"
+
+namespace ricochet {
+namespace {
+
+/// A wall or bumper met at the leg's first contact time.
+struct Met {
+    disc::Obstacle obstacle;
+    disc::Contact contact;
+    std::uint32_t index = 0;
+    bool bumper = false;
+};
+
+/// The obstacles as contact.hpp sees them: wall i, or bumper i.
+disc::Obstacle wall_obstacle(const Wall& w) { return {&w, {}, 0.0}; }
+disc::Obstacle bumper_obstacle(const Bumper& b) { return {nullptr, b.c, b.r}; }
+
+/// Is the printed piece q → x allowed for a disc of radius R among the obstacles (the clearance rule above)?
+bool piece_allowed(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
+    for (const Wall& w : obstacles.walls) {
+        if (R == 0.0) {
+            // A point ball (in a scene with bumpers): it must not reach a wall's segment, where the next leg would
+            // find no normal and pass through, unless it starts there (then only the crossing is forbidden). A
+            // zero-length wall is never hit.
+            if (w.p0 == w.p1) continue;
+            if (disc::touches(q, q, w) ? disc::crosses(q, x, w) : disc::touches(q, x, w)) return false;
+            continue;
+        }
+        const disc::Obstacle o = wall_obstacle(w);
+        if (disc::piece_clear(q, x, R, o)) continue;
+        // Already closer than R at q: only the point ball's tunnel through the segment is forbidden.
+        if (disc::point_clear(q, R, o) || disc::crosses(q, x, w)) return false;
+    }
+    for (const Bumper& b : obstacles.bumpers) {
+        const disc::Obstacle o = bumper_obstacle(b);
+        if (!disc::piece_clear(q, x, R, o) && disc::point_clear(q, R, o)) return false;
+    }
+    return true;
+}
+
+/// How many doublings walk_back tries before x's own neighbours. A piece that meets the capsule at a grazing angle
+/// gains almost no distance from it along the way back, and whether a rounded point on it is clear is a matter of
+/// its rounding: before the walk goes past 16 ulps, the eight doubles next to x (one ulp in x, in y, or both) are
+/// tried, in a fixed order, and the first allowed kept.
+constexpr int k_walk_before_neighbours = 4;
+
+/// x, or the first point on the way back towards q whose piece from q is allowed (q itself at worst): the walk
+/// of path.hpp's make_safe, 1, 2, 4, … ulps of the piece's largest coordinate, then half the piece, then q.
+Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
+    if (piece_allowed(q, x, R, obstacles)) return x;
+    const Vec2 d = x - q;
+    const double m = std::max({std::fabs(q.x), std::fabs(q.y), std::fabs(x.x), std::fabs(x.y)});
+    const double d_inf = std::max(std::fabs(d.x), std::fabs(d.y));
+    int step = 0;
+    for (double g = std::max(m * 0x1p-52 / d_inf, 0x1p-60); g < 0.5; g *= 2.0, ++step) {
+        if (step == k_walk_before_neighbours)
+            for (const double dx : {0.0, -1.0, 1.0})
+                for (const double dy : {0.0, -1.0, 1.0}) {
+                    const Vec2 c{dx == 0.0 ? x.x : std::nextafter(x.x, dx * HUGE_VAL),
+                                 dy == 0.0 ? x.y : std::nextafter(x.y, dy * HUGE_VAL)};
+                    if (c != x && std::isfinite(c.x) && std::isfinite(c.y) && piece_allowed(q, c, R, obstacles)) return c;
+                }
+        const Vec2 c = q + (1.0 - g) * d;
+        if (c != x && piece_allowed(q, c, R, obstacles)) return c;
+    }
+    const Vec2 half = q + 0.5 * d;
+    return piece_allowed(q, half, R, obstacles) ? half : q;
+}
+
+}  // namespace
+
+FrameStatus disc::step_frame(Ball& ball, const Obstacles& obstacles, std::vector<HitEvent>& hits,
+                             StepScratch& scratch, const Constructions& make) {
+    // Degenerate: a ball at rest does no sweep.
+    if (ball.vel == Vec2{}) return FrameStatus::ok;
+    const double R = ball.r;
+    Vec2 q = ball.pos, v = ball.vel;
+    double rest = 1.0, now = 0.0;
+    FrameStatus status = FrameStatus::ok;
+    std::vector<Met> met;
+    for (int bounce = 0;; ++bounce) {
+        const Vec2 b = q + rest * v;
+        if (b == q) break;
+        if (bounce == k_max_bounces) {
+            status = FrameStatus::bounce_limit;
+            break;
+        }
+        TracedLeg* traced = nullptr;
+        if (StepTrace* t = scratch.trace) {
+            const auto first = static_cast<std::uint32_t>(t->decisions.size());
+            traced = &t->legs.emplace_back(TracedLeg{q, b, false, 0, 0, std::nullopt, first, 0, std::nullopt});
+            traced->vel = v;
+        }
+        // The earliest contact, and every obstacle met at that same time (walls in index order, then bumpers).
+        const disc::Leg leg{q, b, R};
+        met.clear();
+        const auto consider = [&](const Met& m) {
+            if (!met.empty()) {
+                const int order = disc::compare(leg, m.obstacle, m.contact, met.front().obstacle, met.front().contact);
+                if (order > 0) return;
+                if (order < 0) met.clear();
+            }
+            met.push_back(m);
+        };
+        for (std::uint32_t i = 0; i < obstacles.walls.size(); ++i) {
+            const auto c = disc::first_contact(leg, obstacles.walls[i]);
+            if (traced != nullptr) {
+                scratch.trace->decisions.push_back({i, c ? Miss::none : Miss::no_reason});
+                ++traced->decision_count;
+            }
+            if (c) consider({wall_obstacle(obstacles.walls[i]), *c, i, false});
+        }
+        for (std::uint32_t i = 0; i < obstacles.bumpers.size(); ++i) {
+            const Bumper& bumper = obstacles.bumpers[i];
+            if (const auto c = disc::first_contact(leg, bumper.c, bumper.r)) consider({bumper_obstacle(bumper), *c, i, true});
+        }
+        if (met.empty()) {
+            // No contact: the exact leg keeps its distances, and b is printed as it is.
+            q = b;
+            break;
+        }
+        const Met& first = met.front();
+        const disc::Constructions::Point at =
+            first.contact.at_start ? disc::Constructions::Point{0.0, q} : make.contact_point(leg, first.obstacle, first.contact);
+        const double t = at.t;
+        if (traced != nullptr && !first.bumper) {
+            traced->hit = first.index;
+            traced->hit_t = t;
+        }
+        const Vec2 x = walk_back(q, at.x, R, obstacles);
+        now += t * rest;
+        hits.push_back({first.index, now, x, first.bumper});
+        // Bounce about the first contact's normal at x, then about each other one met now that v′ goes into; if
+        // one is still gone into, straight back.
+        Vec2 w = make.reflect(v, x, first.obstacle);
+        int reflections = 1;
+        for (std::size_t k = 1; k < met.size(); ++k)
+            if (disc::normal_sign(x, w, met[k].obstacle) < 0) {
+                w = make.reflect(w, x, met[k].obstacle);
+                ++reflections;
+            }
+        if (scratch.trace != nullptr) scratch.trace->reflections += reflections;
+        for (const Met& m : met)
+            if (disc::normal_sign(x, w, m.obstacle) < 0) {
+                w = -v;
+                break;
+            }
+        v = w;
+        rest *= 1.0 - t;
+        q = x;
+    }
+    ball = {q, v};
+    return status;
+}
+
+}  // namespace ricochet

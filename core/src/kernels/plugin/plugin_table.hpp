@@ -1,0 +1,29 @@
+// Internal: the loaded plug-ins by slot, as plugin_loader.cpp fills them and the plug-in kernels
+// (plugin_kernel.cpp) call them.
+#pragma once
+
+#include <cstddef>
+
+#include "kernels/plugin/plugin_call.hpp"
+#include "ricochet/kernel.hpp"
+#include "ricochet/plugin.h"
+#include "ricochet/plugin_loader.hpp"
+
+namespace ricochet::detail {
+
+/// One loaded plug-in.
+struct LoadedPlugin {
+    ricochet_plugin api{};    ///< its table, every field past its struct_size absent (NULL, 0)
+    void* context = nullptr;  ///< what its init set
+    void* handle = nullptr;   ///< dlopen's
+    PluginInfo info;
+    KernelId id{};
+};
+
+/// Slot slot (the slot-th plug-in loaded, from 0): written once while it loads, before its kernel is registered.
+LoadedPlugin& loaded_plugin(std::size_t slot);
+
+/// The registry entry of the plug-in in slot: its functions, and ricochet's where it has none.
+KernelOps plugin_kernel_ops(std::size_t slot);
+
+}  // namespace ricochet::detail

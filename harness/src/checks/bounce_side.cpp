@@ -1,0 +1,57 @@
+// bounce-side: a ball that hit a wall from one side prints no later point strictly on that wall's other
+// side until its next hit (BallMemory's rule, kernel.hpp), the next hit point included.
+#include <fmt/format.h>
+
+#include "checks/frame_check.hpp"
+#include "ricochet/format.hpp"
+#include "ricochet/truth.hpp"
+
+namespace ricochet::checks {
+namespace {
+
+class BounceSide final : public FrameCheck {
+public:
+    explicit BounceSide(const Scene& scene) : scene_(scene), at_(scene.balls.size()), kept_(scene.balls.size()) {
+        for (std::size_t i = 0; i < scene.balls.size(); ++i) at_[i] = scene.balls[i].pos;
+    }
+
+    std::optional<CheckFailure> frame(const Frame& f) override {
+        if (f.index == 0) return std::nullopt;
+        std::optional<CheckFailure> found;
+        for (const Event& e : f.events) {
+            if (e.kind == Event::Kind::overlap) continue;
+            Kept& k = kept_[e.ball];
+            if (k.from != 0 && truth::side(e.pos, scene_.walls[k.wall]) == -k.from && !found)
+                found = failure(Check::bounce_side, f.index, e.ball,
+                                fmt::format("the ball hit wall {} from side {}, but its {} {} lies on the other side "
+                                            "before its next hit",
+                                            k.wall, k.from, e.kind == Event::Kind::hit ? "hit point" : "end of frame",
+                                            e.pos));
+            if (e.kind == Event::Kind::hit) {
+                // The side it met the wall from: that of the point it came from; coming along the line, the side
+                // it last met that wall from still holds.
+                const int from = truth::side(at_[e.ball], scene_.walls[e.index]);
+                if (from != 0 || k.wall != e.index) k = {e.index, from};
+            }
+            at_[e.ball] = e.pos;
+        }
+        return found;
+    }
+
+private:
+    struct Kept {
+        std::uint32_t wall = 0;
+        int from = 0;
+    };
+    const Scene& scene_;
+    std::vector<Vec2> at_;
+    std::vector<Kept> kept_;
+};
+
+}  // namespace
+
+std::unique_ptr<FrameCheck> make_bounce_side(const Scene& scene, KernelId, const WorldOptions&) {
+    return std::make_unique<BounceSide>(scene);
+}
+
+}  // namespace ricochet::checks

@@ -1,0 +1,86 @@
+// The criterion of a reduction and its tries (trials.hpp).
+#include "reduce/trials.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace ricochet::detail::reduce {
+namespace {
+
+/// A try steps with the wall grid from this many walls and this many ball-frames on; otherwise every wall
+/// is tried. Options change no event's bits (world.hpp), only the time: a handful of walls is quicker
+/// without an index, a leg far longer than the scene (as generated cases have) would walk many grid cells
+/// for nothing, and a run of a frame or two sweeps fewer walls than building the grid visits.
+constexpr std::size_t k_grid_from_walls = 64;
+constexpr std::int64_t k_grid_from_ball_frames = 16;
+
+}  // namespace
+
+CheckedRun run_to_first_failure(const Scene& scene, KernelId kernel, std::span<const Check> checks,
+                                const std::function<void(std::span<const Event>)>& on_frame) {
+    CheckOptions options;
+    options.keep_events = false;
+    options.on_frame = on_frame;
+    const bool grid = scene.walls.size() >= k_grid_from_walls &&
+                      scene.frames * static_cast<std::int64_t>(scene.balls.size()) >= k_grid_from_ball_frames;
+    options.world.broad_phase = grid ? BroadPhase::grid : BroadPhase::none;
+    // Nothing after the first failure can change the verdict.
+    options.stop_after = [](const CheckedRun& run) { return run.failure.has_value(); };
+    return run_checked(scene, kernel, scene.frames, checks, options);
+}
+
+std::optional<Failing> judge(const Scene& scene, KernelId kernel, const Target& target,
+                             const std::function<void(std::span<const Event>)>& on_frame) {
+    CheckedRun run = run_to_first_failure(scene, kernel, target.checks, on_frame);
+    Failing out;
+    if (target.check) {
+        // Only C runs, so a failure is C's; a run that stops at an error before it fails otherwise.
+        if (!run.failure || run.failure->check != *target.check) return std::nullopt;
+        out.failure = std::move(run.failure);
+    } else {
+        if (run.failure || !run.error) return std::nullopt;
+        out.error = std::move(run.error);
+    }
+    out.scene = scene;
+    out.scene.frames = out.frame();
+    return out;
+}
+
+Trials::Trials(KernelId kernel, Target target, Failing start, const ReduceOptions& options, std::uint64_t tries)
+    : kernel_(kernel), target_(std::move(target)), current_(std::move(start)), options_(options), tries_(tries) {}
+
+bool Trials::spent() {
+    if (!ended_ && tries_ >= options_.max_tries) ended_ = ReduceEnd::budget;
+    if (!ended_ && options_.stop && options_.stop()) ended_ = ReduceEnd::stopped;
+    return ended_.has_value();
+}
+
+void Trials::counted(std::string_view pass) {
+    ++tries_;
+    if (options_.on_progress) options_.on_progress(ReduceProgress{tries_, SceneSize::of(current_.scene), pass});
+}
+
+bool Trials::attempt(Scene candidate, std::string_view pass) {
+    if (spent()) return false;
+    candidate.kernel = kernel_;
+    candidate.checks = target_.checks;
+    // Never past the frame that fails now: a later failure would be a larger case.
+    candidate.frames = std::min(candidate.frames, current_.frame());
+    std::optional<Failing> failing = judge(candidate, kernel_, target_);
+    if (failing) {
+        current_ = std::move(*failing);
+        ++kept_;
+    }
+    counted(pass);
+    return failing.has_value();
+}
+
+bool Trials::observe(const std::function<void(std::span<const Event>)>& on_frame, std::string_view pass) {
+    if (spent()) return false;
+    // The current scene fails the target (deterministically): the run is for its events only.
+    judge(current_.scene, kernel_, target_, on_frame);
+    counted(pass);
+    return true;
+}
+
+}  // namespace ricochet::detail::reduce
