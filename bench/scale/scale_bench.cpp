@@ -17,6 +17,7 @@
 #include "box2d_peer.hpp"
 #include "ricochet_bench/result_file.hpp"
 #include "ricochet_bench/targets.hpp"
+#include "ricochet/checks.hpp"
 #include "ricochet/predicates.hpp"
 #include "ricochet/wall_grid.hpp"
 #include "ricochet/world.hpp"
@@ -63,6 +64,13 @@ std::vector<Ball> make_balls(std::size_t count, int n, std::uint64_t seed) {
         b.pos = {pos(rng), pos(rng)};
         b.vel = {s * std::cos(a), s * std::sin(a)};
     }
+    return balls;
+}
+
+std::vector<Ball> make_discs(std::size_t count, int n, std::uint64_t seed, double r) {
+    std::vector<Ball> balls = make_balls(count, n, seed);
+    const auto inside = [](double x) { return std::floor(x) + 0.15 + 0.7 * (x - std::floor(x)); };
+    for (Ball& b : balls) b = {{inside(b.pos.x), inside(b.pos.y)}, b.vel, r};
     return balls;
 }
 
@@ -241,6 +249,45 @@ void measure(const Config& cfg, const std::string& sweep, int n, std::size_t bal
     if (static_cast<double>(walls.size()) * static_cast<double>(ball_count) <= cfg.brute_limit)
         ours("robust-brute", BroadPhase::none, false);
 
+    // Discs against points: the same balls in the middle of their cells, as discs of a tenth of a cell and as
+    // points, each World with the grid; the disc run checked by the harness's no-tunnel and penetration checks
+    // over the checked frames (a failure counts as one, and robust has none).
+    if (walls_sweep) {
+        Scene discs = scene;
+        discs.balls = scale::make_discs(ball_count, n, 2000 + ball_count);
+        Scene points = discs;
+        for (Ball& b : points.balls) b.r = 0.0;
+        const auto stepped = [&](const char* method, const Scene& s, BroadPhase broad_phase, bool check) {
+            World world(s, KernelId::robust, {.broad_phase = broad_phase, .threads = 1});
+            std::vector<Event> events;
+            Row r = base(method);
+            if (check) {
+                Scene checked = s;
+                checked.balls.resize(cb);
+                const Check checks[] = {Check::no_tunnel, Check::penetration};
+                long long hits = 0;
+                CheckOptions options{.keep_events = false};
+                options.on_frame = [&](std::span<const Event> events) {
+                    for (const Event& e : events) hits += e.kind == Event::Kind::hit || e.kind == Event::Kind::bump;
+                };
+                const CheckedRun run = run_checked(checked, KernelId::robust, cfg.check_frames, checks, options);
+                r.tunnels = run.failure || run.error ? 1 : 0;
+                r.checked_ball_frames = cb * static_cast<std::size_t>(cfg.check_frames);
+                r.hits_per_ball_frame = static_cast<double>(hits) / static_cast<double>(r.checked_ball_frames);
+            }
+            finish(r, time_per_frame(
+                          [&] {
+                              events.clear();
+                              (void)world.step(events);
+                          },
+                          cfg.budget));
+        };
+        stepped("robust-point+grid", points, BroadPhase::grid, false);
+        stepped("robust-disc+grid", discs, BroadPhase::grid, true);
+        if (static_cast<double>(walls.size()) * static_cast<double>(ball_count) <= cfg.brute_limit)
+            stepped("robust-disc-brute", discs, BroadPhase::none, false);
+    }
+
     if (scale::box2d_available()) {
         const scale::Box2dPeer peer(walls);
         std::vector<FloatBall> fb(ball_count);
@@ -297,13 +344,36 @@ bench::Verdict maze_target(const std::vector<Row>& rows, std::string label, doub
     return v;
 }
 
+/// The disc target: robust-disc+grid at most 1.5× robust-point+grid (the same balls) in the walls sweep's maze of
+/// about `walls` walls.
+bench::Verdict disc_target(const std::vector<Row>& rows, std::string label, double walls) {
+    bench::Verdict v{.workload = std::move(label), .limit = 1.5, .target = "≤ 1.5× a point's"};
+    const auto at = [&](const Row& r, const char* method) {
+        const double w = static_cast<double>(r.walls);
+        return r.sweep == "walls" && r.method == method && w >= walls / 2 && w <= walls * 2;
+    };
+    for (const Row& d : rows)
+        if (at(d, "robust-disc+grid"))
+            for (const Row& p : rows)
+                if (at(p, "robust-point+grid") && p.walls == d.walls) {
+                    v.value = d.ns_per_ball_frame / p.ns_per_ball_frame;
+                    v.robust = fmt::format("{:.0f} ns per ball-frame, points {:.0f} ns: {:.2f}× ({} walls, {} balls, R = "
+                                           "{}), {} failed checks",
+                                           d.ns_per_ball_frame, p.ns_per_ball_frame, v.value, d.walls, d.balls,
+                                           scale::k_disc_radius, d.tunnels);
+                }
+    return v;
+}
+
 /// The maze and thread targets of one run (bench/include/ricochet_bench/targets.hpp); speed_up2: the thread sweep's
 /// speed-up on 2 threads, NaN if it had fewer.
 std::vector<bench::Verdict> scale_targets(const std::vector<Row>& rows, double speed_up2, std::size_t walls,
                                           std::size_t balls) {
     std::vector<bench::Verdict> out{maze_target(rows, "maze, 10^4 walls", 1e4, 50),
                                     maze_target(rows, "maze, 10^5 walls", 1e5, 80),
-                                    maze_target(rows, "maze, 10^6 walls", 1e6, 80)};
+                                    maze_target(rows, "maze, 10^6 walls", 1e6, 80),
+                                    disc_target(rows, "discs in the maze, 10^4 walls", 1e4),
+                                    disc_target(rows, "discs in the maze, 10^5 walls", 1e5)};
     bench::Verdict t{.workload = "2 threads against 1", .value = speed_up2, .limit = 1.96, .at_least = true,
                      .target = "≥ 1.96× (kept)"};
     if (!std::isnan(speed_up2)) t.robust = fmt::format("speed-up {:.2f}× ({} walls, {} balls)", speed_up2, walls, balls);
@@ -380,7 +450,8 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
                       r.checked_ball_frames);
         csv.close();
     }
-    const std::vector<std::string> methods{"robust+grid", "robust+bvh", "robust-brute", "box2d-2.4.1"};
+    const std::vector<std::string> methods{"robust+grid", "robust+bvh", "robust-brute", "box2d-2.4.1",
+                                           "robust-disc+grid"};
     {
         bench::ResultFile dat(out_dir + "/scale.dat");
         for (const char* sweep : {"walls", "balls"})
@@ -408,7 +479,7 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
             gp.print("plot ");
             for (std::size_t m = 0; m < methods.size(); ++m)
                 gp.print("{}'{}/scale.dat' index {} with linespoints lw 2 title '{}'", m ? ", " : "", out_dir,
-                         s * 4 + static_cast<int>(m), methods[m]);
+                         s * static_cast<int>(methods.size()) + static_cast<int>(m), methods[m]);
             gp.print("\n");
         }
         gp.print("unset multiplot\n");
@@ -427,7 +498,7 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
 
     long long robust_tunnels = 0;
     for (const Row& r : rows)
-        if (r.method == "robust+grid" && r.tunnels > 0) robust_tunnels += r.tunnels;
+        if ((r.method == "robust+grid" || r.method == "robust-disc+grid") && r.tunnels > 0) robust_tunnels += r.tunnels;
     return robust_tunnels == 0 ? 0 : 1;
 }
 

@@ -1,6 +1,7 @@
 // `ricochet bench scale`: per-frame cost as walls and balls grow, brute force against the broad
 // phase (grid and BVH), side by side with the way a Box2D 2.4.1 user would do it (walls in a
-// b2DynamicTree, one RayCast per ball per leg), with each method's tunnelling count; CSV and chart.
+// b2DynamicTree, one RayCast per ball per leg), with each method's tunnelling count; discs of a tenth of a
+// cell against the same balls as points in the walls sweep; CSV and chart.
 #pragma once
 
 #include <cstddef>
@@ -19,6 +20,11 @@ std::vector<Wall> make_maze(int n, std::uint64_t seed);
 /// count balls at random points of a lattice-n maze, random directions, 0.05 to 0.5 cells a frame. The bench draws
 /// b balls from seed 2000 + b.
 std::vector<Ball> make_balls(std::size_t count, int n, std::uint64_t seed);
+/// The disc rows' radius: a tenth of a cell.
+inline constexpr double k_disc_radius = 0.1;
+/// make_balls' balls as discs of radius r, each moved into the middle of its cell (at least 0.15 from the cell's
+/// sides, so clear of every wall of the maze for r ≤ 0.1): x ↦ ⌊x⌋ + 0.15 + 0.7·(x − ⌊x⌋), y likewise.
+std::vector<Ball> make_discs(std::size_t count, int n, std::uint64_t seed, double r = k_disc_radius);
 }  // namespace scale
 
 /// How big the scenes are: full (to 10^6 walls and balls), quick (to 10^5, about a minute), smoke (to 100

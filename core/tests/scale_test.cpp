@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -193,6 +194,31 @@ INSTANTIATE_TEST_SUITE_P(Kernels, ScaleKernels, ::testing::Values(KernelId::lect
                              return std::string(p.param == KernelId::robust ? "robust" : "lecture_double");
                          });
 
+/// scene's balls as discs of radius r (a few at rest, a few as points), with k bumpers at random points of the
+/// scene's box, radii up to 2r.
+Scene as_discs(Rng& rng, Scene s, double r, int bumpers) {
+    double lo = s.walls[0].p0.x, hi = lo;
+    for (const Wall& w : s.walls)
+        for (double c : {w.p0.x, w.p0.y, w.p1.x, w.p1.y}) {
+            lo = std::min(lo, c);
+            hi = std::max(hi, c);
+        }
+    for (std::size_t i = 0; i < s.balls.size(); ++i) s.balls[i].r = i % 7 == 3 ? 0.0 : r;
+    for (int k = 0; k < bumpers; ++k)
+        s.bumpers.push_back({{uniform(rng, lo, hi), uniform(rng, lo, hi)}, uniform(rng, 0.0, 2.0 * r)});
+    return s;
+}
+
+TEST_P(ScaleKernels, DiscsAndBumpersSameBitsWithAndWithoutBroadPhase) {
+    // A disc tries the walls and bumpers the indices say may come within its radius (query_near): the same events
+    // as trying them all, with discs of a tenth and of a third of a cell, and far from the origin.
+    Rng rng(17);
+    expect_same_runs(as_discs(rng, maze(rng, 10, 120, 0.0), 0.1, 0), GetParam(), 30);
+    expect_same_runs(as_discs(rng, maze(rng, 10, 120, 0.0), 0.3, 12), GetParam(), 30);
+    expect_same_runs(as_discs(rng, maze(rng, 8, 80, 0x1p30), 0.25, 6), GetParam(), 20);
+    expect_same_runs(as_discs(rng, closed_box(rng, 7, 60, 10.0), 0.5, 5), GetParam(), 40);
+}
+
 TEST(Scale, LectureFloatWithFloatMargin) {
     // lecture-float rounds to 2^-24: World gives its grid k_float_margin, and the grid still returns
     // every wall it can hit.
@@ -279,6 +305,87 @@ TEST(Scale, IndexReturnsEveryWallTheSegmentMeetsEachOnce) {
         }
         EXPECT_GT(meets, 3000u);  // the touching cases alone give one each
     }
+}
+
+/// The distance between the closed segments ab and pq, in doubles (for a test that keeps clear of its rounding).
+double segment_distance(Vec2 a, Vec2 b, Vec2 p, Vec2 q) {
+    if (segments_meet(a, b, p, q)) return 0.0;
+    const auto to_segment = [](Vec2 x, Vec2 u, Vec2 v) {
+        const Vec2 d = v - u;
+        const double dd = dot(d, d);
+        const double t = dd > 0.0 ? std::clamp(dot(x - u, d) / dd, 0.0, 1.0) : 0.0;
+        return length(x - (u + t * d));
+    };
+    return std::min({to_segment(a, p, q), to_segment(b, p, q), to_segment(p, a, b), to_segment(q, a, b)});
+}
+
+TEST(Scale, IndexNearReturnsEveryWallWithinTheRadius) {
+    // query_near(a, b, r) returns every wall whose segment comes within r of the segment a → b: clearly within
+    // (the doubles' distance below r by a margin), and exactly at r (walls a dyadic r away along an axis, from
+    // the segment's side and from its end). r = 0 asks what query does.
+    Rng rng(18);
+    for (double scale : {1e-3, 1.0, 1e6}) {
+        const Scene s = soup(rng, 500, 0);
+        std::vector<Wall> walls;
+        for (const Wall& w : s.walls) walls.push_back({scale * w.p0, scale * w.p1});
+        const WallGrid grid(walls);
+        const WallBvh bvh(walls);
+        std::vector<std::uint32_t> got, plain;
+        std::size_t within = 0;
+        for (int i = 0; i < 1500; ++i) {
+            const Vec2 a{uniform(rng, -5, 105) * scale, uniform(rng, -5, 105) * scale};
+            const Vec2 b = a + Vec2{uniform(rng, -8, 8) * scale, uniform(rng, -8, 8) * scale};
+            const double r = std::ldexp(std::floor(uniform(rng, 0, 64)), -4) * scale;  // 0 to 4 cells or so
+            for (const WallIndex* index : {static_cast<const WallIndex*>(&grid), static_cast<const WallIndex*>(&bvh)}) {
+                got.clear();
+                index->query_near(a, b, r, got);
+                std::vector<std::uint32_t> sorted = got;
+                std::sort(sorted.begin(), sorted.end());
+                ASSERT_TRUE(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) << "a wall twice";
+                for (std::uint32_t k = 0; k < walls.size(); ++k) {
+                    if (segment_distance(a, b, walls[k].p0, walls[k].p1) > r * (1 - 1e-9)) continue;
+                    if (index == &grid) ++within;
+                    ASSERT_TRUE(std::binary_search(sorted.begin(), sorted.end(), k))
+                        << "wall " << k << " comes within " << r << " of the segment but was not returned";
+                }
+                if (r == 0.0) {
+                    plain.clear();
+                    index->query(a, b, plain);
+                    EXPECT_EQ(got, plain);
+                }
+            }
+        }
+        EXPECT_GT(within, 3000u);
+        // Exactly r away: a horizontal leg y = 0 from x = 0 to 10 (scaled) and walls at y = ±r above its middle, and
+        // beyond its end at x = 10 + r.
+        const double r = 0.75 * scale;
+        const std::vector<Wall> at_r = {{{2 * scale, r}, {3 * scale, r}},
+                                        {{4 * scale, -r}, {4 * scale, -5 * scale}},
+                                        {{10 * scale + r, 0}, {11 * scale, 3 * scale}}};
+        const WallGrid g(at_r);
+        const WallBvh v(at_r);
+        for (const WallIndex* index : {static_cast<const WallIndex*>(&g), static_cast<const WallIndex*>(&v)}) {
+            got.clear();
+            index->query_near({0, 0}, {10 * scale, 0}, r, got);
+            std::sort(got.begin(), got.end());
+            EXPECT_EQ(got, (std::vector<std::uint32_t>{0, 1, 2})) << "scale " << scale;
+        }
+    }
+}
+
+TEST(Scale, CopiesOfALongWallStayWithinTheReferenceBudget) {
+    // 20 000 copies of one diagonal: with four cells per wall each copy would cross ~280 columns (5.6·10^6
+    // references, quadratic in the count); the chosen cells grow until the references fit the budget, and a leg
+    // across the diagonal still gets every copy.
+    const std::vector<Wall> copies(20000, Wall{{0, 0}, {1, 1}});
+    const WallGrid grid(copies);
+    EXPECT_LE(grid.references(), k_max_references_per_wall * copies.size());
+    std::vector<std::uint32_t> got;
+    grid.query({0.25, 0.75}, {0.75, 0.25}, got);
+    EXPECT_EQ(got.size(), copies.size());
+    // A cell size the caller gives is kept (a caller that wants a fine grid pays for it).
+    const std::vector<Wall> few(3, Wall{{0, 0}, {1, 1}});
+    EXPECT_EQ(WallGrid(few, {.cell_size = 0x1p-10}).cell_size(), 0x1p-10);
 }
 
 TEST(Scale, StaticIndexReturnsEveryShapeHoldingThePoint) {

@@ -36,6 +36,7 @@ Stepped step(KernelId k, Ball b, const std::vector<Wall>& walls, StepTrace* trac
 class NoWalls final : public WallIndex {
 public:
     void query(Vec2, Vec2, std::vector<std::uint32_t>&) const override {}
+    void query_near(Vec2, Vec2, double, std::vector<std::uint32_t>&) const override {}
 };
 
 class Peer : public ::testing::TestWithParam<std::string> {

@@ -21,6 +21,8 @@ public:
     explicit WallBvh(std::span<const Wall> walls, double margin = k_grid_margin);
     /// Appends every wall in a leaf whose box (inflated) the segment a → b may touch.
     void query(Vec2 a, Vec2 b, std::vector<std::uint32_t>& out) const override;
+    /// Appends every wall in a leaf whose box, inflated by r too, the segment a → b may touch.
+    void query_near(Vec2 a, Vec2 b, double r, std::vector<std::uint32_t>& out) const override;
     /// Nodes in the tree.
     std::size_t nodes() const { return nodes_.size(); }
 

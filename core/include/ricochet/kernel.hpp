@@ -69,6 +69,10 @@ struct Obstacles {
     std::span<const Wall> walls;
     std::span<const Bumper> bumpers;
     const WallIndex* index = nullptr;  ///< over the walls, or null: every wall is tried
+    /// Over the bumpers' centres, each a zero-length wall (bumper i is wall i), or null: every bumper is tried.
+    /// A bumper within R of a leg has its centre within R + bumper_reach of it.
+    const WallIndex* bumper_index = nullptr;
+    double bumper_reach = 0.0;  ///< the largest bumper radius (with bumper_index)
 };
 
 /// A scene a kernel cannot step (a disc or a bumper for a kernel that steps point balls among walls only), or

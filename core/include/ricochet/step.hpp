@@ -32,6 +32,8 @@ struct StepTrace;  // step_trace.hpp
 struct StepScratch {
     std::vector<std::uint32_t> candidates;
     std::vector<std::uint32_t> all_walls;  ///< 0, 1, …, n − 1: every wall, when there is no index
+    std::vector<std::uint32_t> bumper_candidates;  ///< a disc's bumpers near a leg (kernel.hpp, Obstacles)
+    std::vector<std::uint32_t> all_bumpers;        ///< 0, 1, …, n − 1: every bumper, when there is no index
     /// If set, step_ball fills it with the frame's legs, decisions and reflections (appending; the caller
     /// clears it). Unset, a step pays one null test per leg and per reflection.
     StepTrace* trace = nullptr;

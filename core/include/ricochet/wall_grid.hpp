@@ -10,6 +10,9 @@
 // So every real point S on the real segment a → b lies within m of the computed segment and its cell
 // is visited; the same holds for every point of a wall, so a wall that meets the leg at S (its end
 // points, the hit point and touching included) shares cell(S) with it and is returned.
+// query_near(a, b, r) widens the walk by r·inv cells (times 1 + 2^-40 for its rounding): a wall point W within
+// r of S has |G(W) − G(S)|∞ ≤ r·inv, so G(W) lies within m + r·inv of the computed segment and cell(W), where
+// the wall is registered, is visited.
 // The margin, 2^13 ulps of the largest coordinate, also covers the rounding of the lecture-double
 // kernel's hit points, so that kernel gives the same bits with and without the index except for
 // hits whose t_i is wrong by O(1) (a leg parallel to the wall within an ulp: measure zero, see
@@ -29,10 +32,15 @@ namespace ricochet {
 inline constexpr double k_grid_margin = 0x1p-40;
 /// A margin that also covers the lecture-float kernel's 2^-24 rounding.
 inline constexpr double k_float_margin = 0x1p-18;
+/// Most wall references the grid stores per wall, on average: past it the cells grow (a maze's walls take 3 to 6
+/// each; walls that all cross the whole scene would otherwise take √n each, n²/√n in all).
+inline constexpr std::size_t k_max_references_per_wall = 64;
 
 /// How a WallGrid is laid out.
 struct GridOptions {
-    double cell_size = 0.0;         ///< side of a cell; 0 chooses one (about four cells per wall)
+    /// Side of a cell; 0 chooses one: about four cells per wall, grown where the walls would take more than
+    /// k_max_references_per_wall references each on average.
+    double cell_size = 0.0;
     double margin = k_grid_margin;  ///< relative margin, see the header comment
     std::size_t max_cells = std::size_t{1} << 24;  ///< cap on nx·ny (memory)
 };
@@ -45,6 +53,8 @@ public:
     explicit WallGrid(std::span<const Wall> walls, GridOptions options = {});
     /// Appends every wall registered in a cell the segment a → b visits, each once (see above).
     void query(Vec2 a, Vec2 b, std::vector<std::uint32_t>& out) const override;
+    /// Appends every wall registered in a cell within r of the segment a → b, each once (see above).
+    void query_near(Vec2 a, Vec2 b, double r, std::vector<std::uint32_t>& out) const override;
     /// Side of a cell.
     double cell_size() const { return 1.0 / inv_; }
     /// Cells along x and y.
@@ -60,7 +70,8 @@ public:
 
 private:
     template <class F>
-    void visit(Vec2 a, Vec2 b, F&& f) const;
+    void visit(Vec2 a, Vec2 b, double reach, F&& f) const;
+    void collect(Vec2 a, Vec2 b, double reach, std::vector<std::uint32_t>& out) const;
 
     std::uint32_t wall_count_ = 0;
     double ox_ = 0, oy_ = 0, inv_ = 1, margin_ = k_grid_margin, o_mag_ = 0;

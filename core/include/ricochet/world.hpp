@@ -51,8 +51,10 @@ private:
 /// How a World finds the walls a leg may hit and the shapes a ball may lie in.
 enum class BroadPhase : std::uint8_t {
     none,  ///< every wall tried, every shape tested: the plain reference
-    grid,  ///< a WallGrid over the walls and a StaticIndex over the circles and rectangles
-    bvh,   ///< a WallBvh over the walls and a StaticIndex (the grid's alternative, for measuring)
+    grid,  ///< a WallGrid over the walls, one over the bumpers' centres and a StaticIndex over the circles and
+           ///< rectangles
+    bvh,   ///< a WallBvh over the walls, the bumpers' WallGrid and a StaticIndex (the grid's alternative, for
+           ///< measuring)
 };
 
 /// How a World steps: none of it changes an event's bits.
@@ -101,6 +103,8 @@ public:
     std::span<const Bumper> bumpers() const { return bumpers_; }
     /// The wall index in use, or null (BroadPhase::none, no walls, or the exact kernel).
     const WallIndex* wall_index() const;
+    /// What a ball is stepped among: the walls, the bumpers and their indices (kernel.hpp).
+    Obstacles obstacles() const;
     /// What this world skips for its scene, one clause each, for a run to print.
     std::string skipped() const;
 
@@ -116,6 +120,9 @@ private:
     std::vector<BallMemory> memories_;
     std::optional<WallGrid> grid_;
     std::optional<WallBvh> bvh_;
+    std::vector<Wall> bumper_centres_;       // bumper i as the zero-length wall at its centre, for bumper_grid_
+    std::optional<WallGrid> bumper_grid_;    // over bumper_centres_, with the broad phase, unless the kernel is exact
+    double bumper_reach_ = 0.0;              // the largest bumper radius
     std::optional<StaticIndex> statics_;
     bool prefetch_ = false;  // the grid is past the size where cache hints pay (world.cpp)
     std::unique_ptr<detail::ParallelStepper> stepper_;

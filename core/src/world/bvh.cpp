@@ -64,13 +64,17 @@ void WallBvh::build(std::span<const Wall> walls, std::uint32_t slot, std::uint32
     build(walls, node.first + 1, first + half, count - half);
 }
 
-void WallBvh::query(Vec2 a, Vec2 b, std::vector<std::uint32_t>& out) const {
+void WallBvh::query(Vec2 a, Vec2 b, std::vector<std::uint32_t>& out) const { query_near(a, b, 0.0, out); }
+
+void WallBvh::query_near(Vec2 a, Vec2 b, double r, std::vector<std::uint32_t>& out) const {
     if (nodes_.empty()) return;
-    if (!finite(a) || !finite(b)) {
+    // A wall within r of the segment has its box within r of it: the boxes grow by r (widened by 2^-40 for
+    // the sum's rounding) beside the margin.
+    const double m = margin_ * (1.0 + max_abs(a) + max_abs(b)) + r * (1.0 + 0x1p-40);
+    if (!finite(a) || !finite(b) || !std::isfinite(m)) {
         out.insert(out.end(), items_.begin(), items_.end());
         return;
     }
-    const double m = margin_ * (1.0 + max_abs(a) + max_abs(b));
     const double sx_lo = std::min(a.x, b.x) - m, sx_hi = std::max(a.x, b.x) + m;
     const double sy_lo = std::min(a.y, b.y) - m, sy_hi = std::max(a.y, b.y) + m;
     const Vec2 d = b - a;

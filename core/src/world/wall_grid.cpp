@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "world/index_math.hpp"
 
@@ -31,36 +32,55 @@ WallGrid::WallGrid(std::span<const Wall> walls, GridOptions options)
     // only to fit max_cells (memory); a chosen one also to fit grid_budget (time).
     const double aim = 4.0 * static_cast<double>(walls.size()), max_cells = static_cast<double>(options.max_cells);
     const bool given = options.cell_size > 0.0 && std::isfinite(options.cell_size);
-    const double h = given ? detail::grid_fit(options.cell_size, width, height, 3.0, max_cells)
-                           : detail::grid_fit(detail::grid_cell_size(width, height, aim), width, height, 3.0,
-                                              detail::grid_budget(aim, max_cells));
-    inv_ = 1.0 / h;
-    // Half a cell of border: walls on a lattice of pitch h then lie mid-cell, not on cell edges.
-    ox_ = xmin - 0.5 * h;
-    oy_ = ymin - 0.5 * h;
-    o_mag_ = std::max(std::fabs(ox_), std::fabs(oy_)) * inv_;
-    nx_ = static_cast<std::uint32_t>(std::floor((xmax - ox_) * inv_)) + 2;
-    ny_ = static_cast<std::uint32_t>(std::floor((ymax - oy_) * inv_)) + 2;
+    double h = given ? detail::grid_fit(options.cell_size, width, height, 3.0, max_cells)
+                     : detail::grid_fit(detail::grid_cell_size(width, height, aim), width, height, 3.0,
+                                        detail::grid_budget(aim, max_cells));
+    const auto lay_out = [&] {
+        inv_ = 1.0 / h;
+        // Half a cell of border: walls on a lattice of pitch h then lie mid-cell, not on cell edges.
+        ox_ = xmin - 0.5 * h;
+        oy_ = ymin - 0.5 * h;
+        o_mag_ = std::max(std::fabs(ox_), std::fabs(oy_)) * inv_;
+        nx_ = static_cast<std::uint32_t>(std::floor((xmax - ox_) * inv_)) + 2;
+        ny_ = static_cast<std::uint32_t>(std::floor((ymax - oy_) * inv_)) + 2;
+    };
+    lay_out();
 
-    // Two passes (count, then fill) into the CSR arrays.
+    // Two passes (count, then fill) into the CSR arrays. With a chosen cell size the count stops past
+    // k_max_references_per_wall references a wall on average (1024 at least): long walls that cross the whole
+    // scene (10^5 copies of one diagonal) would fill the cells quadratically (each wall √n cells), so the cells
+    // grow until they fit. A bigger cell keeps the grid conservative (wall_grid.hpp); it only hands each query
+    // more walls. A cell size the caller gives is kept.
+    const std::size_t max_references = given ? std::numeric_limits<std::size_t>::max()
+                                             : std::max<std::size_t>(1024, k_max_references_per_wall * walls.size());
+    std::vector<std::uint32_t> count;
+    for (;;) {
+        count.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
+        std::size_t references = 0;
+        for (const Wall& w : walls) {
+            visit(w.p0, w.p1, 0.0, [&](std::size_t c) { ++count[c]; ++references; });
+            if (references > max_references) break;
+        }
+        if (references <= max_references) break;
+        h *= 2.0;
+        lay_out();
+    }
     const std::size_t cells = static_cast<std::size_t>(nx_) * ny_;
-    std::vector<std::uint32_t> count(cells + 1, 0);
-    for (const Wall& w : walls) visit(w.p0, w.p1, [&](std::size_t c) { ++count[c]; });
     start_.assign(cells + 1, 0);
     for (std::size_t c = 0; c < cells; ++c) start_[c + 1] = start_[c] + count[c];
     items_.resize(start_[cells]);
     std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
     for (std::uint32_t i = 0; i < walls.size(); ++i)
-        visit(walls[i].p0, walls[i].p1, [&](std::size_t c) { items_[fill[c]++] = i; });
+        visit(walls[i].p0, walls[i].p1, 0.0, [&](std::size_t c) { items_[fill[c]++] = i; });
 }
 
 template <class F>
-void WallGrid::visit(Vec2 a, Vec2 b, F&& f) const {
+void WallGrid::visit(Vec2 a, Vec2 b, double reach, F&& f) const {
     // Grid coordinates G̃ = (p − o)·inv, rounded; m covers their error and the per-column y error
-    // (wall_grid.hpp), with 2^13 ulps to spare.
+    // (wall_grid.hpp), with 2^13 ulps to spare, plus reach: a disc's radius in cells (query_near).
     const double ax = (a.x - ox_) * inv_, ay = (a.y - oy_) * inv_;
     const double bx = (b.x - ox_) * inv_, by = (b.y - oy_) * inv_;
-    const double m = margin_ * (1.0 + (max_abs(a) + max_abs(b)) * inv_ + o_mag_);
+    const double m = margin_ * (1.0 + (max_abs(a) + max_abs(b)) * inv_ + o_mag_) + reach;
     const double xs_lo = std::min(ax, bx), xs_hi = std::max(ax, bx);
     const double ys_lo = std::min(ay, by) - m, ys_hi = std::max(ay, by) + m;
     const double nxd = nx_, nyd = ny_;
@@ -87,16 +107,23 @@ void WallGrid::visit(Vec2 a, Vec2 b, F&& f) const {
     }
 }
 
-void WallGrid::query(Vec2 a, Vec2 b, std::vector<std::uint32_t>& out) const {
+void WallGrid::query(Vec2 a, Vec2 b, std::vector<std::uint32_t>& out) const { collect(a, b, 0.0, out); }
+
+void WallGrid::query_near(Vec2 a, Vec2 b, double r, std::vector<std::uint32_t>& out) const {
+    // r in cells, widened by 2^-40 for the product's rounding (wall_grid.hpp).
+    collect(a, b, r * inv_ * (1.0 + 0x1p-40), out);
+}
+
+void WallGrid::collect(Vec2 a, Vec2 b, double reach, std::vector<std::uint32_t>& out) const {
     if (wall_count_ == 0) return;
-    if (!finite(a) || !finite(b) || !std::isfinite((max_abs(a) + max_abs(b)) * inv_)) {
+    if (!finite(a) || !finite(b) || !std::isfinite((max_abs(a) + max_abs(b)) * inv_ + reach)) {
         // Outside what the grid can reason about: every wall (the contract allows a superset).
         for (std::uint32_t i = 0; i < wall_count_; ++i) out.push_back(i);
         return;
     }
     const std::size_t base = out.size();
     int cells = 0;
-    visit(a, b, [&](std::size_t c) {
+    visit(a, b, reach, [&](std::size_t c) {
         ++cells;
         // A cell holds a few walls: element by element beats insert's range copy (a memmove call) here.
         for (std::uint32_t k = start_[c], end = start_[c + 1]; k < end; ++k) out.push_back(items_[k]);

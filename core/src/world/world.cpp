@@ -53,12 +53,26 @@ World::World(const Scene& scene, KernelId kernel, WorldOptions options)
             bvh_.emplace(walls_, grid.margin);
         }
     }
+    // A disc's bumpers: a grid over their centres, asked for those within R + the largest radius of a leg.
+    if (kernel != KernelId::exact && !bumpers_.empty()) {
+        for (const Bumper& b : bumpers_) {
+            bumper_centres_.push_back({b.c, b.c});
+            bumper_reach_ = std::max(bumper_reach_, b.r);
+        }
+        GridOptions grid = options.grid;
+        if (kernel == KernelId::lecture_float) grid.margin = std::max(grid.margin, k_float_margin);
+        bumper_grid_.emplace(bumper_centres_, grid);
+    }
     if (!circles_.empty() || !rects_.empty()) statics_.emplace(circles_, rects_);
 }
 
 World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
+
+Obstacles World::obstacles() const {
+    return {walls_, bumpers_, wall_index(), bumper_grid_ ? &*bumper_grid_ : nullptr, bumper_reach_};
+}
 
 const WallIndex* World::wall_index() const {
     if (grid_) return &*grid_;
@@ -118,7 +132,7 @@ void World::start(std::vector<Event>& out) const {
 
 std::optional<StepError> World::step(std::vector<Event>& out) {
     ++frame_;
-    stepper_->step(kernel_, balls_, memories_, Obstacles{walls_, bumpers_, wall_index()}, prefetch_ ? &*grid_ : nullptr);
+    stepper_->step(kernel_, balls_, memories_, obstacles(), prefetch_ ? &*grid_ : nullptr);
     std::optional<StepError> error;
     for (std::size_t i = 0; i < balls_.size(); ++i) {
         const auto ball = static_cast<std::uint32_t>(i);
@@ -144,6 +158,7 @@ std::string World::skipped() const {
     else if (statics_) add("static tests: one cell lookup per ball");
     if (grid_) add("walls: uniform-grid broad phase");
     if (bvh_) add("walls: BVH broad phase");
+    if (bumper_grid_) add("bumpers: a grid over their centres");
     add("exact fallback: kept (no filter-only proof)");
     return s;
 }

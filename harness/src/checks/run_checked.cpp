@@ -82,7 +82,8 @@ namespace {
 /// The scene's checks, run on every frame, with the traces they read.
 class Checker {
 public:
-    Checker(const Scene& scene, KernelId kernel, std::span<const Check> checks, const WorldOptions& world) : scene_(scene), kernel_(kernel) {
+    Checker(const Scene& scene, KernelId kernel, std::span<const Check> checks, const WorldOptions& world)
+        : kernel_(kernel) {
         for (Check c : checks) {
             checks_.push_back(make_check(c, scene, kernel, world));
             if (checks_.back()->needs_traces() && !tracer_) tracer_ = c;
@@ -115,8 +116,7 @@ private:
             hits_.clear();
             scratch_.trace = &traces_[i];
             traces_[i].stopped_at_limit =
-                step_ball(kernel_, ball, memory, Obstacles{scene_.walls, scene_.bumpers, world.wall_index()}, hits_,
-                          scratch_) == FrameStatus::bounce_limit;
+                step_ball(kernel_, ball, memory, world.obstacles(), hits_, scratch_) == FrameStatus::bounce_limit;
             scratch_.trace = nullptr;
             const Ball now = world.balls()[i];
             if (!same_bits(ball, now))
@@ -127,7 +127,6 @@ private:
         return std::nullopt;
     }
 
-    const Scene& scene_;
     KernelId kernel_;
     std::vector<std::unique_ptr<FrameCheck>> checks_;
     std::optional<Check> tracer_;  ///< the first check that reads traces: a bad trace is its failure

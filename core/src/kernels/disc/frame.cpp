@@ -14,7 +14,9 @@
 //   segment (the point ball's tunnel) where q is closer (a scene that starts a disc overlapping a wall). A
 //   rounded B_i that fails is walked back towards q, q itself at worst; a leg without a contact needs no walk:
 //   its exact path never comes closer than R (contact.hpp: only a tangent touches without entering).
-// - Discs try every wall: the wall index answers for segments, not for their neighbourhood.
+// - A disc tries the walls and bumpers that may come within R of its leg (the wall index's query_near, and the
+//   bumper index over the bumpers' centres with R + the largest bumper radius), in index order, as if it tried
+//   them all: an obstacle farther than R from the leg has no contact, and no piece near it comes within R.
 // - A point ball in a scene with bumpers is stepped here too, as a disc of radius 0: the same contacts (a face
 //   contact is then the crossing of the segment), and a rounded point walked back until its piece does not
 //   reach any wall's segment (R = 0 has no clearance to keep; the point's no-tunnel is what is kept).
@@ -24,6 +26,7 @@
 #include <cmath>
 #include <vector>
 
+#include "kernels/candidates.hpp"
 #include "kernels/disc/contact.hpp"
 #include "ricochet/step_trace.hpp"
 
@@ -42,9 +45,25 @@ struct Met {
 disc::Obstacle wall_obstacle(const Wall& w) { return {&w, {}, 0.0}; }
 disc::Obstacle bumper_obstacle(const Bumper& b) { return {nullptr, b.c, b.r}; }
 
-/// Is the printed piece q → x allowed for a disc of radius R among the obstacles (the clearance rule above)?
-bool piece_allowed(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
-    for (const Wall& w : obstacles.walls) {
+/// The walls that may come within R of the segment q → x, in index order.
+std::span<const std::uint32_t> walls_near(Vec2 q, Vec2 x, double R, const Obstacles& obstacles,
+                                          StepScratch& scratch) {
+    return detail::candidates_near(obstacles.walls.size(), obstacles.index, q, x, R, scratch.candidates,
+                                   scratch.all_walls);
+}
+
+/// The bumpers that may come within R of the segment q → x, in index order.
+std::span<const std::uint32_t> bumpers_near(Vec2 q, Vec2 x, double R, const Obstacles& obstacles,
+                                            StepScratch& scratch) {
+    return detail::candidates_near(obstacles.bumpers.size(), obstacles.bumper_index, q, x, R + obstacles.bumper_reach,
+                                   scratch.bumper_candidates, scratch.all_bumpers);
+}
+
+/// Is the printed piece q → x allowed for a disc of radius R among the obstacles (the clearance rule above)? Only
+/// the obstacles near the piece can break it: one farther than R from the whole piece keeps it clear.
+bool piece_allowed(Vec2 q, Vec2 x, double R, const Obstacles& obstacles, StepScratch& scratch) {
+    for (const std::uint32_t i : walls_near(q, x, R, obstacles, scratch)) {
+        const Wall& w = obstacles.walls[i];
         if (R == 0.0) {
             // A point ball (in a scene with bumpers): it must not reach a wall's segment, where the next leg would
             // find no normal and pass through, unless it starts there (then only the crossing is forbidden). A
@@ -58,8 +77,8 @@ bool piece_allowed(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
         // Already closer than R at q: only the point ball's tunnel through the segment is forbidden.
         if (disc::point_clear(q, R, o) || disc::crosses(q, x, w)) return false;
     }
-    for (const Bumper& b : obstacles.bumpers) {
-        const disc::Obstacle o = bumper_obstacle(b);
+    for (const std::uint32_t i : bumpers_near(q, x, R, obstacles, scratch)) {
+        const disc::Obstacle o = bumper_obstacle(obstacles.bumpers[i]);
         if (!disc::piece_clear(q, x, R, o) && disc::point_clear(q, R, o)) return false;
     }
     return true;
@@ -73,8 +92,8 @@ constexpr int k_walk_before_neighbours = 4;
 
 /// x, or the first point on the way back towards q whose piece from q is allowed (q itself at worst): the walk
 /// of path.hpp's make_safe, 1, 2, 4, … ulps of the piece's largest coordinate, then half the piece, then q.
-Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
-    if (piece_allowed(q, x, R, obstacles)) return x;
+Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles, StepScratch& scratch) {
+    if (piece_allowed(q, x, R, obstacles, scratch)) return x;
     const Vec2 d = x - q;
     const double m = std::max({std::fabs(q.x), std::fabs(q.y), std::fabs(x.x), std::fabs(x.y)});
     const double d_inf = std::max(std::fabs(d.x), std::fabs(d.y));
@@ -85,13 +104,14 @@ Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles) {
                 for (const double dy : {0.0, -1.0, 1.0}) {
                     const Vec2 c{dx == 0.0 ? x.x : std::nextafter(x.x, dx * HUGE_VAL),
                                  dy == 0.0 ? x.y : std::nextafter(x.y, dy * HUGE_VAL)};
-                    if (c != x && std::isfinite(c.x) && std::isfinite(c.y) && piece_allowed(q, c, R, obstacles)) return c;
+                    if (c != x && std::isfinite(c.x) && std::isfinite(c.y) && piece_allowed(q, c, R, obstacles, scratch))
+                        return c;
                 }
         const Vec2 c = q + (1.0 - g) * d;
-        if (c != x && piece_allowed(q, c, R, obstacles)) return c;
+        if (c != x && piece_allowed(q, c, R, obstacles, scratch)) return c;
     }
     const Vec2 half = q + 0.5 * d;
-    return piece_allowed(q, half, R, obstacles) ? half : q;
+    return piece_allowed(q, half, R, obstacles, scratch) ? half : q;
 }
 
 }  // namespace
@@ -129,7 +149,7 @@ FrameStatus disc::step_frame(Ball& ball, const Obstacles& obstacles, std::vector
             }
             met.push_back(m);
         };
-        for (std::uint32_t i = 0; i < obstacles.walls.size(); ++i) {
+        for (const std::uint32_t i : walls_near(q, b, R, obstacles, scratch)) {
             const auto c = disc::first_contact(leg, obstacles.walls[i]);
             if (traced != nullptr) {
                 scratch.trace->decisions.push_back({i, c ? Miss::none : Miss::no_reason});
@@ -137,7 +157,7 @@ FrameStatus disc::step_frame(Ball& ball, const Obstacles& obstacles, std::vector
             }
             if (c) consider({wall_obstacle(obstacles.walls[i]), *c, i, false});
         }
-        for (std::uint32_t i = 0; i < obstacles.bumpers.size(); ++i) {
+        for (const std::uint32_t i : bumpers_near(q, b, R, obstacles, scratch)) {
             const Bumper& bumper = obstacles.bumpers[i];
             if (const auto c = disc::first_contact(leg, bumper.c, bumper.r)) consider({bumper_obstacle(bumper), *c, i, true});
         }
@@ -154,7 +174,7 @@ FrameStatus disc::step_frame(Ball& ball, const Obstacles& obstacles, std::vector
             traced->hit = first.index;
             traced->hit_t = t;
         }
-        const Vec2 x = walk_back(q, at.x, R, obstacles);
+        const Vec2 x = walk_back(q, at.x, R, obstacles, scratch);
         now += t * rest;
         hits.push_back({first.index, now, x, first.bumper});
         // Bounce about the first contact's normal at x, then about each other one met now that v′ goes into; if
