@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Determinism across architectures: cross-builds `ricochet` for each leg with Debian 12's cross gcc,
-# runs it (i386 natively, aarch64 and s390x under qemu-user), or for wasm32 with Debian 12's emscripten
-# (run under node, with the host's files through NODERAWFS), and compares, byte for byte, with a
-# native x86-64 gcc -O0 build:
+# runs it (i386 natively where the kernel can, else under qemu-i386; aarch64 and s390x under qemu-user),
+# or for wasm32 with Debian 12's emscripten (run under node, with the host's files through NODERAWFS),
+# and compares, byte for byte, with a native x86-64 gcc -O0 build:
 #   - `ricochet replay --hashes LOG...` (one "HASH PATH" line per log), and
 #   - per log, `ricochet run LOG` (its standard output and exit status),
 #   - per log of replays/lecture/ (each fails under its lecture kernel), the failure log `ricochet reduce LOG`
@@ -90,7 +90,8 @@ add_arch() {
   dpkg --add-architecture "$1" && updated=0
 }
 
-# leg -> Debian architecture, GNU triplet (compilers), multiarch triplet (libraries), runner.
+# leg -> Debian architecture, GNU triplet (compilers), multiarch triplet (libraries), runner
+# (i386's is none, natively, unless the kernel refuses it: see leg).
 # qemu without -L: the target's libc6:ARCH (installed with the dev packages) loads from /lib and
 # /usr/lib/<multiarch> as on the target. `-L /usr/<triplet>` took the cross toolchain's older
 # ld.so (libc6-s390x-cross 2.36-8) with the multiarch libc.so.6 (2.36-9+deb12u14) that the host's
@@ -274,7 +275,9 @@ leg() {
   t0=$(now)
   local pkgs=(cmake ninja-build pkg-config libcli11-dev) target_args=() targets=()
   case "$name" in
-    i386) pkgs+=(gcc-i686-linux-gnu g++-i686-linux-gnu) ;;
+    # qemu-user too: a kernel built without IA32 emulation (a Firecracker VM's, for one) refuses an i386
+    # program with "Exec format error", and the leg then runs it under qemu-i386 (see the start check in leg).
+    i386) pkgs+=(gcc-i686-linux-gnu g++-i686-linux-gnu qemu-user) ;;
     aarch64) pkgs+=(crossbuild-essential-arm64 qemu-user) ;;
     s390x) pkgs+=(crossbuild-essential-s390x qemu-user) ;;
     # Header-only on the host (cmake/emscripten.cmake): fmt, CLI11, xxhash and Boost.Multiprecision.
@@ -315,6 +318,10 @@ leg() {
   # emscripten writes the program as ricochet.js (node's part) beside ricochet.wasm.
   local exe=$dir/cli/ricochet
   [ "$name" = wasm32 ] && exe=$dir/cli/ricochet.js
+  if [ "$name" = i386 ] && ! "$exe" --version >/dev/null 2>&1 && qemu-i386 "$exe" --version >/dev/null 2>&1; then
+    say "i386: this kernel does not run 32-bit x86 programs; the leg runs them under qemu-i386"
+    runner=(qemu-i386)
+  fi
   local bin=("${runner[@]}" "$exe")
   if ! "${bin[@]}" --version >/dev/null 2>&1; then
     "${bin[@]}" --version
