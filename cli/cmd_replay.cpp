@@ -25,7 +25,9 @@ void register_replay(CLI::App& app) {
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand(
         "replay", "replay logs (default: the project's replays/ or $RICOCHET_REPLAY_DIR; folders: every *.scene under them)");
-    sub->add_option("PATH", opt->paths, "logs or folders (a missing path or a folder without *.scene is an error, exit 2)");
+    sub->add_option("PATH", opt->paths,
+                    "logs or folders (-: a log on standard input; a missing path or a folder without *.scene is an "
+                    "error, exit 2)");
     sub->add_flag("--hashes", opt->hashes, "print 'HASH PATH' per log (for comparing builds) instead");
     sub->add_flag("--json", opt->json,
                   "print one JSON document (docs/cli-json.md, schema ricochet-replay/1) on stdout instead; "

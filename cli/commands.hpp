@@ -13,6 +13,7 @@
 
 #include "output.hpp"
 #include "ricochet/scene.hpp"
+#include "ricochet/scene_log.hpp"
 #include "ricochet_app/json.hpp"
 #include "ricochet_app/stop_signal.hpp"
 #include "work_budget.hpp"
@@ -55,14 +56,25 @@ bool is_command(const CLI::App& app, const std::string& word);
 /// "ricochet: error: unknown command 'WORD'; did you mean 'NAME'?" (or the list of commands) on stderr.
 void print_unknown_command(const CLI::App& app, const std::string& word);
 
+/// `-` as a LOG: the log is read from standard input (run, render, reduce, replay).
+inline constexpr std::string_view k_stdin_path = "-";
+/// How diagnostics name a log read from standard input: `<stdin>:LINE:COL: error: …`.
+inline constexpr std::string_view k_stdin_name = "<stdin>";
+/// `-` as an output (`-o -`): standard output.
+inline constexpr std::string_view k_stdout_path = "-";
+
 /// The one write of a command whose run ends in a file (record, render, reduce): text into path atomically, with
-/// SIGINT and SIGTERM held so that the file is whole or untouched. It ends running's phase (ExitOnSignal) and
+/// SIGINT and SIGTERM held so that the file is whole or untouched. Standard output (path `-`), a device, a FIFO or
+/// a link to one is written in place instead (write_file_atomically), under an ExitOnSignal: a signal while it
+/// waits on a reader ends the command. It ends running's phase (ExitOnSignal) and
 /// puts stop in scope: a signal held during the write, or one after it, is then a request to stop, which the
 /// caller answers (stop_requested()) once it has said what it wrote. A failed write is printed, Exit{1}.
 void write_file_holding_signals(const std::string& path, std::string_view text,
                                 std::optional<app::ExitOnSignal>& running, std::optional<app::StopOnSignal>& stop);
-/// Reads a log, or prints its diagnostic on stderr and throws Exit{2}.
-Scene load_scene_or_exit(const std::filesystem::path& path);
+/// Reads a log from a file, or from standard input when path is `-` (diagnostics then name `<stdin>`).
+SceneOrDiagnostic read_scene_or_stdin(const std::string& path, ExpectLines expect_lines = ExpectLines::checked);
+/// Reads a log (a file, or `-`: standard input), or prints its diagnostic on stderr and throws Exit{2}.
+Scene load_scene_or_exit(const std::string& path);
 /// Refuses, before anything runs, a scene that kernel k cannot step with these checks (checks.hpp, refusal):
 /// "LOG: error: kernel 'box2d' steps point balls only: ball 0 has radius 0.5" on stderr and Exit{2}.
 void check_supported_or_exit(const std::string& log, const Scene& scene, KernelId k, std::span<const Check> checks);

@@ -1,5 +1,9 @@
 // Helpers shared by the subcommands: loading logs, kernels, replaying.
 #include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <chrono>
 #include <system_error>
 #include <variant>
@@ -19,8 +23,24 @@
 
 namespace ricochet::cli {
 
-Scene load_scene_or_exit(const std::filesystem::path& path) {
-    auto result = read_scene_log(path);
+SceneOrDiagnostic read_scene_or_stdin(const std::string& path, ExpectLines expect_lines) {
+    if (path != k_stdin_path) return read_scene_log(path, expect_lines);
+    // At most one byte past the limit, as read_log_text reads a file, so a huge stream is refused quickly.
+    std::string text;
+    std::array<char, 65536> chunk{};
+    for (std::size_t n; (n = std::fread(chunk.data(), 1, chunk.size(), stdin)) > 0;) {
+        text.append(chunk.data(), n);
+        if (text.size() > k_max_file_size)
+            return Diagnostic{std::string(k_stdin_name), 1, 1,
+                              fmt::format("the input is over the limit of {} bytes", k_max_file_size)};
+    }
+    if (std::ferror(stdin))
+        return Diagnostic{std::string(k_stdin_name), 1, 1, fmt::format("cannot read: {}", std::strerror(errno))};
+    return parse_scene_log(text, k_stdin_name, expect_lines);
+}
+
+Scene load_scene_or_exit(const std::string& path) {
+    auto result = read_scene_or_stdin(path);
     if (auto* d = std::get_if<Diagnostic>(&result)) {
         fmt::print(stderr, "{}\n", d->str());
         throw Exit{2};
@@ -39,7 +59,23 @@ void write_file_holding_signals(const std::string& path, std::string_view text,
                                 std::optional<app::ExitOnSignal>& running, std::optional<app::StopOnSignal>& stop) {
     std::string error;
     bool written = false;
-    {
+    if (path == k_stdout_path || writes_in_place(path)) {
+        // Standard output, a device or a FIFO is written in place: it cannot be whole or untouched, and a
+        // write to a FIFO or a pipe waits on its reader, so a signal during it ends the command at once.
+        running.reset();
+        {
+            const app::ExitOnSignal cut("ricochet: the write in place was cut short; stopped by ");
+            if (path == k_stdout_path) {
+                write_stdout(text);
+                std::fflush(stdout);
+                check_stdout();
+                written = true;
+            } else {
+                written = write_file_atomically(path, text, &error);
+            }
+        }
+        stop.emplace();
+    } else {
         const app::HoldSignals hold;
         running.reset();
         stop.emplace();
@@ -88,7 +124,9 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
     std::vector<std::filesystem::path> logs;
     for (const std::string& p : paths) {
         std::error_code ec;
-        if (std::filesystem::is_directory(p, ec)) {
+        if (p == k_stdin_path) {
+            logs.emplace_back(p);
+        } else if (std::filesystem::is_directory(p, ec)) {
             std::vector<std::filesystem::path> found;
             for (auto it = std::filesystem::recursive_directory_iterator(p, ec);
                  !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
@@ -126,7 +164,7 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             break;
         }
         progress.update(static_cast<std::int64_t>(done++), static_cast<std::int64_t>(logs.size()));
-        auto parsed = read_scene_log(log);
+        auto parsed = read_scene_or_stdin(log.string());
         if (auto* d = std::get_if<Diagnostic>(&parsed)) {
             progress.clear();
             fmt::print(stderr, "{}\n", d->str());

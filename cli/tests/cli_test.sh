@@ -270,6 +270,48 @@ case "$case" in
                      run 0 render "$dir/t.scene" -o "$dir/robust.svg" --kernel robust
                      grep -q '^wrote [^(]*$' "$dir/out" || fail "render --kernel robust marked a failure"
                      grep -q '>kernel robust, frames 0\.\.10, ' "$dir/robust.svg" || fail "the caption does not say kernel robust" ;;
+  # -o and LOG: `-` is stdout or stdin; a device, a FIFO or a link to one is written in place, never replaced.
+  out-stdout)        run 0 render "$log" -o -
+                     head -n 1 "$dir/out" | grep -q "^<svg xmlns=" || fail "stdout does not start with the picture"
+                     [ "$(tail -n 1 "$dir/out")" = "</svg>" ] || fail "stdout is not the whole picture"
+                     has err "ricochet render: wrote the picture to standard output"
+                     run 0 reduce "$src/replays/lecture/double-wedge-tunnel.scene" -o -
+                     first_line out "ricochet 1"; grep -q '^found no-tunnel ' "$dir/out" || fail "stdout is not the reduced log"
+                     [ ! -e ./- ] && [ ! -e "$dir/-" ] || fail "a file named - was written" ;;
+  in-stdin)          run 0 run - <"$log"; "$ricochet" run "$log" >"$dir/want" || fail "run LOG failed"
+                     cmp -s "$dir/out" "$dir/want" || fail "run - <LOG differs from run LOG"
+                     run 0 replay - <"$log"; has out "ok   -: 10 frames, hash $("$ricochet" replay --hashes "$log" | cut -c1-16)"
+                     run 0 render - -o "$dir/x.svg" <"$log"; grep -q '^<svg ' "$dir/x.svg" || fail "render - drew nothing"
+                     printf 'ricochet 1\nbogus 1\n' >"$dir/b.scene"
+                     run 2 run - <"$dir/b.scene"; first_line err "<stdin>:2:1: error: unknown directive 'bogus'"
+                     run 2 record - <"$log"; first_line err "ricochet: error: record writes its log back: it needs a file, not standard input (-)" ;;
+  out-fifo)          # A reader on a FIFO made here gets the picture and the reduced log; the FIFO stays a FIFO.
+                     mkfifo "$dir/pipe" || { echo "skip $case: no mkfifo"; exit 77; }
+                     ln -s pipe "$dir/link"
+                     for target in pipe link; do
+                       # (A reader that never sees a writer, as when the FIFO was replaced, gives up after 10 s.)
+                       timeout 10 cat "$dir/pipe" >"$dir/got" & reader=$!
+                       run 0 render "$log" -o "$dir/$target"; wait "$reader" || fail "the FIFO's reader got nothing ($target)"
+                       [ -p "$dir/pipe" ] || fail "render -o $target replaced the FIFO"
+                       [ "$(tail -n 1 "$dir/got")" = "</svg>" ] || fail "the FIFO's reader did not get the picture ($target)"
+                       has out "wrote $dir/$target"
+                     done
+                     [ -L "$dir/link" ] || fail "the link to the FIFO was replaced"
+                     timeout 10 cat "$dir/pipe" >"$dir/got" & reader=$!
+                     run 0 reduce "$src/replays/lecture/double-wedge-tunnel.scene" -o "$dir/link"; wait "$reader" || fail "reduce's reader got nothing"
+                     [ -p "$dir/pipe" ] && [ -L "$dir/link" ] || fail "reduce -o replaced the FIFO or its link"
+                     grep -q '^found no-tunnel ' "$dir/got" || fail "the FIFO's reader did not get the reduced log"
+                     [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left" ;;
+  out-device)        # A character device made here (the null device's numbers, 1 3), never the system's /dev/null.
+                     [ "$(id -u)" = 0 ] || { echo "skip $case: mknod needs root"; exit 77; }
+                     mknod "$dir/null" c 1 3 2>/dev/null || { echo "skip $case: mknod is not allowed here"; exit 77; }
+                     ln -s null "$dir/link"
+                     run 0 render "$log" -o "$dir/null"; has out "wrote $dir/null"
+                     run 0 render "$log" -o "$dir/link"
+                     run 0 reduce "$src/replays/lecture/double-wedge-tunnel.scene" -o "$dir/null"
+                     [ -c "$dir/null" ] || fail "the device was replaced by a regular file"
+                     [ -L "$dir/link" ] || fail "the link to the device was replaced"
+                     [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left" ;;
   # reduce: a failing log made small; the input never changes, the output is a failure log replay reproduces.
   reduce-corpus)     cp "$src/replays/lecture/double-pinball-tunnel.scene" "$dir/in.scene"
                      run 0 reduce "$dir/in.scene" -o "$dir/out.scene"
