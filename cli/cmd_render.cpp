@@ -1,5 +1,5 @@
 // `ricochet render LOG -o FILE.svg [--frames A:B] [--view failure|all] [--max-balls N] [--max-points N]
-// [--width PX] [--kernel K] [--max-work N]`: a picture of the scene and its run, drawn as the run streams by.
+// [--width PX] [--kernel K] [--max-work N] [--plugin PATH...]`: a picture of the scene and its run, drawn as the run streams by.
 // SIGINT or SIGTERM during the run ends it at once with nothing written (exit 128 + the signal); one during
 // the write waits for the rename, so the picture is whole or absent. `-o -` writes the picture on stdout (what
 // was written is said on stderr); a device or a FIFO is written in place, never replaced.
@@ -23,6 +23,7 @@ void register_render(CLI::App& app) {
         std::string out;
         std::string frames;
         std::string kernel;
+        std::vector<std::string> plugins;
         std::string view = "failure";
         std::uint32_t max_balls = RenderOptions{}.max_balls;
         std::uint32_t max_points = RenderOptions{}.max_points;
@@ -59,8 +60,11 @@ void register_render(CLI::App& app) {
         ->check(number_in(100, 20000, "a width in pixels"));
     sub->add_option("--kernel", opt->kernel, "override the log's kernel: a kernel's name, or plugin:PATH (ricochet/plugin.h)");
     add_max_work_option(*sub, opt->max_work);
+    add_plugin_option(*sub, opt->plugins);
     sub->callback([opt] {
-        // The kernel first: a plug-in loaded by --kernel plugin:PATH makes its name known to the log.
+        // Plug-ins and the kernel first: a plug-in loaded by --plugin or --kernel plugin:PATH makes its name known
+        // to the log.
+        load_plugins_or_exit(opt->plugins);
         const std::optional<KernelId> chosen = opt->kernel.empty() ? std::nullopt : std::optional(kernel_or_exit(opt->kernel));
         Scene scene = load_scene_or_exit(opt->log);
         if (chosen) scene.kernel = *chosen;

@@ -130,8 +130,10 @@ struct ReplaySummary {
 /// log instead (and no summary). A path that does not exist, a folder without logs and a log over max_work
 /// (work_budget.hpp) are bad input; a log naming a kernel this build lacks (absent_kernel_message) is skipped.
 /// Under a StopOnSignal, a SIGINT or SIGTERM stops it between two frames of a log or before the next log
-/// (stopped set, summary printed).
-ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work);
+/// (stopped set, summary printed). With kernel, every log runs under it instead of its own (replay_scene: its
+/// checks and expect lines asserted as they are).
+ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work,
+                           std::optional<KernelId> kernel = std::nullopt);
 
 /// "N passed, N failed" and, when some logs were skipped, ", N skipped (WHY: N; …)" without the reasons unless
 /// with_reasons.

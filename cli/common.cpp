@@ -121,7 +121,8 @@ void stage_plugin_run(KernelId k, std::string doing) {
     if (plugin_info(k) != nullptr) stage_plugin_input({std::move(doing), {}, {}});
 }
 
-ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work) {
+ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work,
+                           std::optional<KernelId> kernel) {
     ReplaySummary s;
     std::vector<std::filesystem::path> logs;
     for (const std::string& p : paths) {
@@ -208,7 +209,8 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             continue;
         }
         // A kernel that cannot step the log's discs or bumpers, or a check with no meaning for them: bad input.
-        if (const auto why = refusal(scene, scene.kernel, scene.checks)) {
+        const KernelId k = kernel.value_or(scene.kernel);
+        if (const auto why = refusal(scene, k, scene.checks)) {
             ++done;
             progress.clear();
             const std::string error = fmt::format("{}: error: {}", log.string(), *why);
@@ -219,9 +221,9 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             ++s.failed;
             continue;
         }
-        stage_plugin_run(scene.kernel, fmt::format("replaying {}", log.string()));
+        stage_plugin_run(k, fmt::format("replaying {}", log.string()));
         // Between two frames: a SIGINT or SIGTERM ends a long log there, as `run` does.
-        const ReplayResult r = replay_scene(scene, std::nullopt, [] { return app::stop_requested(); });
+        const ReplayResult r = replay_scene(scene, kernel, [] { return app::stop_requested(); });
         clear_plugin_stage();
         if (r.stopped) {
             s.stopped = true;

@@ -328,6 +328,15 @@ case "$case" in
                      [ -c "$dir/null" ] || fail "the device was replaced by a regular file"
                      [ -L "$dir/link" ] || fail "the link to the device was replaced"
                      [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left" ;;
+  replay-kernel)     # --kernel runs each log under another kernel, its checks and expect lines as they are: the
+                     # lecture's tunnel, expected under lecture-double, does not happen under robust.
+                     t=$src/replays/lecture/double-pinball-tunnel.scene
+                     run 0 replay "$t"
+                     run 1 replay --kernel robust "$t"
+                     grep -q "^FAIL $t: .*expected no-tunnel to break first at frame [0-9]*, but every check held" "$dir/out" ||
+                       fail "not run under robust"
+                     run 2 replay --kernel nope "$t"
+                     first_line err "ricochet: error: unknown kernel 'nope' ($kernels, or plugin:PATH)" ;;
   # reduce: a failing log made small; the input never changes, the output is a failure log replay reproduces.
   reduce-corpus)     cp "$src/replays/lecture/double-pinball-tunnel.scene" "$dir/in.scene"
                      run 0 reduce "$dir/in.scene" -o "$dir/out.scene"

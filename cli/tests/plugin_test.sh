@@ -115,6 +115,17 @@ case $case in
                   has out "1 passed, 0 failed" ;;
   render)         run 0 render "$dir/left.scene" -o "$dir/x.svg" --kernel "plugin:$good"
                   grep -q '<svg' "$dir/x.svg" || fail "no picture" ;;
+  render-plugin)  # render takes --plugin as replay and reduce do: a log naming the plug-in's kernel reads and is drawn.
+                  run 2 render "$dir/good.scene" -o "$dir/x.svg"
+                  has err "$dir/good.scene:2:8: error: unknown kernel 'test-good' ($kernels)"
+                  run 0 render --plugin "$good" "$dir/good.scene" -o "$dir/x.svg"
+                  grep -q '>kernel test-good, frames 0\.\.3, ' "$dir/x.svg" || fail "the caption does not name the plug-in's kernel" ;;
+  replay-kernel)  # replay --kernel plugin:PATH runs every log under the plug-in: the blind one lets the ball through x = 7.
+                  run 1 replay --kernel "plugin:$plugins/test_plugin_no_reason.so" "$dir/seven.scene"
+                  grep -q "^FAIL $dir/seven.scene: invariant no-tunnel broke at frame 2 ball 0: " "$dir/out" ||
+                    fail "the log was not run under the plug-in"
+                  run 0 replay --kernel "plugin:$good" "$dir/seven.scene" "$dir/good.scene"
+                  has out "2 passed, 0 failed" ;;
   reduce)         # reduce takes a plug-in as the other commands do: --kernel plugin:PATH, or --plugin for a log naming
                   # its kernel. The blind plug-in (test-no-reason) lets the ball through the wall at x = 7.
                   blind=$plugins/test_plugin_no_reason.so
