@@ -7,9 +7,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <variant>
 
@@ -85,6 +88,48 @@ int env_fuzz_seconds() {
         throw Exit{2};
     }
     return static_cast<int>(v);
+}
+
+/// Every *.scene under dir (recursively), sorted: what a stage saved is what is there after it and not before.
+std::vector<std::string> scene_logs_under(const std::filesystem::path& dir) {
+    std::vector<std::string> out;
+    std::error_code ec;
+    for (auto it = std::filesystem::recursive_directory_iterator(dir, ec);
+         !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
+        if (it->is_regular_file() && it->path().extension() == ".scene") out.push_back(it->path().string());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+/// The logs in after that were not in before (both sorted).
+std::vector<std::string> added(const std::vector<std::string>& before, const std::vector<std::string>& after) {
+    std::vector<std::string> out;
+    std::set_difference(after.begin(), after.end(), before.begin(), before.end(), std::back_inserter(out));
+    return out;
+}
+
+/// What the property suite reported through RICOCHET_PROPERTIES_REPORT (properties/harness.cpp): its failed tests
+/// and the failure logs it saved.
+struct PropertiesReport {
+    std::vector<std::string> failed;
+    std::vector<std::string> logs;
+};
+
+PropertiesReport read_properties_report(const std::filesystem::path& path) {
+    PropertiesReport r;
+    std::ifstream in(path);
+    for (std::string line; std::getline(in, line);) {
+        if (line.starts_with("failed ")) r.failed.push_back(line.substr(7));
+        else if (line.starts_with("log ")) r.logs.push_back(line.substr(4));
+    }
+    return r;
+}
+
+/// A member holding an array of strings.
+void string_array(app::JsonWriter& json, std::string_view name, const std::vector<std::string>& items) {
+    json.key(name).begin_array();
+    for (const std::string& i : items) json.value(i);
+    json.end_array();
 }
 
 }  // namespace
@@ -175,7 +220,9 @@ void register_check(CLI::App& app) {
         ReplaySummary r;
         const double t_replay = timed([&] { r = replay_paths({replays.string()}, false, opt->max_work); });
         failed = failed || r.failed > 0 || r.bad_input;
-        summary.push_back(fmt::format("replay      {} passed, {} failed ({:.2f} s)", r.passed, r.failed, t_replay));
+        summary.push_back(fmt::format("replay      {} ({:.2f} s)", replay_counts(r, false), t_replay));
+        // A log for a kernel this build lacks is skipped, never failed: each reason said once, with its count.
+        for (const auto& [reason, n] : r.skip_reasons) summary.push_back(fmt::format("            {} skipped: {}", n, reason));
         stage("replay", r.failed > 0 || r.bad_input ? "failed" : "passed").member("seconds", t_replay);
         write_replay_members(json, r);
         json.end_object();
@@ -240,11 +287,26 @@ void register_check(CLI::App& app) {
         } else {
             fmt::print("== properties {}\n", props);
             int rc = 0;
+            // What failed and what was saved, told by the suite in a file of our own (removed after).
+            std::string report = (std::filesystem::temp_directory_path(abs_ec) / "ricochet-check-properties.XXXXXX").string();
+            const int report_fd = ::mkstemp(report.data());
+            if (report_fd >= 0) ::close(report_fd);
+            else report.clear();
             // The suite saves its failures into (and first replays the saved logs of) the same corpus.
-            const double t = timed([&] { rc = run_program({props}, {fmt::format("{}={}", app::k_replay_dir_env, replays_abs.string())}); });
+            const double t = timed([&] {
+                rc = run_program({props}, {fmt::format("{}={}", app::k_replay_dir_env, replays_abs.string()),
+                                            fmt::format("RICOCHET_PROPERTIES_REPORT={}", report)});
+            });
+            const PropertiesReport told = report.empty() ? PropertiesReport{} : read_properties_report(report);
+            if (!report.empty()) ::unlink(report.c_str());
             failed = failed || rc != 0;
             summary.push_back(fmt::format("properties  {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
-            stage("properties", rc == 0 ? "passed" : "failed").member("exit", rc).member("seconds", t).end_object();
+            for (const std::string& f : told.failed) summary.push_back(fmt::format("            failed: {}", f));
+            for (const std::string& l : told.logs) summary.push_back(fmt::format("            log: {}", l));
+            stage("properties", rc == 0 ? "passed" : "failed").member("exit", rc).member("seconds", t);
+            string_array(json, "failed_properties", told.failed);
+            string_array(json, "saved_logs", told.logs);
+            json.end_object();
         }
 
         if (app::stop_requested()) finish();
@@ -266,10 +328,16 @@ void register_check(CLI::App& app) {
                 argv.insert(argv.end(), {"--runs", std::to_string(opt->fuzz_runs), "--seed", std::to_string(opt->fuzz_seed)});
             }
             int rc = 0;
+            // A new failure is a new log in the folder: what is there after the campaign and was not before.
+            const std::vector<std::string> before = scene_logs_under(replays_abs);
             const double t = timed([&] { rc = run_program(argv); });
+            const std::vector<std::string> saved = added(before, scene_logs_under(replays_abs));
             failed = failed || rc != 0;
             summary.push_back(fmt::format("fuzz        {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
-            stage("fuzz", rc == 0 ? "passed" : "failed").member("exit", rc).member("seconds", t).end_object();
+            for (const std::string& l : saved) summary.push_back(fmt::format("            log: {}", l));
+            stage("fuzz", rc == 0 ? "passed" : "failed").member("exit", rc).member("seconds", t);
+            string_array(json, "saved_logs", saved);
+            json.end_object();
         }
         finish();
     });

@@ -51,6 +51,11 @@ void register_record(CLI::App& app) {
     add_plugin_option(*sub, opt->plugins);
     sub->callback([opt] {
         load_plugins_or_exit(opt->plugins);
+        // Degenerate: standard input has nowhere to write the expect lines back to.
+        if (opt->log == k_stdin_path) {
+            fmt::print(stderr, "ricochet: error: record writes its log back: it needs a file, not standard input (-)\n");
+            throw Exit{2};
+        }
         // One read: the text that is parsed is the text that is rewritten.
         auto read = read_log_text(opt->log);
         if (auto* d = std::get_if<Diagnostic>(&read)) {

@@ -1,6 +1,6 @@
 // `ricochet reduce LOG [-o OUT] [--kernel K] [--max-tries N] [--max-work N] [--plugin PATH…]`: the smallest log found that fails
-// as LOG does (reduce.hpp), written to OUT atomically or to stdout; LOG itself is never written (-o naming it,
-// through a link or not, is refused). Progress on stderr while it works, then one summary line.
+// as LOG does (reduce.hpp), written to OUT atomically (a device or a FIFO in place) or to stdout (no -o, or
+// -o -); LOG (- reads it from stdin) is never written (-o naming it, through a link or not, is refused). Progress on stderr while it works, then one summary line.
 // SIGINT or SIGTERM stops the reduction between two tries: the smallest failing log found so far is written
 // (whole, atomically), then exit 128 + the signal.
 #include <chrono>
@@ -49,8 +49,9 @@ void register_reduce(CLI::App& app) {
         "trying candidates until none is smaller or --max-tries is reached; the same log gives the same output.\n"
         "The output is a failure log: `ricochet replay` reproduces it at its `found` check and frame. A log\n"
         "whose checks all hold is refused (exit 2). LOG is never changed.");
-    sub->add_option("LOG", opt->log, "the failing scene log")->required();
-    sub->add_option("-o,--output", opt->out, "write the reduced log here (atomically; default: stdout)");
+    sub->add_option("LOG", opt->log, "the failing scene log (-: standard input)")->required();
+    sub->add_option("-o,--output", opt->out,
+                    "write the reduced log here (atomically; a device or a FIFO in place; default or -: stdout)");
     sub->add_option("--kernel", opt->kernel,
                     "run under this kernel instead of the log's: a kernel's name, or plugin:PATH (ricochet/plugin.h)");
     sub->add_option("--max-tries", opt->max_tries,
@@ -63,6 +64,7 @@ void register_reduce(CLI::App& app) {
         // Plug-ins and the kernel first: a plug-in loaded by --plugin or --kernel plugin:PATH makes its name known
         // to the log.
         load_plugins_or_exit(opt->plugins);
+        if (opt->out == k_stdout_path) opt->out.clear();
         ReduceOptions options;
         if (!opt->kernel.empty()) options.kernel = kernel_or_exit(opt->kernel);
         const Scene scene = load_scene_or_exit(opt->log);
@@ -70,7 +72,7 @@ void register_reduce(CLI::App& app) {
         options.max_tries = opt->max_tries;
         // Never the input: -o naming LOG, by another path or through a link, would replace what is reduced.
         std::error_code ec;
-        if (!opt->out.empty() && std::filesystem::equivalent(opt->log, opt->out, ec)) {
+        if (!opt->out.empty() && opt->log != k_stdin_path && std::filesystem::equivalent(opt->log, opt->out, ec)) {
             fmt::print(stderr, "ricochet: error: -o {} is the log being reduced; reduce never changes its input\n", opt->out);
             throw Exit{2};
         }

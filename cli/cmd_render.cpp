@@ -1,7 +1,8 @@
 // `ricochet render LOG -o FILE.svg [--frames A:B] [--view failure|all] [--max-balls N] [--max-points N]
-// [--width PX] [--kernel K] [--max-work N]`: a picture of the scene and its run, drawn as the run streams by.
+// [--width PX] [--kernel K] [--max-work N] [--plugin PATH...]`: a picture of the scene and its run, drawn as the run streams by.
 // SIGINT or SIGTERM during the run ends it at once with nothing written (exit 128 + the signal); one during
-// the write waits for the rename, so the picture is whole or absent.
+// the write waits for the rename, so the picture is whole or absent. `-o -` writes the picture on stdout (what
+// was written is said on stderr); a device or a FIFO is written in place, never replaced.
 #include <charconv>
 #include <optional>
 
@@ -22,6 +23,7 @@ void register_render(CLI::App& app) {
         std::string out;
         std::string frames;
         std::string kernel;
+        std::vector<std::string> plugins;
         std::string view = "failure";
         std::uint32_t max_balls = RenderOptions{}.max_balls;
         std::uint32_t max_points = RenderOptions{}.max_points;
@@ -38,8 +40,10 @@ void register_render(CLI::App& app) {
         "and the walls it met, marked where a no-tunnel piece crossed its wall (else at the ball's state); a run\n"
         "without a failure is drawn whole. At most --max-balls paths are drawn (balls 0, 1, ... and the failing\n"
         "ball always) and at most --max-points points in all; the caption says what was left out.");
-    sub->add_option("LOG", opt->log, "scene log")->required();
-    sub->add_option("-o,--output", opt->out, "the SVG file to write")->required();
+    sub->add_option("LOG", opt->log, "scene log (-: standard input)")->required();
+    sub->add_option("-o,--output", opt->out,
+                    "the SVG file to write (atomically; a device or a FIFO in place; -: standard output)")
+        ->required();
     sub->add_option("--frames", opt->frames, "A:B, the frames whose paths are drawn (default: every frame run)");
     sub->add_option("--view", opt->view, "failure: frame the failing frame (default); all: the whole scene")
         ->check(CLI::Validator(
@@ -56,8 +60,11 @@ void register_render(CLI::App& app) {
         ->check(number_in(100, 20000, "a width in pixels"));
     sub->add_option("--kernel", opt->kernel, "override the log's kernel: a kernel's name, or plugin:PATH (ricochet/plugin.h)");
     add_max_work_option(*sub, opt->max_work);
+    add_plugin_option(*sub, opt->plugins);
     sub->callback([opt] {
-        // The kernel first: a plug-in loaded by --kernel plugin:PATH makes its name known to the log.
+        // Plug-ins and the kernel first: a plug-in loaded by --plugin or --kernel plugin:PATH makes its name known
+        // to the log.
+        load_plugins_or_exit(opt->plugins);
         const std::optional<KernelId> chosen = opt->kernel.empty() ? std::nullopt : std::optional(kernel_or_exit(opt->kernel));
         Scene scene = load_scene_or_exit(opt->log);
         if (chosen) scene.kernel = *chosen;
@@ -95,8 +102,12 @@ void register_render(CLI::App& app) {
         }
         std::optional<app::StopOnSignal> stop;
         write_file_holding_signals(opt->out, result.svg, exit_on_signal, stop);
-        write_stdout(fmt::format("wrote {}{}\n", opt->out,
-                                 result.failure ? fmt::format(" (marked: {})", result.failure->str()) : ""));
+        const std::string marked = result.failure ? fmt::format(" (marked: {})", result.failure->str()) : "";
+        // The picture itself on standard output: what was written is said on stderr.
+        if (opt->out == k_stdout_path)
+            fmt::print(stderr, "ricochet render: wrote the picture to standard output{}\n", marked);
+        else
+            write_stdout(fmt::format("wrote {}{}\n", opt->out, marked));
         if (app::stop_requested()) throw Exit{app::stop_exit_code()};
     });
 }

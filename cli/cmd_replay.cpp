@@ -1,7 +1,8 @@
-// `ricochet replay [PATH...] [--hashes] [--json] [--max-work N]`: every log's checks and expect lines; exit 0 all
-// passed, 1 some failed, 2 some path or log could not be read (a missing path, a folder without logs, a
-// malformed log), was over the work bound, or no PATH was given and no project folder was found; 128 + the
-// signal if SIGINT or SIGTERM stopped it (between two logs: the summary says how many ran).
+// `ricochet replay [PATH...] [--hashes] [--json] [--kernel K] [--max-work N] [--plugin PATH...]`: every log's
+// checks and expect lines; exit 0 all passed (logs for a kernel this build lacks are skipped, and said so), 1 some
+// failed, 2 some path or log could not be read (a missing path, a folder without logs, a malformed log), was over
+// the work bound, or no PATH was given and no project folder was found; 128 + the signal if SIGINT or SIGTERM
+// stopped it (between two frames of a log or two logs: the summary says how many ran, and where it stopped).
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -18,6 +19,7 @@ void register_replay(CLI::App& app) {
     struct Options {
         std::vector<std::string> paths;
         std::vector<std::string> plugins;
+        std::string kernel;
         bool hashes = false;
         bool json = false;
         std::uint64_t max_work = k_default_max_work;
@@ -25,15 +27,23 @@ void register_replay(CLI::App& app) {
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand(
         "replay", "replay logs (default: the project's replays/ or $RICOCHET_REPLAY_DIR; folders: every *.scene under them)");
-    sub->add_option("PATH", opt->paths, "logs or folders (a missing path or a folder without *.scene is an error, exit 2)");
+    sub->add_option("PATH", opt->paths,
+                    "logs or folders (-: a log on standard input; a missing path or a folder without *.scene is an "
+                    "error, exit 2)");
     sub->add_flag("--hashes", opt->hashes, "print 'HASH PATH' per log (for comparing builds) instead");
     sub->add_flag("--json", opt->json,
                   "print one JSON document (docs/cli-json.md, schema ricochet-replay/1) on stdout instead; "
                   "the per-log lines go to stderr");
+    sub->add_option("--kernel", opt->kernel,
+                    "run every log under this kernel instead of its own: a kernel's name, or plugin:PATH "
+                    "(ricochet/plugin.h); its checks and expect lines are asserted as they are");
     add_max_work_option(*sub, opt->max_work);
     add_plugin_option(*sub, opt->plugins);
     sub->callback([opt] {
+        // Plug-ins and the kernel first: a plug-in loaded by --plugin or --kernel plugin:PATH makes its name known
+        // to the logs.
         load_plugins_or_exit(opt->plugins);
+        const std::optional<KernelId> kernel = opt->kernel.empty() ? std::nullopt : std::optional(kernel_or_exit(opt->kernel));
         std::vector<std::string> paths = opt->paths;
         if (paths.empty()) {
             // The project's corpus, never the tree this binary was built from.
@@ -46,7 +56,7 @@ void register_replay(CLI::App& app) {
         }
         app::JsonStdout json_out(opt->json);
         const app::StopOnSignal stop;
-        const ReplaySummary s = replay_paths(paths, opt->hashes, opt->max_work);
+        const ReplaySummary s = replay_paths(paths, opt->hashes, opt->max_work, kernel);
         const int code = s.stopped ? app::stop_exit_code() : s.bad_input ? 2 : s.failed > 0 ? 1 : 0;
         if (json_out.on()) {
             json_out.restore();

@@ -1,4 +1,4 @@
-// `ricochet run LOG [--kernel K] [--frames N] [--max-work N]`: the run's events as docs/scene-log.md prints
+// `ricochet run LOG [--kernel K] [--frames N] [--max-work N]` (LOG `-`: standard input): the run's events as docs/scene-log.md prints
 // them, stepped with the default WorldOptions (the broad phase on, one thread). SIGINT or SIGTERM stops it
 // after a whole frame: every event up to it is printed, then "stopped" on stderr, exit 128 + the signal.
 #include <cstdio>
@@ -24,7 +24,7 @@ void register_run(CLI::App& app) {
     };
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand("run", "print a log's run: state/hit/bump/overlap lines, frame 0 = initial state");
-    sub->add_option("LOG", opt->log, "scene log")->required();
+    sub->add_option("LOG", opt->log, "scene log (-: standard input)")->required();
     sub->add_option("--kernel", opt->kernel, "override the log's kernel: a kernel's name, or plugin:PATH (ricochet/plugin.h)");
     sub->add_option("--frames", opt->frames, "override the log's frame count")
         ->check(number_in(std::int64_t{0}, k_max_frames, "a frame count"));

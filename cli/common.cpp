@@ -1,5 +1,9 @@
 // Helpers shared by the subcommands: loading logs, kernels, replaying.
 #include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <chrono>
 #include <system_error>
 #include <variant>
@@ -9,6 +13,8 @@
 #include "commands.hpp"
 #include "progress.hpp"
 #include "ricochet/hash.hpp"
+#include "ricochet/kernel_id.hpp"
+#include "ricochet/check.hpp"
 #include "ricochet/kernel_spec.hpp"
 #include "ricochet/plugin_guard.hpp"
 #include "ricochet/plugin_loader.hpp"
@@ -19,8 +25,24 @@
 
 namespace ricochet::cli {
 
-Scene load_scene_or_exit(const std::filesystem::path& path) {
-    auto result = read_scene_log(path);
+SceneOrDiagnostic read_scene_or_stdin(const std::string& path, ExpectLines expect_lines) {
+    if (path != k_stdin_path) return read_scene_log(path, expect_lines);
+    // At most one byte past the limit, as read_log_text reads a file, so a huge stream is refused quickly.
+    std::string text;
+    std::array<char, 65536> chunk{};
+    for (std::size_t n; (n = std::fread(chunk.data(), 1, chunk.size(), stdin)) > 0;) {
+        text.append(chunk.data(), n);
+        if (text.size() > k_max_file_size)
+            return Diagnostic{std::string(k_stdin_name), 1, 1,
+                              fmt::format("the input is over the limit of {} bytes", k_max_file_size)};
+    }
+    if (std::ferror(stdin))
+        return Diagnostic{std::string(k_stdin_name), 1, 1, fmt::format("cannot read: {}", std::strerror(errno))};
+    return parse_scene_log(text, k_stdin_name, expect_lines);
+}
+
+Scene load_scene_or_exit(const std::string& path) {
+    auto result = read_scene_or_stdin(path);
     if (auto* d = std::get_if<Diagnostic>(&result)) {
         fmt::print(stderr, "{}\n", d->str());
         throw Exit{2};
@@ -39,7 +61,23 @@ void write_file_holding_signals(const std::string& path, std::string_view text,
                                 std::optional<app::ExitOnSignal>& running, std::optional<app::StopOnSignal>& stop) {
     std::string error;
     bool written = false;
-    {
+    if (path == k_stdout_path || writes_in_place(path)) {
+        // Standard output, a device or a FIFO is written in place: it cannot be whole or untouched, and a
+        // write to a FIFO or a pipe waits on its reader, so a signal during it ends the command at once.
+        running.reset();
+        {
+            const app::ExitOnSignal cut("ricochet: the write in place was cut short; stopped by ");
+            if (path == k_stdout_path) {
+                write_stdout(text);
+                std::fflush(stdout);
+                check_stdout();
+                written = true;
+            } else {
+                written = write_file_atomically(path, text, &error);
+            }
+        }
+        stop.emplace();
+    } else {
         const app::HoldSignals hold;
         running.reset();
         stop.emplace();
@@ -83,12 +121,15 @@ void stage_plugin_run(KernelId k, std::string doing) {
     if (plugin_info(k) != nullptr) stage_plugin_input({std::move(doing), {}, {}});
 }
 
-ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work) {
+ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_only, std::uint64_t max_work,
+                           std::optional<KernelId> kernel) {
     ReplaySummary s;
     std::vector<std::filesystem::path> logs;
     for (const std::string& p : paths) {
         std::error_code ec;
-        if (std::filesystem::is_directory(p, ec)) {
+        if (p == k_stdin_path) {
+            logs.emplace_back(p);
+        } else if (std::filesystem::is_directory(p, ec)) {
             std::vector<std::filesystem::path> found;
             for (auto it = std::filesystem::recursive_directory_iterator(p, ec);
                  !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
@@ -109,7 +150,7 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             logs.emplace_back(p);
         } else {
             fmt::print(stderr, "{}:1:1: error: no such file or folder\n", p);
-            s.logs.push_back({p, "missing", "no such file or folder", std::nullopt});
+            s.logs.push_back({p, "missing", "no such file or folder", std::nullopt, std::nullopt, std::nullopt});
             s.bad_input = true;
             ++s.failed;
         }
@@ -117,81 +158,144 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
     s.total = logs.size();
     Progress progress("ricochet replay", Progress::Unit::log);
     std::size_t done = 0;
+    const auto stopped_line = [&] {
+        fmt::print(stderr, "ricochet replay: stopped by {} after {} of {} logs\n", app::stop_signal_name(), done,
+                   logs.size());
+    };
     for (const auto& log : logs) {
         // A log boundary: a SIGINT or SIGTERM (the caller holds a StopOnSignal) stops before the next log.
         if (app::stop_requested()) {
             s.stopped = true;
             progress.clear();
-            fmt::print(stderr, "ricochet replay: stopped by {} after {} of {} logs\n", app::stop_signal_name(), done, logs.size());
+            stopped_line();
             break;
         }
-        progress.update(static_cast<std::int64_t>(done++), static_cast<std::int64_t>(logs.size()));
-        auto parsed = read_scene_log(log);
+        progress.update(static_cast<std::int64_t>(done), static_cast<std::int64_t>(logs.size()));
+        auto parsed = read_scene_or_stdin(log.string());
         if (auto* d = std::get_if<Diagnostic>(&parsed)) {
+            ++done;
             progress.clear();
+            // A log for a kernel this build knows but lacks (a peer left out) is skipped, and said so: the
+            // build, not the log, lacks something.
+            const auto quote = d->message.find('\'');
+            const auto unquote = quote == std::string::npos ? quote : d->message.find('\'', quote + 1);
+            if (unquote != std::string::npos && d->message.starts_with("kernel '") &&
+                absent_kernel_message(std::string_view(d->message).substr(quote + 1, unquote - quote - 1)) == d->message) {
+                if (!hashes_only) write_stdout(fmt::format("skip {}: {}\n", log.string(), d->message));
+                s.logs.push_back({log.string(), "skipped", d->message, std::nullopt, std::nullopt, std::nullopt});
+                ++s.skipped;
+                ++s.skip_reasons[d->message];
+                continue;
+            }
             fmt::print(stderr, "{}\n", d->str());
             // A plug-in's failure log names its kernel, which only a plug-in loaded first makes known.
             if (d->message.starts_with("unknown kernel"))
                 fmt::print(stderr, "ricochet: note: a plug-in's kernel is known once the plug-in is loaded: --plugin PATH\n");
             if (!hashes_only) write_stdout(fmt::format("FAIL {}: unreadable log\n", log.string()));
-            s.logs.push_back({log.string(), "unreadable", d->str(), std::nullopt});
+            s.logs.push_back({log.string(), "unreadable", d->str(), std::nullopt, std::nullopt, std::pair{d->line, d->col}});
             s.bad_input = true;
             ++s.failed;
             continue;
         }
         const Scene& scene = std::get<Scene>(parsed);
         if (const std::string error = work_over_budget(log.string(), scene, scene.frames, max_work); !error.empty()) {
+            ++done;
             progress.clear();
             fmt::print(stderr, "ricochet: error: {}\n", error);
             if (!hashes_only) write_stdout(fmt::format("FAIL {}: not run (over --max-work)\n", log.string()));
-            s.logs.push_back({log.string(), "over-budget", error, std::nullopt});
+            s.logs.push_back({log.string(), "over-budget", error, std::nullopt, std::nullopt, std::nullopt});
             s.bad_input = true;
             ++s.failed;
             continue;
         }
         // A kernel that cannot step the log's discs or bumpers, or a check with no meaning for them: bad input.
-        if (const auto why = refusal(scene, scene.kernel, scene.checks)) {
+        const KernelId k = kernel.value_or(scene.kernel);
+        if (const auto why = refusal(scene, k, scene.checks)) {
+            ++done;
             progress.clear();
             const std::string error = fmt::format("{}: error: {}", log.string(), *why);
             fmt::print(stderr, "{}\n", error);
             if (!hashes_only) write_stdout(fmt::format("FAIL {}: not run (unsupported)\n", log.string()));
-            s.logs.push_back({log.string(), "unsupported", error, std::nullopt});
+            s.logs.push_back({log.string(), "unsupported", error, std::nullopt, std::nullopt, std::nullopt});
             s.bad_input = true;
             ++s.failed;
             continue;
         }
-        stage_plugin_run(scene.kernel, fmt::format("replaying {}", log.string()));
-        const ReplayResult r = replay_scene(scene);
+        stage_plugin_run(k, fmt::format("replaying {}", log.string()));
+        // Between two frames: a SIGINT or SIGTERM ends a long log there, as `run` does.
+        const ReplayResult r = replay_scene(scene, kernel, [] { return app::stop_requested(); });
         clear_plugin_stage();
+        if (r.stopped) {
+            s.stopped = true;
+            s.stopped_at = StoppedAt{log.string(), r.run.frames_run, scene.frames};
+            progress.clear();
+            fmt::print(stderr, "ricochet replay: stopped by {} in {} after frame {} of {}\n", app::stop_signal_name(),
+                       log.string(), r.run.frames_run, scene.frames);
+            stopped_line();
+            break;
+        }
+        ++done;
         if (hashes_only)
             write_stdout(fmt::format("{} {}\n", format_hash(r.run.hash), log.string()));
         else
             write_stdout(fmt::format("{} {}: {}\n", r.passed ? "ok  " : "FAIL", log.string(), r.message));
         (r.passed ? s.passed : s.failed) += 1;
-        s.logs.push_back({log.string(), r.passed ? "passed" : "failed", r.message, r.run.hash});
+        s.logs.push_back({log.string(), r.passed ? "passed" : "failed", r.message, r.run.hash, r.run.failure, std::nullopt});
         // Line by line, so a reader (and a failed write) sees each verdict as it comes.
         std::fflush(stdout);
         check_stdout();
     }
-    if (!hashes_only) write_stdout(fmt::format("{} passed, {} failed\n", s.passed, s.failed));
+    if (!hashes_only) write_stdout(replay_counts(s, false) + "\n");
     std::fflush(stdout);
     check_stdout();
     return s;
 }
 
+std::string replay_counts(const ReplaySummary& s, bool with_reasons) {
+    std::string out = fmt::format("{} passed, {} failed", s.passed, s.failed);
+    if (s.skipped == 0) return out;
+    out += fmt::format(", {} skipped", s.skipped);
+    if (!with_reasons) return out;
+    std::string why;
+    for (const auto& [reason, n] : s.skip_reasons) why += fmt::format("{}{}: {}", why.empty() ? "" : "; ", reason, n);
+    return fmt::format("{} ({})", out, why);
+}
+
 void write_replay_members(app::JsonWriter& json, const ReplaySummary& s) {
-    json.member("passed", s.passed).member("failed", s.failed).member("bad_input", s.bad_input);
+    json.member("passed", s.passed).member("failed", s.failed).member("skipped", s.skipped);
+    json.key("skip_reasons").begin_object();
+    for (const auto& [reason, n] : s.skip_reasons) json.member(reason, n);
+    json.end_object();
+    json.member("bad_input", s.bad_input);
     json.member("stopped", s.stopped).member("total", static_cast<std::uint64_t>(s.total));
+    json.key("stopped_at");
+    if (s.stopped_at)
+        json.begin_object()
+            .member("path", s.stopped_at->path)
+            .member("frame", s.stopped_at->frame)
+            .member("frames", s.stopped_at->frames)
+            .end_object();
+    else
+        json.null();
     json.key("errors").begin_array();
     for (const std::string& e : s.errors) json.value(e);
     json.end_array();
     json.key("logs").begin_array();
+    // A member that is absent for this log: null.
+    const auto maybe = [&](std::string_view name, const auto& v, bool present) -> app::JsonWriter& {
+        return present ? json.member(name, v) : json.key(name).null();
+    };
     for (const LogVerdict& v : s.logs) {
         json.begin_object().member("path", v.path).member("status", v.status).member("message", v.message).key("hash");
         if (v.hash)
             json.value(format_hash(*v.hash));
         else
             json.null();
+        maybe("check", v.failure ? std::string(check_name(v.failure->check)) : std::string(), v.failure.has_value());
+        maybe("frame", v.failure ? v.failure->frame : std::int64_t{0}, v.failure.has_value());
+        maybe("ball", v.failure ? std::int64_t{v.failure->ball} : std::int64_t{0}, v.failure.has_value());
+        maybe("line", v.place ? v.place->first : 0, v.place.has_value());
+        maybe("column", v.place ? v.place->second : 0, v.place.has_value());
         json.end_object();
     }
     json.end_array();

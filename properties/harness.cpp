@@ -19,6 +19,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -44,6 +45,24 @@ namespace ricochet::props {
 namespace {
 
 std::atomic<long long> g_total_cases{0};
+/// The logs this run saved (or found already saved) for its failures, for RICOCHET_PROPERTIES_REPORT.
+std::vector<std::string> g_saved_logs;
+
+/// Writes RICOCHET_PROPERTIES_REPORT, if set: a line `failed TEST` per failed test (its full GoogleTest name)
+/// and `log PATH` per failure log saved, for `ricochet check --json`.
+void write_report() {
+    const char* path = std::getenv("RICOCHET_PROPERTIES_REPORT");
+    if (path == nullptr || *path == '\0') return;
+    std::ofstream out(path, std::ios::trunc);
+    const ::testing::UnitTest& run = *::testing::UnitTest::GetInstance();
+    for (int i = 0; i < run.total_test_suite_count(); ++i) {
+        const ::testing::TestSuite& suite = *run.GetTestSuite(i);
+        for (int j = 0; j < suite.total_test_count(); ++j)
+            if (const ::testing::TestInfo& test = *suite.GetTestInfo(j); test.result() != nullptr && test.result()->Failed())
+                out << "failed " << suite.name() << "." << test.name() << "\n";
+    }
+    for (const std::string& log : g_saved_logs) out << "log " << log << "\n";
+}
 /// The labels of the case being generated, or nullptr outside one.
 thread_local std::set<std::string>* g_case_tags = nullptr;
 
@@ -59,17 +78,68 @@ public:
         const ::testing::UnitTest& run = *::testing::UnitTest::GetInstance();
         if (run.skipped_test_count() > 0 && run.successful_test_count() == 0 && run.failed_test_count() == 0)
             fmt::print("ricochet properties: every test was skipped\n");
+        write_report();
     }
 };
 [[maybe_unused]] ::testing::Environment* const g_counter = ::testing::AddGlobalTestEnvironment(new CaseCounter);
 
-/// True if RC_PARAMS sets key (then RapidCheck's configuration wins over our default).
 /// The seed every property runs with when RC_PARAMS names none.
 constexpr std::uint64_t k_default_seed = 1;
 
-bool rc_params_set(std::string_view key) {
-    const char* env = std::getenv("RC_PARAMS");
-    return env != nullptr && std::string_view(env).find(key) != std::string_view::npos;
+/// RC_PARAMS as the user set it, read once, before pin_rapidcheck_seed adds the harness's seed to it.
+const std::string& user_rc_params() {
+    static const std::string params = [] {
+        const char* env = std::getenv("RC_PARAMS");
+        return std::string(env != nullptr ? env : "");
+    }();
+    return params;
+}
+
+/// True if the user's RC_PARAMS sets key (then RapidCheck's configuration wins over our default).
+bool rc_params_set(std::string_view key) { return user_rc_params().find(key) != std::string::npos; }
+
+/// Puts the seed the properties run with into RC_PARAMS before RapidCheck reads it (once, at its first
+/// configuration()): RapidCheck would otherwise draw a random seed of its own and print it ("Using configuration:
+/// seed=…"), a second seed beside the harness's that reproduces nothing.
+void pin_rapidcheck_seed() {
+    static const bool pinned = [] {
+        if (!rc_params_set("seed")) {
+            const std::string params = fmt::format("{}{}seed={}", user_rc_params(), user_rc_params().empty() ? "" : " ",
+                                                   k_default_seed);
+            ::setenv("RC_PARAMS", params.c_str(), 1);
+        }
+        return true;
+    }();
+    (void)pinned;
+}
+
+/// A RapidCheck listener that reports nothing: the harness reports every result itself.
+class SilentListener final : public rc::detail::TestListener {
+public:
+    void onTestCaseFinished(const rc::detail::CaseDescription&) override {}
+    void onShrinkTried(const rc::detail::CaseDescription&, bool) override {}
+    void onTestFinished(const rc::detail::TestMetadata&, const rc::detail::TestResult&) override {}
+};
+
+/// The kernel as RICOCHET_KERNEL spells it: its name, or plugin:PATH for a plug-in.
+std::string kernel_spec(KernelId k) {
+    if (const PluginInfo* info = plugin_info(k)) return fmt::format("plugin:{}", info->path.string());
+    return std::string(kernel_name(k));
+}
+
+/// The one command that reproduces the current test's failure: the same kernel, folder, seed and case count,
+/// this test alone.
+std::string reproduce_command(KernelId k, const rc::detail::TestParams& params) {
+    const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::error_code ec;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    const char* dir = std::getenv("RICOCHET_REPLAY_DIR");
+    return fmt::format("RICOCHET_KERNEL={}{} RC_PARAMS=\"seed={} max_success={}{}\" {} --gtest_filter='{}.{}'",
+                       kernel_spec(k),
+                       dir != nullptr && *dir != '\0' ? fmt::format(" RICOCHET_REPLAY_DIR={}", dir) : std::string(),
+                       params.seed, params.maxSuccess, params.disableShrinking ? " noshrink=1" : "",
+                       ec ? std::string("ricochet_properties") : self.string(),
+                       test != nullptr ? test->test_suite_name() : "*", test != nullptr ? test->name() : "*");
 }
 
 std::vector<std::string> words(std::string_view s) {
@@ -88,12 +158,12 @@ bool names_property(const Scene& s, std::string_view name) {
 }
 
 /// Before case s of p runs under kernel k: a plug-in kernel's guard is told (plugin_guard.hpp), to keep the case
-/// in replay_dir() as NAME-ID.scene should the plug-in crash or hang on it.
+/// in save_dir(k) as NAME-ID.scene should the plug-in crash or hang on it.
 void stage_case(const Property& p, KernelId k, const Scene& s, std::uint64_t seed) {
     if (plugin_info(k) == nullptr) return;
     const Scene log = plugin_case_log(s, k, fmt::format("property {} seed {}", p.name, seed));
     stage_plugin_input({fmt::format("running property {} (seed {})", p.name, seed), write_scene_log(log),
-                        replay_dir() / fmt::format("{}-{}.scene", p.name, scene_content_id(log))});
+                        save_dir(k) / fmt::format("{}-{}.scene", p.name, scene_content_id(log))});
 }
 
 /// Runs the statement, turning an unexpected exception into a failure of the property's check.
@@ -105,15 +175,21 @@ std::optional<Failure> judge(const Property& p, KernelId k, const Scene& s) {
     }
 }
 
-/// Replays every saved log in replay_dir() that names p, under kernel k. Returns how many it replayed.
+/// Replays every saved log in replay_dir(), and in save_dir(k) when that is another folder, that names p, under
+/// kernel k. Returns how many it replayed.
 int replay_saved(const Property& p, KernelId k) {
-    const std::filesystem::path dir = replay_dir();
-    std::error_code ec;
-    if (!std::filesystem::is_directory(dir, ec)) return 0;
     std::vector<std::filesystem::path> logs;
-    for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-        if (entry.path().extension() == ".scene") logs.push_back(entry.path());
-    std::sort(logs.begin(), logs.end());  // a fixed order, whatever the file system's
+    for (const std::filesystem::path& dir : {replay_dir(), save_dir(k)}) {
+        std::error_code ec;
+        if (!std::filesystem::is_directory(dir, ec)) continue;
+        // The same folder twice (save_dir(k) is replay_dir() for a built-in kernel) is listed once.
+        if (dir != replay_dir() && std::filesystem::equivalent(dir, replay_dir(), ec)) continue;
+        std::vector<std::filesystem::path> found;
+        for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+            if (entry.path().extension() == ".scene") found.push_back(entry.path());
+        std::sort(found.begin(), found.end());  // a fixed order, whatever the file system's
+        logs.insert(logs.end(), found.begin(), found.end());
+    }
     int replayed = 0;
     for (const auto& path : logs) {
         auto parsed = read_scene_log(path);
@@ -168,8 +244,9 @@ std::string save_failure(const Property& p, KernelId k, std::uint64_t seed, cons
                            check_name(f.check));
     const FailureLog& log = reduced->log;
     std::string error;
-    const auto saved = save_scene_log_once(replay_dir(), p.name, std::string_view(log.text()), &error);
+    const auto saved = save_scene_log_once(save_dir(k), p.name, std::string_view(log.text()), &error);
     if (!saved) return fmt::format("could not save the case: {}", error);
+    g_saved_logs.push_back(saved->path.string());
     std::string report = fmt::format("minimal case, reduced from {} to {} entities and {} to {} frames in {} tries, {} {}",
                                      reduced->before.entities(), reduced->after.entities(), reduced->before.frames,
                                      reduced->after.frames, reduced->tries, saved->is_new ? "saved as" : "already saved as",
@@ -219,6 +296,16 @@ std::filesystem::path replay_dir() {
     return RICOCHET_DEFAULT_REPLAY_DIR;
 }
 
+std::filesystem::path save_dir(KernelId k) {
+    const char* env = std::getenv("RICOCHET_REPLAY_DIR");
+    if (env != nullptr && *env != '\0') return env;
+    if (std::find(k_all_kernels.begin(), k_all_kernels.end(), k) != k_all_kernels.end()) return replay_dir();
+    // A peer's or a plug-in's log names a kernel the corpus's readers may not have: never into the corpus.
+    std::error_code ec;
+    const std::filesystem::path here = std::filesystem::current_path(ec);
+    return (ec ? std::filesystem::path(".") : here) / "found";
+}
+
 void tag(std::string_view label) {
     if (g_case_tags != nullptr) g_case_tags->emplace(label);
 }
@@ -262,6 +349,7 @@ void run_property(const Property& p, KernelId k) {
     const auto start = std::chrono::steady_clock::now();
     const int replayed = replay_saved(p, k);
 
+    pin_rapidcheck_seed();
     rc::detail::TestParams params = rc::detail::configuration().testParams;
     if (!rc_params_set("max_success")) params.maxSuccess = p.default_max_success;
     // No luck in tests: without a seed in RC_PARAMS every property runs its fixed seed (RapidCheck's own
@@ -278,9 +366,14 @@ void run_property(const Property& p, KernelId k) {
     std::optional<Found> last;  // the latest failing case: after shrinking, the minimal one
     std::map<std::string, long> tally;  // label -> cases carrying it
     long cases = 0;
-    const auto property = [&] {
-        Scene s = *p.gen;
+    // The generated scene names the kernel it runs under, so that RapidCheck's counterexample is the log of the
+    // case that failed.
+    const rc::Gen<Scene> gen = rc::gen::map(p.gen, [k](Scene s) {
         s.kernel = k;
+        return s;
+    });
+    const auto property = [&] {
+        Scene s = *gen;
         stage_case(p, k, s, params.seed);
         std::set<std::string> labels;
         g_case_tags = &labels;
@@ -294,7 +387,11 @@ void run_property(const Property& p, KernelId k) {
             RC_FAIL(message);
         }
     };
-    const rc::detail::TestResult result = rc::detail::checkTestable(property, metadata, params);
+    // Our own listener, which says nothing: RapidCheck's would add, at exit, a `reproduce=` string of its own
+    // beside the one command this harness prints (reproduce_command).
+    SilentListener listener;
+    const rc::detail::TestResult result =
+        rc::detail::checkProperty(rc::detail::toProperty(property), metadata, params, listener);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     if (result.is<rc::detail::SuccessResult>()) {
@@ -315,8 +412,9 @@ void run_property(const Property& p, KernelId k) {
         g_total_cases += bad->numSuccess;
         const std::string saved =
             last ? save_failure(p, k, params.seed, last->scene, last->failure) : "no failing case was recorded";
-        ADD_FAILURE() << fmt::format("{} [{}] fails after {} cases ({:.2f} s, seed {}); {}\n{}", p.name,
-                                     kernel_name(k), bad->numSuccess, seconds, params.seed, saved, ss.str());
+        ADD_FAILURE() << fmt::format("{} [{}] fails after {} cases ({:.2f} s, seed {}); {}\n{}\nreproduce: {}\n", p.name,
+                                     kernel_name(k), bad->numSuccess, seconds, params.seed, saved, ss.str(),
+                                     reproduce_command(k, params));
         return;
     }
     ADD_FAILURE() << fmt::format("{} [{}]: {}", p.name, kernel_name(k), ss.str());

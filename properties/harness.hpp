@@ -27,8 +27,13 @@ namespace ricochet::props {
 /// The kernels RICOCHET_KERNEL names (one name, or several separated by commas); robust and exact if unset.
 std::vector<KernelId> kernels_under_test();
 
-/// The folder failures are saved into and saved logs are replayed from: RICOCHET_REPLAY_DIR, else replays/.
+/// The folder saved logs are replayed from: RICOCHET_REPLAY_DIR, else the source tree's replays/ (the corpus).
 std::filesystem::path replay_dir();
+
+/// The folder kernel k's failures (and a plug-in's kept cases) are saved into: RICOCHET_REPLAY_DIR; else, for a
+/// built-in kernel, the corpus (replay_dir()); else (a peer, a plug-in) found/ in the current folder, so that a
+/// kernel of the user's never writes into ricochet's own corpus. Its saved logs are replayed too.
+std::filesystem::path save_dir(KernelId k);
 
 /// Why a case broke a property: the scene-log check it breaks and what was expected against what happened.
 struct Failure {

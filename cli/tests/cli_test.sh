@@ -179,6 +179,22 @@ case "$case" in
                      run 2 replay "$dir/logs"
                      has out "FAIL $dir/logs/b.scene: unreadable log"; has out "1 passed, 1 failed"
                      grep -q "^$dir/logs/b.scene:2:1: error: " "$dir/err" || fail "no diagnostic naming b.scene:2:1" ;;
+  # A log for a kernel this build knows but lacks (a peer left out: RICOCHET_PEERS=OFF, or its library not found)
+  # is skipped and said so, never a failure of replay or check.
+  absent-kernel)     absent=; for k in box2d chipmunk; do case " ${RICOCHET_PEER_KERNELS:-} " in *" $k "*) ;; *) absent=$k; break ;; esac; done
+                     [ -n "$absent" ] || { echo "skip $case: this build has every peer kernel"; exit 77; }
+                     mkproj; peer=$(ls "$src/replays/peers/$absent/"*.scene | head -n 1); cp "$peer" "$proj/replays/p.scene"
+                     run 0 replay "$proj/replays"
+                     grep -q "^skip $proj/replays/p.scene: kernel '$absent' is not built into this ricochet: " "$dir/out" || fail "no skip line"
+                     has out "1 passed, 0 failed, 1 skipped"
+                     run 0 replay --json "$proj/replays"
+                     json_is out 'd["exit"] == 0 and d["skipped"] == 1 and d["failed"] == 0 and d["bad_input"] is False and [l["status"] for l in d["logs"]] == ["skipped", "passed"] and list(d["skip_reasons"].values()) == [1] and list(d["skip_reasons"])[0].startswith("kernel \x27" + a[0] + "\x27 is not built into this ricochet: ")' "$absent"
+                     cd "$proj"; run 0 check --no-properties --fuzz-runs 0
+                     grep -q '^replay      1 passed, 0 failed, 1 skipped ([0-9.]* s)$' "$dir/out" || fail "no replay summary with 1 skipped"
+                     grep -q "^            1 skipped: kernel '$absent' is not built into this ricochet: " "$dir/out" || fail "check does not say why"
+                     has out "check passed"
+                     run 0 check --json --no-properties --fuzz-runs 0
+                     json_is out 'd["passed"] is True and d["stages"]["replay"]["status"] == "passed" and d["stages"]["replay"]["skipped"] == 1' ;;
   check-fuzz-seconds-env) mkproj; cd "$proj"; RICOCHET_CHECK_FUZZ_SECONDS=soon run 2 check --no-properties
                      first_line err "ricochet check: error: RICOCHET_CHECK_FUZZ_SECONDS='soon' is not a number of seconds (0 to 86400)" ;;
   check-properties)  # The property suite as check runs it, with a fixed RapidCheck seed (no luck in the verdict).
@@ -270,6 +286,57 @@ case "$case" in
                      run 0 render "$dir/t.scene" -o "$dir/robust.svg" --kernel robust
                      grep -q '^wrote [^(]*$' "$dir/out" || fail "render --kernel robust marked a failure"
                      grep -q '>kernel robust, frames 0\.\.10, ' "$dir/robust.svg" || fail "the caption does not say kernel robust" ;;
+  # -o and LOG: `-` is stdout or stdin; a device, a FIFO or a link to one is written in place, never replaced.
+  out-stdout)        run 0 render "$log" -o -
+                     head -n 1 "$dir/out" | grep -q "^<svg xmlns=" || fail "stdout does not start with the picture"
+                     [ "$(tail -n 1 "$dir/out")" = "</svg>" ] || fail "stdout is not the whole picture"
+                     has err "ricochet render: wrote the picture to standard output"
+                     run 0 reduce "$src/replays/lecture/double-wedge-tunnel.scene" -o -
+                     first_line out "ricochet 1"; grep -q '^found no-tunnel ' "$dir/out" || fail "stdout is not the reduced log"
+                     [ ! -e ./- ] && [ ! -e "$dir/-" ] || fail "a file named - was written" ;;
+  in-stdin)          run 0 run - <"$log"; "$ricochet" run "$log" >"$dir/want" || fail "run LOG failed"
+                     cmp -s "$dir/out" "$dir/want" || fail "run - <LOG differs from run LOG"
+                     run 0 replay - <"$log"; has out "ok   -: 10 frames, hash $("$ricochet" replay --hashes "$log" | cut -c1-16)"
+                     run 0 render - -o "$dir/x.svg" <"$log"; grep -q '^<svg ' "$dir/x.svg" || fail "render - drew nothing"
+                     printf 'ricochet 1\nbogus 1\n' >"$dir/b.scene"
+                     run 2 run - <"$dir/b.scene"; first_line err "<stdin>:2:1: error: unknown directive 'bogus'"
+                     run 2 record - <"$log"; first_line err "ricochet: error: record writes its log back: it needs a file, not standard input (-)" ;;
+  out-fifo)          # A reader on a FIFO made here gets the picture and the reduced log; the FIFO stays a FIFO.
+                     mkfifo "$dir/pipe" || { echo "skip $case: no mkfifo"; exit 77; }
+                     ln -s pipe "$dir/link"
+                     for target in pipe link; do
+                       # (A reader that never sees a writer, as when the FIFO was replaced, gives up after 10 s.)
+                       timeout 10 cat "$dir/pipe" >"$dir/got" & reader=$!
+                       run 0 render "$log" -o "$dir/$target"; wait "$reader" || fail "the FIFO's reader got nothing ($target)"
+                       [ -p "$dir/pipe" ] || fail "render -o $target replaced the FIFO"
+                       [ "$(tail -n 1 "$dir/got")" = "</svg>" ] || fail "the FIFO's reader did not get the picture ($target)"
+                       has out "wrote $dir/$target"
+                     done
+                     [ -L "$dir/link" ] || fail "the link to the FIFO was replaced"
+                     timeout 10 cat "$dir/pipe" >"$dir/got" & reader=$!
+                     run 0 reduce "$src/replays/lecture/double-wedge-tunnel.scene" -o "$dir/link"; wait "$reader" || fail "reduce's reader got nothing"
+                     [ -p "$dir/pipe" ] && [ -L "$dir/link" ] || fail "reduce -o replaced the FIFO or its link"
+                     grep -q '^found no-tunnel ' "$dir/got" || fail "the FIFO's reader did not get the reduced log"
+                     [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left" ;;
+  out-device)        # A character device made here (the null device's numbers, 1 3), never the system's /dev/null.
+                     [ "$(id -u)" = 0 ] || { echo "skip $case: mknod needs root"; exit 77; }
+                     mknod "$dir/null" c 1 3 2>/dev/null || { echo "skip $case: mknod is not allowed here"; exit 77; }
+                     ln -s null "$dir/link"
+                     run 0 render "$log" -o "$dir/null"; has out "wrote $dir/null"
+                     run 0 render "$log" -o "$dir/link"
+                     run 0 reduce "$src/replays/lecture/double-wedge-tunnel.scene" -o "$dir/null"
+                     [ -c "$dir/null" ] || fail "the device was replaced by a regular file"
+                     [ -L "$dir/link" ] || fail "the link to the device was replaced"
+                     [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left" ;;
+  replay-kernel)     # --kernel runs each log under another kernel, its checks and expect lines as they are: the
+                     # lecture's tunnel, expected under lecture-double, does not happen under robust.
+                     t=$src/replays/lecture/double-pinball-tunnel.scene
+                     run 0 replay "$t"
+                     run 1 replay --kernel robust "$t"
+                     grep -q "^FAIL $t: .*expected no-tunnel to break first at frame [0-9]*, but every check held" "$dir/out" ||
+                       fail "not run under robust"
+                     run 2 replay --kernel nope "$t"
+                     first_line err "ricochet: error: unknown kernel 'nope' ($kernels, or plugin:PATH)" ;;
   # reduce: a failing log made small; the input never changes, the output is a failure log replay reproduces.
   reduce-corpus)     cp "$src/replays/lecture/double-pinball-tunnel.scene" "$dir/in.scene"
                      run 0 reduce "$dir/in.scene" -o "$dir/out.scene"
@@ -356,7 +423,7 @@ case "$case" in
   json-replay-pass)  run 0 replay --json "$log"
                      json_is out 'd["schema"] == "ricochet-replay/1" and d["exit"] == 0 and d["passed"] == 1 and d["failed"] == 0'
                      json_is out 'd["bad_input"] is False and d["errors"] == [] and len(d["logs"]) == 1'
-                     json_is out 'd["logs"][0] == {"path": a[0], "status": "passed", "message": a[1], "hash": a[2]}' "$log" \
+                     json_is out 'd["logs"][0] == {"path": a[0], "status": "passed", "message": a[1], "hash": a[2], "check": None, "frame": None, "ball": None, "line": None, "column": None}' "$log" \
                        "10 frames, hash $("$ricochet" replay --hashes "$log" | cut -c1-16)" "$("$ricochet" replay --hashes "$log" | cut -c1-16)"
                      has err "1 passed, 0 failed" ;;
   json-replay-fail)  run 1 replay --json "$log" "$badlog"
@@ -377,6 +444,24 @@ case "$case" in
                      rm "$proj/replays/bad.scene"; cp "$src/replays/pinball.scene" "$proj/replays/"
                      run 0 check --json --no-properties --fuzz-runs 0
                      json_is out 'd["passed"] is True and d["exit"] == 0 and d["stages"]["pinball"]["status"] == "passed" and d["stages"]["pinball"]["kernels"]["robust"] == "ok"' ;;
+  json-fields)       # What a CI step reads without parsing a message: a failure's check, frame and ball, a parse error's place.
+                     printf 'ricochet 1\nkernel lecture-double\nframes 10\nwall 0 10 0 0\nwall 0 0 10 0\nwall 10 0 10 10\nwall 10 10 0 10\nwall 0 2 3 0.5\nwall 7 0.5 10 2\nball 8 5 4 1\ncheck no-tunnel\n' >"$dir/t.scene"
+                     printf 'ricochet 1\nbogus 1\n' >"$dir/b.scene"
+                     run 2 replay --json "$dir/t.scene" "$dir/b.scene" "$src/replays/lecture/double-pinball-tunnel.scene"
+                     json_is out '[(l["status"], l["check"], l["frame"], l["ball"], l["line"], l["column"]) for l in d["logs"]][:2] == [("failed", "no-tunnel", 4, 0, None, None), ("unreadable", None, None, None, 2, 1)]'
+                     # A log whose expected failure reproduced passes, and says where that failure is.
+                     json_is out 'd["logs"][2]["status"] == "passed" and d["logs"][2]["check"] == "no-tunnel" and d["logs"][2]["frame"] == int(a[0])' \
+                       "$(sed -n 's/^expect failure no-tunnel \([0-9]*\)$/\1/p' "$src/replays/lecture/double-pinball-tunnel.scene")" ;;
+  json-check-properties) # check's properties stage names the failed tests and the logs they saved (a fixed seed and filter).
+                     props=$(dirname "$ricochet")/../properties/ricochet_properties
+                     [ -x "$props" ] || { echo "skip $case: no property suite in this build"; exit 77; }
+                     mkproj; cd "$proj"
+                     GTEST_FILTER='*NoTunnelSingleWall*' RICOCHET_KERNEL=lecture-float RC_PARAMS="seed=1 max_success=4000" \
+                       run 1 check --json --fuzz-runs 0
+                     json_is out 'd["stages"]["properties"]["status"] == "failed" and d["stages"]["properties"]["exit"] == 1 and len(d["stages"]["properties"]["failed_properties"]) == 1 and d["stages"]["properties"]["failed_properties"][0].startswith("Kernels/") and d["stages"]["properties"]["failed_properties"][0].endswith(".NoTunnelSingleWall/lecture_float")'
+                     set -- "$proj"/replays/NoTunnelSingleWall-*.scene
+                     [ "$#" = 1 ] && [ -f "$1" ] || fail "expected one saved log in $proj/replays, found: $*"
+                     json_is out 'd["stages"]["properties"]["saved_logs"] == [a[0]]' "$(cd "$proj/replays" && pwd -P)/$(basename "$1")" ;;
   json-fuzz)         mkproj; need_fuzzer scene
                      cd "$proj"; run 0 fuzz --json --target scene --runs 20 --seed 1 --cache-dir "$dir/cache"
                      json_is out 'd["schema"] == "ricochet-fuzz/1" and d["exit"] == 0 and d["kernel"] == "robust" and d["runs_per_worker"] == 20 and d["time_s"] is None and d["seed"] == 1'
@@ -445,6 +530,16 @@ case "$case" in
                      has out "check stopped by SIGINT"; has out "== summary"
                      ! grep -q '^== lecture pinball' "$dir/out" || fail "check went on to the next stage"
                      grep -q '^ricochet replay: stopped by SIGINT after [0-9]* of 302 logs$' "$dir/err" || fail "no stopped line" ;;
+  stop-replay-frame) # One log of hours: stopped between two of its frames, not at its end.
+                     stop_when_running INT replay "$long" --max-work 0
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     grep -q "^ricochet replay: stopped by SIGINT in $long after frame [0-9]* of 10000000\$" "$dir/err" ||
+                       fail "no 'stopped by SIGINT in LOG after frame F' line"
+                     has err "ricochet replay: stopped by SIGINT after 0 of 1 logs"
+                     has out "0 passed, 0 failed" ;;
+  stop-replay-frame-json) stop_when_running TERM replay --json "$long" --max-work 0
+                     [ "$rc" = 143 ] || fail "exit $rc after SIGTERM, expected 143"
+                     json_is out 'd["exit"] == 143 and d["stopped"] is True and d["logs"] == [] and d["stopped_at"]["path"] == a[0] and d["stopped_at"]["frames"] == 10000000 and 0 <= d["stopped_at"]["frame"] < 10000000' "$long" ;;
   stop-render)       # render draws nothing before its run ends: no picture and no temporary may be left.
                      stop_when_running INT render "$long" -o "$dir/x.svg" --max-work 0
                      [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"

@@ -115,6 +115,17 @@ case $case in
                   has out "1 passed, 0 failed" ;;
   render)         run 0 render "$dir/left.scene" -o "$dir/x.svg" --kernel "plugin:$good"
                   grep -q '<svg' "$dir/x.svg" || fail "no picture" ;;
+  render-plugin)  # render takes --plugin as replay and reduce do: a log naming the plug-in's kernel reads and is drawn.
+                  run 2 render "$dir/good.scene" -o "$dir/x.svg"
+                  has err "$dir/good.scene:2:8: error: unknown kernel 'test-good' ($kernels)"
+                  run 0 render --plugin "$good" "$dir/good.scene" -o "$dir/x.svg"
+                  grep -q '>kernel test-good, frames 0\.\.3, ' "$dir/x.svg" || fail "the caption does not name the plug-in's kernel" ;;
+  replay-kernel)  # replay --kernel plugin:PATH runs every log under the plug-in: the blind one lets the ball through x = 7.
+                  run 1 replay --kernel "plugin:$plugins/test_plugin_no_reason.so" "$dir/seven.scene"
+                  grep -q "^FAIL $dir/seven.scene: invariant no-tunnel broke at frame 2 ball 0: " "$dir/out" ||
+                    fail "the log was not run under the plug-in"
+                  run 0 replay --kernel "plugin:$good" "$dir/seven.scene" "$dir/good.scene"
+                  has out "2 passed, 0 failed" ;;
   reduce)         # reduce takes a plug-in as the other commands do: --kernel plugin:PATH, or --plugin for a log naming
                   # its kernel. The blind plug-in (test-no-reason) lets the ball through the wall at x = 7.
                   blind=$plugins/test_plugin_no_reason.so
@@ -174,6 +185,35 @@ case $case in
                   run 3 replay --plugin "$crash" "$kept"
                   has_part err "crashed: SIGSEGV in its sweep function"
                   has_part err "; while replaying $kept" ;;
+  properties-found) # A plug-in's failure without RICOCHET_REPLAY_DIR: saved in found/ of the folder it runs from, never
+                  # in the corpus; the counterexample and the log name the plug-in's kernel, one seed, one command.
+                  need_props
+                  src=$(cd "$(dirname "$0")/../.." && pwd)
+                  git -C "$src" rev-parse 2>/dev/null || { echo "skip $case: $src is not a git checkout"; exit 77; }
+                  before=$(git -C "$src" status --porcelain -- replays)
+                  mkdir "$dir/work"; cd "$dir/work"
+                  wrong=$plugins/test_plugin_frame_wrong.so
+                  unset RICOCHET_REPLAY_DIR RC_PARAMS
+                  RICOCHET_KERNEL="plugin:$wrong" bounded 1 "$props" --gtest_filter='*NoTunnelSingleWall*'
+                  after=$(git -C "$src" status --porcelain -- replays)
+                  # (A log written into the corpus by mistake is removed, so that the failure is reported once.)
+                  [ "$after" = "$before" ] || { git -C "$src" clean -fq -- replays; fail "the corpus changed: $after"; }
+                  set -- "$dir"/work/found/NoTunnelSingleWall-*.scene
+                  [ "$#" = 1 ] && [ -f "$1" ] || fail "expected one log in $dir/work/found, found: $*"
+                  grep -qx 'kernel test-frame-wrong' "$1" || fail "the saved log does not name the plug-in's kernel"
+                  has_part out "saved as $1"
+                  ! grep -q '^kernel robust$' "$dir/out" || fail "the counterexample names kernel robust"
+                  grep -q '^kernel test-frame-wrong$' "$dir/out" || fail "the counterexample does not name the kernel run"
+                  seeds=$(cat "$dir/out" "$dir/err" | grep -o 'seed[ =][0-9]*' | sed 's/seed[ =]//' | sort -u | tr '\n' ' ')
+                  [ "$seeds" = "1 " ] || fail "more than the one seed 1: $seeds"
+                  repro=$(sed -n 's/^reproduce: //p' "$dir/out")
+                  [ -n "$repro" ] || fail "no reproduce line"
+                  [ "$(printf '%s\n' "$repro" | wc -l)" = 1 ] || fail "more than one reproduce line"
+                  case "$repro" in "RICOCHET_KERNEL=plugin:$wrong RC_PARAMS=\"seed=1 max_success="*"\" $props --gtest_filter='Kernels/"*".NoTunnelSingleWall/"*"'") ;;
+                    *) fail "the reproduce line is not the one command: $repro" ;; esac
+                  # It reproduces: the saved log, replayed first, fails again from the same folder.
+                  eval "$repro" >"$dir/again" 2>&1; [ "$?" = 1 ] || fail "the reproduce command did not fail"
+                  grep -q "saved log $1 breaks NoTunnelSingleWall under test-frame-wrong again" "$dir/again" || fail "not reproduced by the saved log" ;;
   properties-hang) need_props
                   RICOCHET_PLUGIN_TIMEOUT=0.5 RICOCHET_KERNEL="plugin:$hang" RICOCHET_REPLAY_DIR="$dir/kept" RC_PARAMS="seed=1" \
                     bounded 3 "$props" --gtest_filter='*NoTunnelSingleWall*'

@@ -61,6 +61,12 @@ public:
             if (end == std::string_view::npos) end = text.size();
             ++line_;
             if (std::string why = tokenize(text.substr(pos, end - pos), tokens); !why.empty()) reject(why);
+            // "Lexical rules": a comment holds no CR but as its last character (a CRLF line end's).
+            const std::string_view l = text.substr(pos, end - pos);
+            if (const std::size_t hash = l.find('#'); hash != std::string_view::npos) {
+                const std::size_t cr = l.find('\r', hash);
+                if (cr != std::string_view::npos && cr + 1 < l.size()) reject("a carriage return inside a comment");
+            }
             if (!tokens.empty()) directive(tokens);
             pos = end + 1;
         }

@@ -267,6 +267,11 @@ TEST(GrammarAcceptor, Comments) {
 
 TEST(GrammarAcceptor, SeparatorsTabsAndCarriageReturns) {
     accepted("ricochet 1\r\nwall\t0 0\t1 1\r\n\r\nball 0\r0 1 1\n");
+    // A comment holds no CR but a CRLF line end's: an old Mac file's CR-only line ends would let it hide the rest.
+    accepted(h + "wall 0 0 1 1 # a wall\r\nball 0 0 1 1 #\r");
+    rejected_at("ricochet 1\r# an old Mac file\rwall 0 0 1 1\r", 1);
+    rejected_at(h + "# a\rcomment\nwall 0 0 1 1\n", 2);
+    rejected_at(h + "wall 0 0 1 1 #\r\r\n", 2);
     rejected_at(h + "wall 0 0 1 1\v\n", 2);  // a vertical tab is no separator
     rejected_at(h + "wall 0 0 1 1\f\n", 2);
 }

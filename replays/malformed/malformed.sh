@@ -58,6 +58,10 @@ case "$kind" in
   byte-order-mark)   printf '\357\273\277%s\n' "$h" >"$f"; want='1:1: error: a byte order mark (U+FEFF) is not allowed; save the file as UTF-8 without BOM' ;;
   escape-sequence)   printf '%s\nwal\033]0;pwned\007 0 0 1 1\n' "$h" >"$f"; want='2:1: error: unknown directive '\''wal\x1b]0;pwned\x07'\''' ;;
   crlf-missing-token) printf '%s\r\nwall 0 0 1\r\n' "$h" >"$f"; want='2:11: error: '\''wall'\'' needs X0 Y0 X1 Y1: missing Y1' ;;
+  old-mac-comment)   printf 'ricochet 1\r# an old Mac file: CR-only line ends\rframes 10\rwall 0 -5 0 5\rball -1 0 0.5 0\rcheck no-tunnel\r' >"$f"
+                     want='1:48: error: a carriage return (CR) inside a comment: lines end with LF or CRLF, and CR-only line ends (an old Mac file?) would let the comment hide the rest of the log' ;;
+  cr-in-comment)     printf '%s\r\n# a comment\r with a CR inside\r\nwall 0 0 1 1\r\n' "$h" >"$f"
+                     want='2:12: error: a carriage return (CR) inside a comment: lines end with LF or CRLF, and CR-only line ends (an old Mac file?) would let the comment hide the rest of the log' ;;
   duplicate-check)   printf '%s\ncheck speed\ncheck speed\n' "$h" >"$f"; want='3:7: error: duplicate check '\''speed'\''' ;;
   *) echo "unknown kind $kind" >&2; exit 1 ;;
 esac

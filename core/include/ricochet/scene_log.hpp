@@ -19,8 +19,15 @@ std::variant<std::string, Diagnostic> read_log_text(const std::filesystem::path&
 /// Reads a log from disk (enforcing k_max_file_size before reading it all). Never throws on bad input.
 SceneOrDiagnostic read_scene_log(const std::filesystem::path& path, ExpectLines expect_lines = ExpectLines::checked);
 
+/// True if write_file_atomically writes path in place: it names, or links to, something that exists and is
+/// neither a regular file nor a folder (a device, a FIFO, a socket).
+bool writes_in_place(const std::filesystem::path& path);
+
 /// Writes text to path atomically: a temporary file in the same folder, fsync, rename over path,
 /// fsync the folder. On failure returns false, sets *error (if given) and leaves path untouched.
+/// Atomic replacement is for regular files and new paths: a path writes_in_place names (a device, a FIFO, or
+/// a link to one) is opened and written in place instead, never replaced (a reader of a FIFO sees the text as
+/// it is written; a failed write may leave part of it).
 /// A symbolic link is written through: the temporary file goes next to the file it resolves to, which the
 /// rename replaces, and the link stays. The temporary file is named `.NAME.tmp.PID.XXXXXX`; temporaries of
 /// the same NAME that a killed writer left (its PID gone, the file older than this process) are removed.

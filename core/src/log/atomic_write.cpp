@@ -1,4 +1,5 @@
-// Writing a file atomically, through a symbolic link, cleaning up after killed writers (scene_log.hpp).
+// Writing a file atomically, through a symbolic link, cleaning up after killed writers; a device or a FIFO in
+// place (scene_log.hpp).
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -55,13 +56,53 @@ void remove_stale_temporaries(const std::filesystem::path& dir, const std::strin
     }
 }
 
+/// Writes text to path, which names (or links to) a device, a FIFO or a socket, through one open(2) of it: no
+/// temporary file and no rename, which would put a regular file in the node's place. Blocks, as any writer of a
+/// FIFO does, until a reader opens it.
+bool write_in_place(const std::filesystem::path& path, std::string_view text, std::string* error) {
+    const auto set = [&](std::string what) {
+        if (error) *error = fmt::format("{}: {}: {}", path.string(), what, std::strerror(errno));
+        return false;
+    };
+    // No O_TRUNC and no O_CREAT: a node is neither truncated nor made; O_NOCTTY keeps a terminal from
+    // becoming ours.
+    int fd = -1;
+    do fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+    while (fd < 0 && errno == EINTR);
+    if (fd < 0) return set("cannot open for writing");
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            const int saved = errno;
+            ::close(fd);
+            errno = saved;
+            return set("cannot write");
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    if (::close(fd) != 0 && errno != EINTR) return set("cannot close");
+    return true;
+}
+
 }  // namespace
+
+bool writes_in_place(const std::filesystem::path& path) {
+    // stat follows a symbolic link: a link to a device is written as the device is.
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) return false;
+    return !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+}
 
 bool write_file_atomically(const std::filesystem::path& given, std::string_view text, std::string* error) {
     const auto set = [&](std::string what) {
         if (error) *error = fmt::format("{}: {}: {}", given.string(), what, std::strerror(errno));
         return false;
     };
+    // A device, a FIFO or a socket (or a link to one) is written in place: renaming a regular file over it
+    // would replace the node (as root, `-o /dev/null` would replace the system's /dev/null).
+    if (writes_in_place(given)) return write_in_place(given, text, error);
     // Through a symbolic link: the rename replaces the file it resolves to, not the link.
     std::filesystem::path path = given;
     std::error_code ec;

@@ -114,8 +114,16 @@ private:
         if (const auto nul = line.find('\0'); nul != std::string_view::npos)
             throw ParseError{line_no, static_cast<int>(nul) + 1, "NUL byte in the log"};
         const std::size_t full_size = line.size();
-        // '#' starts a comment to the end of the line.
-        if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+        // '#' starts a comment to the end of the line. A CR inside it (not its last character, a CRLF's) is an
+        // error at its place: an old Mac file's CR-only line ends read as one line, and its first comment would
+        // otherwise hide the rest of the log.
+        if (const auto hash = line.find('#'); hash != std::string_view::npos) {
+            if (const auto cr = line.find('\r', hash); cr != std::string_view::npos && cr + 1 < line.size())
+                throw ParseError{line_no, static_cast<int>(cr) + 1,
+                                 "a carriage return (CR) inside a comment: lines end with LF or CRLF, and CR-only "
+                                 "line ends (an old Mac file?) would let the comment hide the rest of the log"};
+            line = line.substr(0, hash);
+        }
         tokens_.clear();
         std::size_t i = 0;
         while (i < line.size()) {

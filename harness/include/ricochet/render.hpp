@@ -13,8 +13,10 @@ namespace ricochet {
 
 /// Which part of the world the picture shows.
 enum class RenderView : std::uint8_t {
-    failure,  ///< the failing frame: the failing ball's path in it and the walls it met, with a margin
-              ///< (the whole scene when the run has no failure)
+    failure,  ///< the failing frame with what it failed against: the failing ball's path in it (a disc's
+              ///< radius around it), the walls it met, the wall or bumper a disc reached into, with a margin;
+              ///< without a frame range, the paths of the frames around it only; an inset at the failure's own
+              ///< scale when it is too small to see (the whole scene when the run has no failure)
     all,      ///< every static shape and every path drawn
 };
 

@@ -15,6 +15,7 @@
 
 #include "ricochet/format.hpp"
 #include "ricochet/line.hpp"
+#include "ricochet/truth.hpp"
 #include "ricochet/world.hpp"
 
 namespace ricochet {
@@ -34,6 +35,15 @@ constexpr double k_caption_line = 16;
 constexpr double k_char_px = 7;
 /// Balls drawn beyond this many get no label (the failing ball always does): 64 labels hide the paths.
 constexpr std::size_t k_max_labels = 16;
+/// In the failure view without --frames, the paths drawn are those of the failing frame and this many frames
+/// either side: on a long run the ball's other passes through the view would bury the failing piece.
+constexpr std::int64_t k_context_frames = 2;
+/// A failure whose own size (how far a piece crosses its wall, how far a disc reaches past one) is under this
+/// many pixels of the view gets an inset at its own scale: below it the picture cannot show it.
+constexpr double k_visible_px = 2;
+/// The inset's side in pixels, and how many of the failure's own sizes its half-side spans.
+constexpr double k_inset_px = 240;
+constexpr double k_inset_spans = 4;
 
 /// An axis-aligned box in the world; empty until a point is added (add() sets x and y together, and a box
 /// written out is never inverted, so x alone tells).
@@ -105,7 +115,30 @@ struct Path {
     std::uint32_t ball = 0;
     std::vector<Vec2> points;
     std::vector<bool> hit;
+    std::vector<std::int64_t> frame;  ///< the frame of each point
     bool cut = false;
+
+    void push(Vec2 p, bool is_hit, std::int64_t f) {
+        points.push_back(p);
+        hit.push_back(is_hit);
+        frame.push_back(f);
+    }
+    /// Drops the points of the frames before f, and f's hits (they lie before its state, where the path starts).
+    void keep_from(std::int64_t f) {
+        std::size_t n = 0;
+        while (n < points.size() && (frame[n] < f || (frame[n] == f && hit[n]))) ++n;
+        points.erase(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(n));
+        hit.erase(hit.begin(), hit.begin() + static_cast<std::ptrdiff_t>(n));
+        frame.erase(frame.begin(), frame.begin() + static_cast<std::ptrdiff_t>(n));
+    }
+};
+
+/// What a failure was against, when the check names no piece: the obstacle the failing piece is not clear of
+/// (`penetration`), found exactly (truth.hpp).
+struct Obstacle {
+    bool wall = true;          ///< a wall, else a bumper
+    std::uint32_t index = 0;   ///< the wall's or the bumper's index
+    Vec2 from, to;             ///< the failing frame's first piece not clear of it
 };
 
 /// The failing frame: the failing ball's path in it (from its state before the frame), the walls it hit
@@ -115,7 +148,35 @@ struct FailingFrame {
     std::vector<std::uint32_t> walls;  ///< walls hit in the frame, and the wall a no-tunnel piece went through
     std::optional<Vec2> mark;          ///< the crossing on the wall, else the ball's state at the frame's end
     std::optional<std::uint32_t> crossed;  ///< the wall the mark is on, for a no-tunnel piece
+    std::optional<FailurePiece> piece;     ///< the no-tunnel piece through `crossed`
+    std::optional<Obstacle> against;       ///< what a disc's failing piece reached into (`penetration`)
+    double radius = 0;                     ///< the failing ball's radius
 };
+
+/// The point of segment a → b nearest q (in double: for where to look, not for a verdict).
+Vec2 nearest_on(Vec2 a, Vec2 b, Vec2 q) {
+    const Vec2 d = b - a;
+    const double dd = dot(d, d);
+    // Degenerate: a zero-length segment is its point.
+    if (!(dd > 0)) return a;
+    const double t = std::clamp(dot(q - a, d) / dd, 0.0, 1.0);
+    return a + t * d;
+}
+
+/// The point of piece a → b nearest wall w's segment (in double, for where to look): the least distance between
+/// two segments is where they cross, or from an end of one to the other.
+Vec2 nearest_to_wall(Vec2 a, Vec2 b, const Wall& w) {
+    const Vec2 e = w.p1 - w.p0;
+    const double sa = cross(e, a - w.p0), sb = cross(e, b - w.p0);
+    std::vector<Vec2> candidates = {a, b, nearest_on(a, b, w.p0), nearest_on(a, b, w.p1)};
+    // cross(e, a + s·(b − a) − P0) = 0  ⇒  s = sa / (sa − sb).
+    if ((sa < 0) != (sb < 0) && sa != sb) candidates.push_back(a + (sa / (sa - sb)) * (b - a));
+    Vec2 best = a;
+    double least = std::numeric_limits<double>::infinity();
+    for (Vec2 c : candidates)
+        if (const double d = length_squared(c - nearest_on(w.p0, w.p1, c)); d < least) least = d, best = c;
+    return best;
+}
 
 /// The balls whose paths are drawn: the first max by index; the failing ball takes the last place when
 /// it is not among them.
@@ -138,8 +199,9 @@ public:
         for (const Ball& b : scene.balls) before_.push_back(b.pos);
         for (std::uint32_t b : drawn) {
             slot_[b] = static_cast<std::int32_t>(paths_.size());
-            paths_.push_back({b, {}, {}, false});
+            paths_.push_back({b, {}, {}, {}, false});
         }
+        recent_ = paths_;
         // Degenerate: no ball drawn leaves the budget unshared.
         budget_ = std::max<std::size_t>(1, max_points / std::max<std::size_t>(1, drawn.size()));
     }
@@ -153,6 +215,17 @@ public:
         if (events.empty()) return;
         const std::int64_t f = events.front().frame;
         current_frame_ = f;
+        // The frames around the failing frame (k_context_frames): the last ones until a failure is found, then
+        // the ones after it; a few frames of the balls drawn, outside the point budget.
+        if (!window_ || f <= window_->second) {
+            for (const Event& e : events) {
+                if (e.kind == Event::Kind::overlap || e.ball >= slot_.size() || slot_[e.ball] < 0) continue;
+                recent_[static_cast<std::size_t>(slot_[e.ball])].push(
+                    e.pos, e.kind == Event::Kind::hit || e.kind == Event::Kind::bump, f);
+            }
+            if (!window_)
+                for (Path& p : recent_) p.keep_from(f - k_context_frames);
+        }
         if (f < first_ || f > last_) return;
         for (const Event& e : events) {
             if (e.kind == Event::Kind::overlap || e.ball >= slot_.size() || slot_[e.ball] < 0) continue;
@@ -164,9 +237,15 @@ public:
                 p.cut = true;
                 continue;
             }
-            p.points.push_back(e.pos);
-            p.hit.push_back(bounce);
+            p.push(e.pos, bounce, f);
         }
+    }
+
+    /// Fixes the frames around frame f (the failing one, the last added) whose paths the failure view draws.
+    void open_window(std::int64_t f) {
+        if (window_) return;
+        window_ = std::pair{std::max<std::int64_t>(0, f - k_context_frames), f + k_context_frames};
+        for (Path& p : recent_) p.keep_from(window_->first);
     }
 
     /// The failure found in the frame last added (nothing is kept when that frame had no events, as in a
@@ -185,18 +264,55 @@ public:
             ff.mark = crossing_point(*failure.piece, scene_.walls[failure.piece->wall]);
             ff.walls.push_back(failure.piece->wall);
             ff.crossed = failure.piece->wall;
+            ff.piece = failure.piece;
         }
+        if (failure.ball < scene_.balls.size()) ff.radius = scene_.balls[failure.ball].r;
+        // A disc that reached into a wall or a bumper it was clear of: what it reached into is what the view must
+        // show, with the disc; the mark goes where the piece comes nearest it.
+        if (failure.check == Check::penetration && ff.radius > 0)
+            if ((ff.against = obstacle_of(ff.points, ff.radius))) {
+                const Obstacle& o = *ff.against;
+                if (o.wall) {
+                    ff.walls.push_back(o.index);
+                    ff.mark = nearest_to_wall(o.from, o.to, scene_.walls[o.index]);
+                } else {
+                    ff.mark = nearest_on(o.from, o.to, scene_.bumpers[o.index].c);
+                }
+            }
         failing_ = std::move(ff);
+        open_window(failure.frame);
+    }
+
+    /// The first wall, else bumper, that the first piece of points (in order) not clear of it comes closer to
+    /// than radius allows (truth.hpp, exactly, as `penetration` decides), or nothing.
+    std::optional<Obstacle> obstacle_of(const std::vector<Vec2>& points, double radius) const {
+        for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+            const Vec2 a = points[i], b = points[i + 1];
+            // Degenerate: a lecture kernel's NaN or infinity is no piece.
+            if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) continue;
+            for (std::uint32_t w = 0; w < scene_.walls.size(); ++w)
+                if (!truth::clear_of_wall(a, b, scene_.walls[w], radius)) return Obstacle{true, w, a, b};
+            for (std::uint32_t k = 0; k < scene_.bumpers.size(); ++k)
+                if (!truth::clear_of_circle(a, b, scene_.bumpers[k].c, radius, scene_.bumpers[k].r))
+                    return Obstacle{false, k, a, b};
+        }
+        return std::nullopt;
     }
 
     /// Path i, moved out.
     Path take_path(std::size_t i) { return std::move(paths_[i]); }
 
-    /// Draws path (ball b's) in place of the last ball drawn (there is one: the scene has a ball b).
-    void replace_last(Path path, std::uint32_t b) {
+    /// Path i around the failing frame, moved out.
+    Path take_window_path(std::size_t i) { return std::move(recent_[i]); }
+
+    /// Draws path (ball b's) in place of the last ball drawn (there is one: the scene has a ball b), and window
+    /// as its frames around the failing frame.
+    void replace_last(Path path, Path window, std::uint32_t b) {
         slot_[paths_.back().ball] = -1;
         path.ball = b;
+        window.ball = b;
         paths_.back() = std::move(path);
+        recent_.back() = std::move(window);
         slot_[b] = static_cast<std::int32_t>(paths_.size() - 1);
     }
 
@@ -204,6 +320,10 @@ public:
     bool draws(std::uint32_t b) const { return slot_[b] >= 0; }
 
     const std::vector<Path>& paths() const { return paths_; }
+    /// The drawn balls' paths in the frames around the failing frame (window()), once it is found.
+    const std::vector<Path>& window_paths() const { return recent_; }
+    /// The frames window_paths() cover, once a failure opened them.
+    const std::optional<std::pair<std::int64_t, std::int64_t>>& window() const { return window_; }
     const std::optional<FailingFrame>& failing() const { return failing_; }
     std::size_t budget() const { return budget_; }
 
@@ -212,6 +332,8 @@ private:
     std::int64_t first_, last_;
     std::vector<std::int32_t> slot_;  ///< ball → its place in paths_, −1 if not drawn
     std::vector<Path> paths_;
+    std::vector<Path> recent_;        ///< the drawn balls' last frames, then the frames around the failing one
+    std::optional<std::pair<std::int64_t, std::int64_t>> window_;  ///< the frames around the failing one
     std::vector<Vec2> before_;        ///< every ball's position before the current frame
     std::vector<Event> current_;      ///< the frame last added
     std::optional<std::int64_t> current_frame_;
@@ -267,6 +389,158 @@ void draw_polyline(std::string& out, const std::vector<Vec2>& points, const View
 
 namespace {
 
+/// A double-double: hi + lo, |lo| ≤ ulp(hi)/2, for the few sums and products the inset needs past a double's
+/// precision (Dekker and Knuth's error-free transformations; std::fma gives a product's exact error).
+struct DD {
+    double hi = 0, lo = 0;
+};
+DD two_sum(double a, double b) {
+    const double s = a + b, bb = s - a;
+    return {s, (a - (s - bb)) + (b - bb)};
+}
+DD dd_add(DD a, DD b) {
+    const DD s = two_sum(a.hi, b.hi);
+    return two_sum(s.hi, s.lo + a.lo + b.lo);
+}
+DD dd_neg(DD a) { return {-a.hi, -a.lo}; }
+DD dd_mul(DD a, DD b) {
+    const double p = a.hi * b.hi;
+    return two_sum(p, std::fma(a.hi, b.hi, -p) + a.hi * b.lo + a.lo * b.hi);
+}
+
+/// BC = n·(p − P0), n = (e_y, −e_x), e = P1 − P0, in double-double: p's side of w's line and, over |n|, its
+/// distance, to about 2^−100 of the terms (the differences are exact, the products carry their errors).
+DD boundary_dd(Vec2 p, const Wall& w) {
+    const DD ex = two_sum(w.p1.x, -w.p0.x), ey = two_sum(w.p1.y, -w.p0.y);
+    const DD dx = two_sum(p.x, -w.p0.x), dy = two_sum(p.y, -w.p0.y);
+    return dd_add(dd_mul(ey, dx), dd_neg(dd_mul(ex, dy)));
+}
+
+/// |n|² = e·e in double-double.
+DD normal_squared_dd(const Wall& w) {
+    const DD ex = two_sum(w.p1.x, -w.p0.x), ey = two_sum(w.p1.y, -w.p0.y);
+    return dd_add(dd_mul(ex, ex), dd_mul(ey, ey));
+}
+
+/// The failure drawn again at its own scale, in coordinates local to it (x along the wall, y across it, the
+/// origin on the wall's line): what the view's scale cannot show.
+struct Inset {
+    double half = 0;                 ///< the half-side in world units: the inset shows [−half, half]²
+    double size = 0;                 ///< the failure's own size: how far past the wall, in world units
+    std::pair<Vec2, Vec2> wall;      ///< the wall's part along y = 0 (its ends, clipped later)
+    std::vector<Vec2> path;          ///< the failing piece (red), or the disc's edge near the wall (dashed)
+    bool disc = false;               ///< path is a disc's edge, not the ball's path
+    Vec2 mark;                       ///< where the failure is, in the inset
+    std::uint32_t wall_index = 0;
+};
+
+/// The inset of a failure too small for a view of scale px per world unit: a no-tunnel piece whose nearer end
+/// lies less than k_visible_px across its wall's line, or a disc reaching less than that past a wall it
+/// penetrated. Nothing when the failure shows at that scale, or is of another kind.
+std::optional<Inset> make_inset(const Scene& scene, const FailingFrame& f, double px) {
+    Inset in;
+    Vec2 p, q;          // the piece's end nearer the line, and its other end (no-tunnel); the nearest point (disc)
+    double bc_over_n;   // p's signed distance from the line
+    const Wall* wall = nullptr;
+    if (f.piece && f.crossed && *f.crossed < scene.walls.size()) {
+        wall = &scene.walls[*f.crossed];
+        in.wall_index = *f.crossed;
+        const int sf = truth::side(f.piece->from, *wall), st = truth::side(f.piece->to, *wall);
+        // Degenerate: ends on one side, or both on the line: no crossing to show.
+        if (sf == st) return std::nullopt;
+        const double n = std::hypot(wall->p1.x - wall->p0.x, wall->p1.y - wall->p0.y);
+        const DD bf = boundary_dd(f.piece->from, *wall), bt = boundary_dd(f.piece->to, *wall);
+        const double df = (bf.hi + bf.lo) / n, dt = (bt.hi + bt.lo) / n;
+        const bool from_nearer = std::fabs(df) <= std::fabs(dt);
+        p = from_nearer ? f.piece->from : f.piece->to;
+        q = from_nearer ? f.piece->to : f.piece->from;
+        bc_over_n = from_nearer ? df : dt;
+        in.size = std::fabs(bc_over_n);
+        // Degenerate: an end exactly on the line (the crossing is the next piece's), or past the precision here.
+        if (!(in.size > 0)) return std::nullopt;
+    } else if (f.against && f.against->wall && f.against->index < scene.walls.size() && f.radius > 0) {
+        wall = &scene.walls[f.against->index];
+        in.wall_index = f.against->index;
+        p = nearest_to_wall(f.against->from, f.against->to, *wall);
+        const Vec2 e = wall->p1 - wall->p0;
+        // Degenerate: the disc nearest an end of the wall, not its line: the view shows it.
+        if (const double t = dot(p - wall->p0, e); !(t >= 0 && t <= dot(e, e))) return std::nullopt;
+        // How far the disc reaches past the line: δ = R − |BC|/|n| = (R²·|n|² − BC²) / (|n|²·(R + |BC|/|n|)),
+        // the numerator in double-double so that a sub-ulp δ is not lost to cancellation.
+        const DD bc = boundary_dd(p, *wall), nn = normal_squared_dd(*wall);
+        const DD r2 = dd_mul(two_sum(f.radius, 0), two_sum(f.radius, 0));
+        const DD num = dd_add(dd_mul(r2, nn), dd_neg(dd_mul(bc, bc)));
+        bc_over_n = (bc.hi + bc.lo) / std::sqrt(nn.hi);
+        in.size = (num.hi + num.lo) / (nn.hi * (f.radius + std::fabs(bc_over_n)));
+        in.disc = true;
+        // Degenerate: clear of the line in double after all (the check's exact verdict is about the segment).
+        if (!(in.size > 0)) return std::nullopt;
+    } else {
+        return std::nullopt;
+    }
+    if (in.size * px >= k_visible_px) return std::nullopt;
+    in.half = k_inset_spans * in.size;
+    // The local frame: x along ê, y along n̂, both turned half a turn when p is inside, so that p is at +y.
+    const Vec2 e = wall->p1 - wall->p0;
+    const double len = std::hypot(e.x, e.y);
+    const double turn = bc_over_n < 0 ? -1.0 : 1.0;
+    const Vec2 ex = (turn / len) * e, ny = (turn / len) * Vec2{e.y, -e.x};
+    const double py = std::fabs(bc_over_n);
+    const auto local = [&](Vec2 w) { return Vec2{dot(w - p, ex), py + dot(w - p, ny)}; };
+    // Far ends are cut here, not by clip(): a + t·d from an end far off the inset would carry that end's
+    // rounding, as large as the inset itself. Along y = 0 the wall's part is its ends' x limited to the inset.
+    const double wa = dot(wall->p0 - p, ex), wb = dot(wall->p1 - p, ex);
+    in.wall = {Vec2{std::clamp(wa, -in.half, in.half), 0}, Vec2{std::clamp(wb, -in.half, in.half), 0}};
+    if (!in.disc) {
+        // The piece from its near end p, so that clip() cuts it from there: the far end only gives the direction.
+        const Vec2 a = Vec2{0, py}, b = local(q);
+        in.path = {a, b};
+        // y = 0 on the piece a → b: s = a_y / (a_y − b_y).
+        in.mark = a + (py / (py - b.y)) * (b - a);
+    } else {
+        // The disc's edge near the line: centre (0, py), radius R, y(x) = py − √(R² − x²) = −δ + x²/(R + √(R² − x²)).
+        const double R = f.radius, reach = std::min(in.half, R);
+        for (int i = -16; i <= 16; ++i) {
+            const double x = reach * i / 16.0;
+            in.path.push_back({x, -in.size + x * x / (R + std::sqrt(R * R - x * x))});
+        }
+        in.mark = Vec2{0, -in.size};
+    }
+    return in;
+}
+
+/// Draws inset in the square of k_inset_px whose top-left corner is (left, top) in the picture: a frame, the wall
+/// along y = 0, the piece or the disc's edge, and a red cross at the failure. Coordinates are local (Inset), so
+/// a crossing of 10^−17 near 10^15 is drawn as well as one near 0.
+void draw_inset(std::string& out, const Inset& in, double left, double top) {
+    auto it = std::back_inserter(out);
+    const double scale = k_inset_px / (2 * in.half);
+    // sx = (x + half)·scale + left, sy = (half − y)·scale + top, as a View with no margin.
+    View v;
+    v.x0 = -in.half - left / scale, v.x1 = in.half, v.y0 = -in.half, v.y1 = in.half + top / scale;
+    v.scale = scale;
+    v.margin = 0;
+    const Box box{-in.half, -in.half, in.half, in.half};
+    fmt::format_to(it,
+                   "<g class=\"inset\"><rect x=\"{:.3f}\" y=\"{:.3f}\" width=\"{:.3f}\" height=\"{:.3f}\" fill=\"white\" "
+                   "stroke=\"#888\"/>\n",
+                   left, top, k_inset_px, k_inset_px);
+    if (const auto seen = in.wall.first.x != in.wall.second.x ? clip(in.wall.first, in.wall.second, box) : std::nullopt)
+        fmt::format_to(it,
+                       "<line x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\" stroke=\"black\" stroke-width=\"2.5\"/>"
+                       "<text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"#555\">w{}</text>\n",
+                       v.sx(seen->first.x), v.sy(seen->first.y), v.sx(seen->second.x), v.sy(seen->second.y),
+                       v.sx(seen->first.x) + 4, v.sy(0) - 4, in.wall_index);
+    draw_polyline(out, in.path, v, box,
+                  in.disc ? "fill=\"none\" stroke=\"red\" stroke-width=\"1.5\" stroke-dasharray=\"6 3\""
+                          : "fill=\"none\" stroke=\"red\" stroke-width=\"3\" stroke-opacity=\"0.5\"");
+    const double cx = v.sx(in.mark.x), cy = v.sy(in.mark.y);
+    fmt::format_to(it,
+                   "<g class=\"inset-mark\" stroke=\"red\" stroke-width=\"2\"><line x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\"/>"
+                   "<line x1=\"{:.3f}\" y1=\"{:.3f}\" x2=\"{:.3f}\" y2=\"{:.3f}\"/></g></g>\n",
+                   cx - 6, cy - 6, cx + 6, cy + 6, cx - 6, cy + 6, cx + 6, cy - 6);
+}
+
 /// The picture of what a recorder kept.
 std::string draw(const Scene& scene, const Recorder& rec, const std::optional<CheckFailure>& failure,
                  const RenderOptions& options, std::int64_t first, std::int64_t last) {
@@ -289,7 +563,9 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
     // (a long wall would otherwise pull the view back out to the whole scene).
     Box near;
     if (options.view == RenderView::failure && failing) {
-        for (Vec2 q : failing->points) near.add(q);
+        // A disc is seen whole: its radius around each point of the failing frame.
+        const double R = failing->radius;
+        for (Vec2 q : failing->points) near.add(Vec2{q.x - R, q.y - R}), near.add(Vec2{q.x + R, q.y + R});
         if (failing->mark) near.add(*failing->mark);
         if (!near.empty()) {
             const double s = near.span();
@@ -298,6 +574,13 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
             for (std::uint32_t w : failing->walls)
                 if (w < scene.walls.size())
                     if (auto c = clip(scene.walls[w].p0, scene.walls[w].p1, reach)) walls.add(c->first), walls.add(c->second);
+            // A bumper the disc reached into, as far as it lies within reach.
+            if (failing->against && !failing->against->wall && failing->against->index < scene.bumpers.size()) {
+                const Bumper& k = scene.bumpers[failing->against->index];
+                const Box in{std::max(k.c.x - k.r, reach.x0), std::max(k.c.y - k.r, reach.y0),
+                             std::min(k.c.x + k.r, reach.x1), std::min(k.c.y + k.r, reach.y1)};
+                if (in.x0 <= in.x1 && in.y0 <= in.y1) walls.add(in);
+            }
             near.add(walls);
         }
         // Degenerate: a failing frame of one point (frame 0, a ball at rest) has no extent to frame.
@@ -340,8 +623,28 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
         caption.push_back(failing->crossed
                               ? fmt::format("marked at ({}, {}), where the piece crosses wall {}", failing->mark->x,
                                             failing->mark->y, *failing->crossed)
+                          : failing->against
+                              ? fmt::format("marked at ({}, {}), where the disc of radius {} comes nearest {} {}",
+                                            failing->mark->x, failing->mark->y, failing->radius,
+                                            failing->against->wall ? "wall" : "bumper", failing->against->index)
                               : fmt::format("marked at ({}, {}), the ball's state at the end of frame {}",
                                             failing->mark->x, failing->mark->y, failure->frame));
+    // On a long run the ball's other passes through the view would bury the failing piece: without --frames the
+    // failure view draws the frames around it.
+    const auto& window = rec.window();
+    const bool windowed = framed && !options.last_frame && options.first_frame == 0 && window &&
+                          (window->first > first || window->second < last);
+    const std::vector<Path>& drawn_paths = windowed ? rec.window_paths() : rec.paths();
+    if (windowed)
+        caption.push_back(fmt::format("paths of frames {}..{} only, around the failing frame (--frames A:B draws others)",
+                                      window->first, std::min(window->second, last)));
+    // A failure smaller than the view can show, drawn again at its own scale below the picture.
+    const std::optional<Inset> inset = framed && failing ? make_inset(scene, *failing, v.scale) : std::nullopt;
+    if (inset)
+        caption.push_back(fmt::format("inset: {} {} past wall {}, enlarged {:.3g} times (1 px = {:.3g})",
+                                      inset->disc ? "the disc reaches" : "the piece ends", inset->size,
+                                      inset->wall_index, k_inset_px / (2 * inset->half) / v.scale,
+                                      2 * inset->half / k_inset_px));
     const std::size_t drawn = rec.paths().size();
     if (drawn < scene.balls.size()) {
         const std::uint32_t lastb = rec.paths().back().ball;
@@ -359,7 +662,11 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
                                       cut, rec.budget(), options.max_points));
 
     const double width = w_world * v.scale + 2 * v.margin;
-    const double height = h_world * v.scale + 2 * v.margin + 30 + k_caption_line * static_cast<double>(caption.size() - 1);
+    // The inset sits under the picture, above the captions.
+    const double inset_top = h_world * v.scale + 2 * v.margin;
+    const double inset_block = inset ? k_inset_px + 10 : 0;
+    const double height = h_world * v.scale + 2 * v.margin + inset_block + 30 +
+                          k_caption_line * static_cast<double>(caption.size() - 1);
     std::string out;
     auto it = std::back_inserter(out);
     fmt::format_to(it,
@@ -423,7 +730,7 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
         fmt::format_to(it, "<text x=\"{:.3f}\" y=\"{:.3f}\" fill=\"#555\">w{}</text>\n", tx + 4, ty + 4, i);
     }
     // Ball paths: the state at the first frame, then each frame's hits and its state.
-    for (const Path& p : rec.paths()) {
+    for (const Path& p : drawn_paths) {
         if (p.points.empty()) continue;
         const char* colour = k_ball_colours[p.ball % k_ball_colours.size()];
         draw_polyline(out, p.points, v, clip_box,
@@ -445,7 +752,7 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
                                "stroke-opacity=\"0.6\" stroke-dasharray=\"4 3\"/>\n",
                                v.sx(c.x), v.sy(c.y), R * v.scale, colour);
             }
-        const bool label = rec.paths().size() <= k_max_labels || (failure && failure->ball == p.ball);
+        const bool label = drawn_paths.size() <= k_max_labels || (failure && failure->ball == p.ball);
         if (clip_box.holds(start)) {
             fmt::format_to(it,
                            "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"5\" fill=\"white\" stroke=\"{}\" stroke-width=\"2\"/>",
@@ -465,6 +772,12 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
         if (failing && failing->points.size() > 1)
             draw_polyline(out, failing->points, v, clip_box,
                           "fill=\"none\" stroke=\"red\" stroke-width=\"3\" stroke-opacity=\"0.5\"");
+        // A disc that reached into something: its outline, red, where it came nearest.
+        if (failing && failing->against && failing->mark && failing->radius > 0)
+            fmt::format_to(it,
+                           "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"{:.3f}\" fill=\"none\" stroke=\"red\" "
+                           "stroke-width=\"1.5\" stroke-dasharray=\"6 3\"/>\n",
+                           v.sx(failing->mark->x), v.sy(failing->mark->y), failing->radius * v.scale);
         if (failing && failing->mark && clip_box.holds(*failing->mark)) {
             const double cx = v.sx(failing->mark->x), cy = v.sy(failing->mark->y);
             fmt::format_to(it,
@@ -490,6 +803,7 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
         fmt::format_to(it, "<text x=\"8\" y=\"18\" fill=\"red\">{}</text>\n", xml_escaped(text));
         if (!second.empty()) fmt::format_to(it, "<text x=\"8\" y=\"32\" fill=\"red\">{}</text>\n", xml_escaped(second));
     }
+    if (inset) draw_inset(out, *inset, v.margin, inset_top);
     out += "</svg>\n";
     return out;
 }
@@ -558,14 +872,17 @@ RenderResult render_run(const Scene& scene, KernelId kernel, const RenderOptions
         std::vector<Event> events;
         world.start(events);
         solo.add_frame(events);
-        const std::int64_t to = std::min(last, run.frames_run);
+        if (run.failure->frame == 0) solo.open_window(0);
+        // As far as the frames drawn, and the frames around the failing one.
+        const std::int64_t to = std::min(std::max(last, run.failure->frame + k_context_frames), run.frames_run);
         for (std::int64_t f = 1; f <= to; ++f) {
             events.clear();
             // (A guard no input reaches: these frames stepped without error in the run, the same bits alone.)
             if (world.step(events)) break;
             solo.add_frame(events);
+            if (f == run.failure->frame) solo.open_window(f);
         }
-        rec.replace_last(solo.take_path(0), failing);
+        rec.replace_last(solo.take_path(0), solo.take_window_path(0), failing);
     }
     result.svg = draw(scene, rec, run.failure, options, first, options.last_frame.value_or(run.frames_run));
     return result;

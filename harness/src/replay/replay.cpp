@@ -12,7 +12,7 @@
 
 namespace ricochet {
 
-ReplayResult replay_scene(const Scene& scene, std::optional<KernelId> kernel) {
+ReplayResult replay_scene(const Scene& scene, std::optional<KernelId> kernel, const ReplayStop& stop) {
     ReplayResult result;
     // Expect states by frame, so the run's states are compared as they stream past.
     std::vector<ExpectState> expects = scene.expect_states;
@@ -41,9 +41,19 @@ ReplayResult replay_scene(const Scene& scene, std::optional<KernelId> kernel) {
                 }
         }
     };
+    // Between two frames: the last frame ends the run anyway, so a stop asked then changes nothing.
+    if (stop)
+        options.stop_after = [&](const CheckedRun& so_far) {
+            result.stopped = so_far.frames_run < scene.frames && stop();
+            return result.stopped;
+        };
     const KernelId k = kernel.value_or(scene.kernel);
     result.run = run_checked(scene, k, scene.frames, scene.checks, options);
     const CheckedRun& run = result.run;
+    if (result.stopped) {
+        result.message = fmt::format("stopped after frame {} of {}", run.frames_run, scene.frames);
+        return result;
+    }
 
     std::vector<std::string> problems;
     if (run.error) problems.push_back(run.error->message());
