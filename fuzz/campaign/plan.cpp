@@ -142,7 +142,6 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
         r.kept = r.dir / "artifacts";
         r.work = plan.run_dir / t;
         r.artifacts = r.work / "artifacts";
-        r.log = r.work / "campaign.log";
         for (const fs::path& d : {r.corpus, r.kept, r.artifacts}) {
             fs::create_directories(d, ec);
             if (ec) {

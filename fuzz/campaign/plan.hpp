@@ -28,7 +28,7 @@ struct TargetRun {
     std::filesystem::path kept;                  ///< dir/artifacts: artifacts and minimized inputs kept (shared)
     std::filesystem::path work;                  ///< RUN/TARGET: this campaign's own files
     std::filesystem::path artifacts;             ///< work/artifacts: this campaign's crash-, timeout-, ... files
-    std::filesystem::path log;                   ///< work/campaign.log: every worker's output
+    std::vector<std::filesystem::path> logs_of; ///< per worker, work/worker-W.log: the output of its processes
     std::filesystem::path dict;                  ///< fuzz/TARGET.dict in the source tree
     std::vector<std::filesystem::path> seeds;    ///< read-only seed folders (committed inputs)
     int workers = 1;                             ///< worker processes of this target
@@ -38,7 +38,7 @@ struct TargetRun {
     std::uint64_t cov = 0;                       ///< the highest coverage a worker reported
     std::uint64_t corpus_size = 0;               ///< the latest corpus size a worker reported
     std::uint64_t exec_s = 0;                    ///< the latest exec/s a worker reported
-    std::size_t log_read = 0;                    ///< bytes of log already read
+    std::vector<std::size_t> log_read;           ///< per worker, bytes of its log already read
     int restarts = 0;                            ///< workers restarted after a failure
     int quick_crashes = 0;                       ///< workers that failed within a second of starting
     double seconds = 0.0;                        ///< wall time of the campaign

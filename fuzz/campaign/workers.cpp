@@ -49,10 +49,10 @@ std::optional<std::uint64_t> number_after(const std::string& line, std::string_v
     return any ? std::optional(v) : std::nullopt;
 }
 
-/// Reads what the workers wrote since last time: coverage, corpus size, exec/s.
-void poll_log(TargetRun& r) {
-    std::ifstream in(r.log, std::ios::binary);
-    in.seekg(static_cast<std::streamoff>(r.log_read));
+/// Reads what worker w wrote since last time: coverage, corpus size, exec/s.
+void poll_log(TargetRun& r, std::size_t w) {
+    std::ifstream in(r.logs_of[w], std::ios::binary);
+    in.seekg(static_cast<std::streamoff>(r.log_read[w]));
     std::string line;
     std::streamoff consumed = 0;
     while (std::getline(in, line)) {
@@ -64,13 +64,15 @@ void poll_log(TargetRun& r) {
         if (auto corp = number_after(line, "corp: ")) r.corpus_size = *corp;
         if (auto e = number_after(line, "exec/s: ")) r.exec_s = *e;
     }
-    r.log_read += static_cast<std::size_t>(consumed);
+    r.log_read[w] += static_cast<std::size_t>(consumed);
 }
 
-/// Runs over every worker process of r: the sum of each process's last "#N" (read from the whole log).
-std::uint64_t count_runs(const TargetRun& r) {
+/// Runs over every process of worker w: the sum of each process's count (read from the worker's whole log, the
+/// processes one after another): its final `stat::number_of_executed_units`, else its last "#N". One log per
+/// worker: the lines of workers sharing one would interleave, and a count of one taken for another's restart.
+std::uint64_t count_runs(const TargetRun& r, std::size_t w) {
     std::uint64_t runs = 0, last = 0;
-    std::istringstream in(read_all(r.log));
+    std::istringstream in(read_all(r.logs_of[w]));
     for (std::string line; std::getline(in, line);) {
         if (line.size() > 1 && line[0] == '#' && line[1] >= '0' && line[1] <= '9') {
             const std::uint64_t n = number_after(line, "#").value_or(0);
@@ -85,8 +87,8 @@ std::uint64_t count_runs(const TargetRun& r) {
 
 /// The worker output's last line that says why it stopped: a failure line of the target, a sanitizer's or
 /// libFuzzer's SUMMARY, ERROR or INFO line, else the last line that is not a progress "#N" one.
-std::string last_words(const TargetRun& r) {
-    std::istringstream in(read_all(r.log));
+std::string last_words(const TargetRun& r, std::size_t w) {
+    std::istringstream in(read_all(r.logs_of[w]));
     std::string telling, last;
     for (std::string line; std::getline(in, line);) {
         if (line.starts_with(k_failure_tag) || line.starts_with("SUMMARY:") || line.starts_with("ERROR:") ||
@@ -143,13 +145,17 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
         argv.insert(argv.end(), opt.libfuzzer_flags.begin(), opt.libfuzzer_flags.end());
         argv.push_back(r.corpus.string());
         for (const auto& s : r.seeds) argv.push_back(s.string());
-        r.pids[w] = spawn(argv, {"RICOCHET_KERNEL=" + plan.kernel_env}, r.log);
+        r.pids[w] = spawn(argv, {"RICOCHET_KERNEL=" + plan.kernel_env}, r.logs_of[w]);
         r.started[w] = Clock::now();
     };
     for (TargetRun& r : plan.runs) {
-        r.pids.assign(static_cast<std::size_t>(r.workers), -1);
-        r.started.assign(static_cast<std::size_t>(r.workers), Clock::now());
-        for (std::size_t w = 0; w < r.pids.size(); ++w) start_worker(r, w, static_cast<int>(w));
+        const auto n = static_cast<std::size_t>(r.workers);
+        r.pids.assign(n, -1);
+        r.started.assign(n, Clock::now());
+        r.log_read.assign(n, 0);
+        r.logs_of.clear();
+        for (std::size_t w = 0; w < n; ++w) r.logs_of.push_back(r.work / fmt::format("worker-{}.log", w));
+        for (std::size_t w = 0; w < n; ++w) start_worker(r, w, static_cast<int>(w));
     }
     double last_print = 0;
     bool passed_stop = false, killed = false;
@@ -186,7 +192,7 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                     continue;
                 }
                 r.pids[w] = -1;
-                poll_log(r);
+                poll_log(r, w);
                 const bool clean = WIFEXITED(status) && WEXITSTATUS(status) == 0;
                 if (!clean && std::chrono::duration<double>(Clock::now() - r.started[w]).count() < 1) ++r.quick_crashes;
                 // A worker stops at its first failure; restart it while time is left, unless it keeps failing
@@ -217,12 +223,12 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                                       r.restarts);
                 if (!why.empty()) {
                     const std::string line = fmt::format("{} worker {} stopped early at {:.0f} s: {}; its last words: {}", r.target, w,
-                                                         elapsed(), why, last_words(r));
+                                                         elapsed(), why, last_words(r, w));
                     fmt::print("  {}\n", line);
                     r.stops.push_back(line);
                 }
             }
-            poll_log(r);
+            for (std::size_t w = 0; w < r.pids.size(); ++w) poll_log(r, w);
         }
         if (!any) break;
         if (elapsed() - last_print >= k_progress_every_s) {
@@ -238,7 +244,8 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
     }
     const double wall = elapsed();
     for (TargetRun& r : plan.runs) {
-        r.runs_done = count_runs(r);
+        r.runs_done = 0;
+        for (std::size_t w = 0; w < r.logs_of.size(); ++w) r.runs_done += count_runs(r, w);
         r.seconds = wall;
         r.corpus_size = count_files(r.corpus);
     }
