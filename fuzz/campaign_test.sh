@@ -1,6 +1,7 @@
 #!/bin/sh
-# `ricochet fuzz`, one behaviour per call: reproducible campaigns. Fixed seeds and run counts decide every
-# verdict. Everything goes into a mktemp folder.
+# `ricochet fuzz`, one behaviour per call: bad folders refused, reproducible campaigns, a build without tests
+# that builds no standalone fuzz target. Fixed seeds and run counts decide every verdict. Everything goes into a
+# mktemp folder.
 #   campaign_test.sh RICOCHET CASE [CXX]
 #   campaign_test.sh --cases     prints every case
 set -u
@@ -35,6 +36,14 @@ proj=$dir/proj
 mkdir -p "$proj/replays"
 
 case "$case" in
+  replay-dir-file)   # A replay "folder" that is a file: refused before anything is made.
+                     : >"$dir/file"
+                     cd "$proj"; run 2 fuzz --runs 1 --replay-dir "$dir/file" --cache-dir "$dir/cache"
+                     has err "ricochet fuzz: error: --replay-dir $dir/file: not a folder"
+                     [ ! -e "$dir/cache" ] || fail "the cache folder was made"
+                     [ ! -s "$dir/file" ] || fail "the file was written"
+                     RICOCHET_REPLAY_DIR=$dir/file run 2 fuzz --runs 1 --cache-dir "$dir/cache"
+                     has err "ricochet fuzz: error: \$RICOCHET_REPLAY_DIR $dir/file: not a folder" ;;
   reproducible-coverage) # The same inputs cover the same edges on every run (ASLR moved UBSan's vptr cache: 2813 to 2823).
                      need_fuzzer scene
                      for i in 1 2 3; do
@@ -61,6 +70,17 @@ for f in sys.argv[1:]:
                      cmp -s "$dir/corpus1" "$dir/corpus2" || fail "different corpora: $(diff "$dir/corpus1" "$dir/corpus2" | head)"
                      [ -n "$(ls "$dir/logs1")" ] || fail "no log saved"
                      diff -r "$dir/logs1" "$dir/logs2" >"$dir/d" || fail "different logs: $(head -n 20 "$dir/d")" ;;
+  minimal-build)     # A build without tests and without libFuzzer builds neither the standalone fuzz targets nor what only
+                     # they use, but still the campaign (part of the command); the targets stay buildable by name.
+                     CXX=$cxx cmake -S "$src" -B "$dir/b" -G Ninja -DRICOCHET_TESTS=OFF -DRICOCHET_FUZZ=OFF -DRICOCHET_BENCH=OFF \
+                       >"$dir/out" 2>"$dir/err" || fail "configure failed"
+                     ninja -C "$dir/b" -t commands all >"$dir/all" 2>&1 || fail "ninja -t commands all failed"
+                     for t in fuzz_parser fuzz_static fuzz_sweep fuzz_scene fuzz_disc grammar_agreement ricochet_fuzz_common ricochet_grammar; do
+                       ! grep -qE -- "-o fuzz/(CMakeFiles/)?(lib)?$t[ ./]" "$dir/all" || fail "$t is built by default"
+                     done
+                     grep -qF -- "-o fuzz/CMakeFiles/ricochet_fuzz_campaign.dir/campaign/campaign.cpp.o" "$dir/all" || fail "the campaign is not built"
+                     ninja -C "$dir/b" -t targets all 2>/dev/null | grep -q '^fuzz_scene: phony' || fail "fuzz_scene is not a target"
+                     ! ctest --test-dir "$dir/b" -N | grep -q 'fuzz_.*_regression' || fail "regression tests without their binaries" ;;
   *) echo "unknown case $case" >&2; exit 1 ;;
 esac
 echo "ok $case"

@@ -69,6 +69,14 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
         fmt::print(stderr, "{}\n", app::no_project_message("fuzz", "run it in a project folder or pass --replay-dir DIR"));
         return std::nullopt;
     }
+    std::error_code ec;
+    // Degenerate: a replay "folder" that is a file (or anything else but a folder) would take no log.
+    if (fs::exists(project->replay_dir, ec) && !fs::is_directory(project->replay_dir, ec)) {
+        const std::string named_by = !opt.replay_dir.empty() ? "--replay-dir" : fmt::format("${}", app::k_replay_dir_env);
+        fmt::print(stderr, "ricochet fuzz: error: {} {}: not a folder (failure logs are saved in a folder)\n", named_by,
+                   project->replay_dir.string());
+        return std::nullopt;
+    }
     plan.replay_dir = project->replay_dir;
     plan.project = project->root;
     plan.source = RICOCHET_SOURCE_DIR;
@@ -106,7 +114,6 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
             fmt::print(stderr, "ricochet fuzz: error: unknown target '{}' (parser, static, sweep, scene, disc)\n", t);
             return std::nullopt;
         }
-    std::error_code ec;
     fs::create_directories(plan.cache, ec);
     // This campaign's own folder: another campaign on the same cache never touches it.
     std::string error;
