@@ -1,6 +1,6 @@
 #!/bin/sh
-# `ricochet fuzz`, one behaviour per call: bad folders refused, reproducible campaigns, a build without tests
-# that builds no standalone fuzz target. Fixed seeds and run counts decide every verdict. Everything goes into a
+# `ricochet fuzz`, one behaviour per call: bad folders refused, the binaries' own words when they refuse to
+# start, reproducible campaigns, a build without tests that builds no standalone fuzz target. Fixed seeds and run counts decide every verdict. Everything goes into a
 # mktemp folder.
 #   campaign_test.sh RICOCHET CASE [CXX]
 #   campaign_test.sh --cases     prints every case
@@ -34,6 +34,8 @@ sys.exit(0 if eval(sys.argv[2]) else 1)' "$dir/$1" "$2" 2>"$dir/py" || fail "std
 # A project folder with an empty replays/.
 proj=$dir/proj
 mkdir -p "$proj/replays"
+# A fake fuzz binary: FAKE NAME SCRIPT-BODY writes $dir/bin/fuzz_NAME.
+fake() { mkdir -p "$dir/bin"; printf '#!/bin/sh\n%s\n' "$2" >"$dir/bin/fuzz_$1"; chmod +x "$dir/bin/fuzz_$1"; }
 
 case "$case" in
   replay-dir-file)   # A replay "folder" that is a file: refused before anything is made.
@@ -44,6 +46,29 @@ case "$case" in
                      [ ! -s "$dir/file" ] || fail "the file was written"
                      RICOCHET_REPLAY_DIR=$dir/file run 2 fuzz --runs 1 --cache-dir "$dir/cache"
                      has err "ricochet fuzz: error: \$RICOCHET_REPLAY_DIR $dir/file: not a folder" ;;
+  probe-refused)     # A binary that refuses to start says why; the campaign repeats its words, not "build with clang".
+                     fake scene 'echo "fuzz_scene: error: kernel '"'mine'"' steps point balls only" >&2; exit 2'
+                     cd "$proj"; run 2 fuzz --target scene --runs 1 --cache-dir "$dir/cache" --bin-dir "$dir/bin"
+                     has err "fuzz_scene -help=1 (RICOCHET_KERNEL=robust) ended with exit 2 instead of printing libFuzzer's usage"
+                     has err "fuzz_scene: error: kernel 'mine' steps point balls only"
+                     lacks err "not a libFuzzer binary"
+                     lacks err "build them with clang" ;;
+  probe-own-kernel)  # The binaries are asked under the campaign's kernel, not the caller's RICOCHET_KERNEL: fuzz_disc asks
+                     # its kernel first thing, and would refuse one it does not know.
+                     need_fuzzer disc
+                     cd "$proj"; RICOCHET_KERNEL=no-such-kernel run 0 fuzz --target disc --runs 1 --seed 1 --cache-dir "$dir/cache"
+                     lacks err "not a libFuzzer binary"
+                     has out "ricochet fuzz: kernel robust, 1 runs per worker" ;;
+  cache-unwritable)  # A cache where nothing can be written (no byte may be written: ulimit -f 0, SIGXFSZ ignored, as on a
+                     # full disk, without root and without a mount): the campaign says so, not "not a libFuzzer binary".
+                     fake scene 'echo "Usage: fake"'
+                     cd "$proj"
+                     { ( ulimit -f 0; trap '' XFSZ; "$ricochet" fuzz --target scene --runs 1 --cache-dir "$dir/cache" --bin-dir "$dir/bin"
+                         echo "exit $?" ) 2>&1; } | cat >"$dir/err"
+                     has err "exit 2"
+                     has err "ricochet fuzz: error: cannot write in the cache folder $dir/cache: File too large"
+                     lacks err "not a libFuzzer binary"
+                     [ -z "$(ls -A "$dir/cache/runs")" ] || fail "its own folder is left: $(ls -A "$dir/cache/runs")" ;;
   reproducible-coverage) # The same inputs cover the same edges on every run (ASLR moved UBSan's vptr cache: 2813 to 2823).
                      need_fuzzer scene
                      for i in 1 2 3; do

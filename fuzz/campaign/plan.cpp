@@ -2,7 +2,11 @@
 #include "plan.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -34,6 +38,70 @@ fs::path default_bin_dir() {
 
 bool known_target(const std::string& t) {
     return std::find(k_campaign_targets.begin(), k_campaign_targets.end(), t) != k_campaign_targets.end();
+}
+
+/// How to get libFuzzer binaries, for the messages that find none.
+std::string how_to_build(const Plan& plan) {
+    return fmt::format(
+        "build them with clang and libFuzzer:\n  CC=clang-14 CXX=clang++-14 cmake -S {} -B build-fuzz-clang -G Ninja && "
+        "cmake --build build-fuzz-clang --target fuzz_parser fuzz_static fuzz_sweep fuzz_scene fuzz_disc ricochet\n"
+        "then run build-fuzz-clang/cli/ricochet fuzz (or pass --bin-dir)",
+        plan.source.string());
+}
+
+/// The last lines of out that are not empty, at most n, each indented.
+std::string last_lines(const std::string& out, std::size_t n) {
+    std::vector<std::string> lines;
+    std::istringstream in(out);
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty()) lines.push_back(line);
+    std::string text;
+    for (std::size_t i = lines.size() > n ? lines.size() - n : 0; i < lines.size(); ++i) text += "\n  " + lines[i];
+    return text;
+}
+
+/// Writes a few bytes into dir and removes them: a cache on a full disk (or one this user cannot write in)
+/// would lose every worker's output, and the binaries' answers with it. The error, or empty.
+std::string cannot_write_in(const fs::path& dir) {
+    const fs::path probe = dir / "write-probe";
+    std::string error;
+    {
+        std::ofstream out(probe, std::ios::binary);
+        // A libFuzzer worker's usage text is about this long.
+        const std::string bytes(4096, '\n');
+        errno = 0;
+        if (out) out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        if (out) out.flush();
+        if (!out) error = errno != 0 ? std::strerror(errno) : "the write failed";
+    }
+    std::error_code ec;
+    fs::remove(probe, ec);
+    return error;
+}
+
+/// Why r.bin cannot be a worker, from what `r.bin -help=1` printed under the campaign's own RICOCHET_KERNEL (the
+/// disc target asks its kernel before anything else, and the caller's environment must not decide); empty if it
+/// is a libFuzzer binary.
+std::string probe_binary(const TargetRun& r, const Plan& plan) {
+    const auto [rc, out] = run_capture({r.bin.string(), "-help=1"}, {"RICOCHET_KERNEL=" + plan.kernel_env},
+                                       plan.run_dir / fmt::format("probe-{}.log", r.target));
+    // A libFuzzer binary answers -help=1 with its usage.
+    if (rc == 0 && out.find("Usage:") != std::string::npos) return {};
+    // The gcc build's standalone driver says what it is.
+    if (out.find("standalone fuzz driver") != std::string::npos)
+        return fmt::format("{} is not a libFuzzer binary (a gcc build runs regression inputs only); {}", r.bin.string(),
+                           how_to_build(plan));
+    // It could not be started at all.
+    if (rc == 127 && out.starts_with("cannot start ")) return out;
+    // It refused to start, and said why (a kernel it cannot fuzz, a plug-in it cannot load, a full disk): its words.
+    if (rc != 0 && out.find_first_not_of(" \n") != std::string::npos)
+        return fmt::format("{} -help=1 (RICOCHET_KERNEL={}) ended with exit {} instead of printing libFuzzer's usage; its last "
+                           "words:{}",
+                           r.bin.string(), plan.kernel_env, rc, last_lines(out, 4));
+    if (rc != 0) return fmt::format("{} -help=1 (RICOCHET_KERNEL={}) ended with exit {} and printed nothing", r.bin.string(),
+                                    plan.kernel_env, rc);
+    return fmt::format("{} is not a libFuzzer binary (-help=1 printed no libFuzzer usage{}); {}", r.bin.string(),
+                       out.empty() ? ", nor anything else" : "", how_to_build(plan));
 }
 
 }  // namespace
@@ -99,11 +167,7 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
                            "robust, exact); kernel '{}' steps point balls only\n", plan.kernel_name);
         return std::nullopt;
     }
-    const std::string how = fmt::format(
-        "build them with clang and libFuzzer:\n  CC=clang-14 CXX=clang++-14 cmake -S {} -B build-fuzz-clang -G Ninja && "
-        "cmake --build build-fuzz-clang --target fuzz_parser fuzz_static fuzz_sweep fuzz_scene fuzz_disc ricochet\n"
-        "then run build-fuzz-clang/cli/ricochet fuzz (or pass --bin-dir)",
-        plan.source.string());
+    const std::string how = how_to_build(plan);
     // Degenerate: nothing to fuzz.
     if (targets.empty()) {
         fmt::print(stderr, "ricochet fuzz: error: no fuzz targets in {}; {}\n", plan.bin_dir.string(), how);
@@ -127,6 +191,11 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
         fs::remove_all(plan.run_dir, ec);
         return std::nullopt;
     };
+    if (const std::string why = cannot_write_in(plan.run_dir); !why.empty()) {
+        fmt::print(stderr, "ricochet fuzz: error: cannot write in the cache folder {}: {} (a full disk? pass --cache-dir DIR "
+                           "elsewhere)\n", plan.cache.string(), why);
+        return fail();
+    }
     for (const std::string& t : targets) {
         TargetRun r;
         r.target = t;
@@ -135,11 +204,8 @@ std::optional<Plan> make_plan(const CampaignOptions& opt) {
             fmt::print(stderr, "ricochet fuzz: error: {} is missing; {}\n", r.bin.string(), how);
             return fail();
         }
-        // A libFuzzer binary answers -help=1 with its usage; the gcc build's standalone driver says what it is.
-        const auto [rc, out] = run_capture({r.bin.string(), "-help=1"}, {}, plan.run_dir / fmt::format("probe-{}.log", t));
-        if (out.find("standalone fuzz driver") != std::string::npos || out.find("Usage:") == std::string::npos) {
-            fmt::print(stderr, "ricochet fuzz: error: {} is not a libFuzzer binary (a gcc build runs regression inputs only); {}\n",
-                       r.bin.string(), how);
+        if (const std::string why = probe_binary(r, plan); !why.empty()) {
+            fmt::print(stderr, "ricochet fuzz: error: {}\n", why);
             return fail();
         }
         // The corpus is per kernel: an input that is fine under robust may fail under a lecture kernel and
