@@ -1,7 +1,8 @@
 #!/bin/sh
-# `ricochet fuzz`, one behaviour per call: bad folders refused, the binaries' own words when they refuse to
-# start, reproducible campaigns, a build without tests that builds no standalone fuzz target. Fixed seeds and run counts decide every verdict. Everything goes into a
-# mktemp folder.
+# `ricochet fuzz` and `ricochet fuzz convert`, one behaviour per call: the time budget, failures a stopped or
+# timed campaign leaves for the next, the binaries' own words when they refuse to start, reproducible
+# campaigns, bad folders, a build without tests. Fixed seeds and run counts decide every verdict; the one case by
+# time (time-budget) checks what holds whatever the machine's load. Everything goes into a mktemp folder.
 #   campaign_test.sh RICOCHET CASE [CXX]
 #   campaign_test.sh --cases     prints every case
 set -u
@@ -44,8 +45,14 @@ case "$case" in
                      has err "ricochet fuzz: error: --replay-dir $dir/file: not a folder"
                      [ ! -e "$dir/cache" ] || fail "the cache folder was made"
                      [ ! -s "$dir/file" ] || fail "the file was written"
+                     RICOCHET_REPLAY_DIR=$dir/file run 2 fuzz convert --replay-dir "$dir/file" --target scene "$dir/file"
+                     has err "ricochet fuzz convert: error: --replay-dir $dir/file: not a folder"
                      RICOCHET_REPLAY_DIR=$dir/file run 2 fuzz --runs 1 --cache-dir "$dir/cache"
                      has err "ricochet fuzz: error: \$RICOCHET_REPLAY_DIR $dir/file: not a folder" ;;
+  runs-with-time)    # A campaign is by count or by clock: both is a usage error, nothing run.
+                     cd "$proj"; run 2 fuzz --runs 5 --time 5 --cache-dir "$dir/cache"
+                     has err "ricochet fuzz: error: --runs and --time exclude each other"
+                     [ ! -e "$dir/cache" ] || fail "the cache folder was made" ;;
   probe-refused)     # A binary that refuses to start says why; the campaign repeats its words, not "build with clang".
                      fake scene 'echo "fuzz_scene: error: kernel '"'mine'"' steps point balls only" >&2; exit 2'
                      cd "$proj"; run 2 fuzz --target scene --runs 1 --cache-dir "$dir/cache" --bin-dir "$dir/bin"
@@ -69,6 +76,89 @@ case "$case" in
                      has err "ricochet fuzz: error: cannot write in the cache folder $dir/cache: File too large"
                      lacks err "not a libFuzzer binary"
                      [ -z "$(ls -A "$dir/cache/runs")" ] || fail "its own folder is left: $(ls -A "$dir/cache/runs")" ;;
+  stop-keeps-failures) # Stopped after a worker saved a failure artifact, before the tail: the table and the JSON say the
+                     # failure, it waits in pending/, and the next campaign on the cache converts it.
+                     need_fuzzer disc
+                     cd "$proj"
+                     "$ricochet" fuzz --json --target disc --kernel lecture-float --time 604800 --seed 1 --jobs 1 \
+                       --cache-dir "$dir/cache" >"$dir/out" 2>"$dir/err" &
+                     pid=$!
+                     # lecture-float's speed check fails on the first input: wait for the worker's artifact.
+                     while ! ls "$dir"/cache/runs/*/disc/artifacts/crash-* >/dev/null 2>&1; do
+                       kill -0 $pid 2>/dev/null || fail "the campaign ended before it found a failure"; sleep 0.05
+                     done
+                     kill -INT $pid; wait $pid; rc=$?
+                     [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
+                     grep -qE '^disc +[0-9]+ +[^ ]+ +[0-9]+ +[0-9]+ +0 +0 +[1-9][0-9]*$' "$dir/err" || fail "the table does not count the pending failure"
+                     has err "NEW FAILURES (some not converted yet); stopped by SIGINT (exit 130)"
+                     has err "left for the next campaign on this cache: "
+                     lacks err "no new failures"
+                     json_is out 'd["stopped"] and d["exit"] == 130 and d["pending_failures"] >= 1 and d["targets"][0]["pending_failures"] == d["pending_failures"]'
+                     json_is out 'all(f["status"] == "pending" and f["new"] and os.path.isfile(f["artifact"]) and "/disc/lecture-float/pending/" in f["artifact"] for f in d["failures"]) and len(d["failures"]) == d["pending_failures"]'
+                     first=$(ls "$dir/cache/disc/lecture-float/pending" | head -n 1)
+                     # The next campaign converts what waits, first thing in its tail.
+                     run 1 fuzz --json --target disc --kernel lecture-float --runs 1 --seed 1 --jobs 1 --cache-dir "$dir/cache"
+                     has err "left by earlier campaigns"
+                     [ ! -e "$dir/cache/disc/lecture-float/pending/$first" ] || fail "$first still waits"
+                     [ -f "$dir/cache/disc/lecture-float/artifacts/$first" ] || fail "$first is not kept with the converted artifacts"
+                     json_is out 'any(f["artifact"].endswith("/'"$first"'") and f["status"] in ("saved", "known", "duplicate") for f in d["failures"])'
+                     ls "$proj"/replays/fuzz-disc-*.scene >/dev/null 2>&1 || fail "no log saved" ;;
+  convert)           # An artifact turned into a scene log on demand: in a cache's pending/ folder its place names the
+                     # target and kernel; elsewhere --target and --kernel do.
+                     need_fuzzer disc
+                     mkdir -p "$dir/art" "$dir/cache/disc/lecture-float/pending" "$dir/cache/disc/lecture-float/artifacts"
+                     RICOCHET_KERNEL=lecture-float "$bins/fuzz_disc" -runs=10 -seed=1 -artifact_prefix="$dir/art/" >"$dir/raw" 2>&1
+                     a=$(ls "$dir"/art/crash-* 2>/dev/null | head -n 1)
+                     [ -n "$a" ] || fail "fuzz_disc under lecture-float left no artifact: $(tail -n 5 "$dir/raw")"
+                     cd "$proj"
+                     run 2 fuzz convert "$a" --cache-dir "$dir/cache"
+                     has err "which target is it for?"
+                     run 0 fuzz convert "$a" --target disc --kernel lecture-float --cache-dir "$dir/cache" --replay-dir "$dir/logs" --bin-dir "$bins"
+                     log=$(ls "$dir"/logs/fuzz-disc-*.scene | head -n 1)
+                     [ -n "$log" ] && grep -q '^expect failure ' "$log" || fail "no failure log saved"
+                     has out "$a: saved $log"
+                     [ -f "$a" ] || fail "the artifact given was moved"
+                     "$ricochet" replay "$log" >"$dir/r" 2>&1 || fail "the log does not reproduce: $(cat "$dir/r")"
+                     # The same artifact from pending/: target and kernel from its place; the case is known now; it
+                     # leaves pending/ for artifacts/.
+                     cp "$a" "$dir/cache/disc/lecture-float/pending/"
+                     p=$dir/cache/disc/lecture-float/pending/$(basename "$a")
+                     run 0 fuzz convert "$p" --cache-dir "$dir/cache" --replay-dir "$dir/logs"
+                     has out "$p: known $log"
+                     [ ! -e "$p" ] && [ -f "$dir/cache/disc/lecture-float/artifacts/$(basename "$a")" ] || fail "it did not leave pending/"
+                     run 2 fuzz convert "$dir/art" --target disc
+                     has err "$dir/art: not a file" ;;
+  time-budget)       # --time bounds the whole command: the tail's steps are said as they go, the table's time is the
+                     # command's own, and whatever the tail could not do is said and kept. What gets done in 8 s depends on
+                     # the machine's load; what is checked here holds whatever it is.
+                     need_fuzzer disc
+                     cd "$proj"
+                     t0=$(date +%s.%N)
+                     "$ricochet" fuzz --json --target disc --kernel lecture-float --time 8 --seed 1 --jobs 1 --cache-dir "$dir/cache" \
+                       >"$dir/out" 2>"$dir/err"
+                     rc=$?
+                     t1=$(date +%s.%N)
+                     [ "$rc" = 1 ] || fail "exit $rc, expected 1 (lecture-float fails on the first input)"
+                     has err "s in all (fuzzing until 6 s, then converting failures and merging corpora)"
+                     has err "fuzzing done; converting failures, then merging the corpora"
+                     # The table's time is the command's: no more than measured from outside, and short of it by no more
+                     # than its start and exit (3 s, generous).
+                     json_is out 'd["time_s"] == 8 and d["seconds"] <= d["wall_seconds"] <= '"$t1"' - '"$t0"' and d["wall_seconds"] >= '"$t1"' - '"$t0"' - 3'
+                     s=$(python3 -c 'import json,sys; print(round(json.load(open(sys.argv[1]))["wall_seconds"]))' "$dir/out")
+                     grep -q "^kernel lecture-float, $s s (" "$dir/err" || fail "the table's time is not $s s"
+                     # Within a generous margin of the budget: the deadline kills what runs past it.
+                     json_is out 'd["wall_seconds"] <= d["time_s"] + 20'
+                     # Every failure is accounted for: converted (its steps said) or waiting in pending/ (and said so).
+                     json_is out 'd["pending_failures"] == len([f for f in d["failures"] if f["status"] == "pending"]) == len(os.listdir("'"$dir"'/cache/disc/lecture-float/pending"))'
+                     python3 -c 'import json, os, sys
+d = json.load(open(sys.argv[1])); err = open(sys.argv[2]).read()
+for f in d["failures"]:
+    name = os.path.basename(f["artifact"])
+    if f["status"] != "pending" and name + ": running it again" not in err: sys.exit("no progress line for " + name)
+for t in d["targets"]:
+    if t["merge"] == "done" and "merging the corpus" not in err: sys.exit("no progress line for the merge")
+if bool(d["pending_failures"] or d["unmerged"]) != ("left for the next campaign on this cache:" in err): sys.exit("leftovers not said")
+' "$dir/out" "$dir/err" 2>"$dir/py" || fail "$(cat "$dir/py")" ;;
   reproducible-coverage) # The same inputs cover the same edges on every run (ASLR moved UBSan's vptr cache: 2813 to 2823).
                      need_fuzzer scene
                      for i in 1 2 3; do

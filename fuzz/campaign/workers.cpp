@@ -27,10 +27,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Seconds between progress lines.
-constexpr double k_progress_every_s = 5;
-/// Seconds past its time limit after which a worker is stopped (libFuzzer overruns by a unit's time).
-constexpr double k_overrun_grace_s = 60;
+/// Seconds past the end of fuzzing after which a worker still running is sent SIGTERM (libFuzzer ends at its
+/// -max_total_time only between two inputs, and counts whole seconds); one still there at the deadline is killed.
+constexpr double k_overrun_grace_s = 1;
 /// Most restarts of one target's workers in a campaign.
 constexpr int k_max_restarts = 50;
 /// Failures within a second of starting after which a target's workers are not restarted: a corpus
@@ -125,9 +124,12 @@ std::string human(double x) {
 }
 
 double run_workers(Plan& plan, const CampaignOptions& opt) {
-    const auto t0 = Clock::now();
-    const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+    const Budget& budget = plan.budget;
+    const auto elapsed = [&] { return budget.elapsed(); };
+    const double started_at = elapsed();
     const bool by_runs = opt.runs > 0;
+    // A campaign by time fuzzes until the budget's share of fuzzing is spent (budget.hpp); the tail has the rest.
+    const double fuzz_end = budget.fuzz_end_s();
     // start: which start of this target's workers it is (0, 1, ...), so that each gets its own seed.
     const auto start_worker = [&](TargetRun& r, std::size_t w, int start) {
         std::vector<std::string> argv = {r.bin.string()};
@@ -136,7 +138,7 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
         if (by_runs)
             argv.insert(argv.end(), {fmt::format("-runs={}", opt.runs), "-reload=0"});
         else
-            argv.push_back(fmt::format("-max_total_time={}", std::max(1, static_cast<int>(opt.time - elapsed()))));
+            argv.push_back(fmt::format("-max_total_time={}", std::max(1, static_cast<int>(fuzz_end - elapsed()))));
         if (opt.seed > 0) argv.push_back(fmt::format("-seed={}", opt.seed + static_cast<unsigned>(start)));
         argv.insert(argv.end(), {"-timeout=10", "-rss_limit_mb=2048", "-print_final_stats=1",
                                  "-artifact_prefix=" + r.artifacts.string() + "/"});
@@ -152,13 +154,14 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
         const auto n = static_cast<std::size_t>(r.workers);
         r.pids.assign(n, -1);
         r.started.assign(n, Clock::now());
+        r.ended.assign(n, false);
         r.log_read.assign(n, 0);
         r.logs_of.clear();
         for (std::size_t w = 0; w < n; ++w) r.logs_of.push_back(r.work / fmt::format("worker-{}.log", w));
         for (std::size_t w = 0; w < n; ++w) start_worker(r, w, static_cast<int>(w));
     }
     double last_print = 0;
-    bool passed_stop = false, killed = false;
+    bool passed_stop = false, killed = false, out_of_time = false;
     double stop_at = 0;
     for (;;) {
         // A SIGINT or SIGTERM (run_campaign holds a StopOnSignal): every worker gets it once and exits
@@ -180,6 +183,16 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                         kill(r.pids[w], SIGKILL);
                     }
         }
+        // The deadline of the whole command: a worker still there (stuck in SIGTERM's handler) is killed.
+        if (!by_runs && !out_of_time && budget.left() <= 0) {
+            out_of_time = true;
+            for (TargetRun& r : plan.runs)
+                for (std::size_t w = 0; w < r.pids.size(); ++w)
+                    if (r.pids[w] > 0) {
+                        fmt::print("  {} worker {} did not end by the time limit: killed\n", r.target, w);
+                        kill(r.pids[w], SIGKILL);
+                    }
+        }
         bool any = false;
         for (TargetRun& r : plan.runs) {
             for (std::size_t w = 0; w < r.pids.size(); ++w) {
@@ -187,8 +200,12 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                 int status = 0;
                 if (waitpid(r.pids[w], &status, WNOHANG) == 0) {
                     any = true;
-                    // A worker that ignores its time limit.
-                    if (!by_runs && elapsed() > opt.time + k_overrun_grace_s) kill(r.pids[w], SIGTERM);
+                    // A worker past its time limit (an input that runs long): SIGTERM ends it through libFuzzer's
+                    // interrupt handler, with its final statistics.
+                    if (!by_runs && !r.ended[w] && elapsed() > fuzz_end + k_overrun_grace_s) {
+                        r.ended[w] = true;
+                        kill(r.pids[w], SIGTERM);
+                    }
                     continue;
                 }
                 r.pids[w] = -1;
@@ -198,9 +215,10 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                 // A worker stops at its first failure; restart it while time is left, unless it keeps failing
                 // at start-up (a corpus input that fails, or a kernel that fails on nearly every input, as the
                 // peers do: more restarts would find the same failures again). A campaign by runs does not restart: each worker
-                // runs its inputs once. A stopped campaign restarts nothing and says nothing: it was asked to.
-                if (app::stop_requested()) continue;
-                const bool time_left = !by_runs && elapsed() < opt.time - 1;
+                // runs its inputs once. A stopped campaign restarts nothing and says nothing: it was asked to; nor does
+                // one whose workers were ended at their time.
+                if (app::stop_requested() || r.ended[w]) continue;
+                const bool time_left = !by_runs && elapsed() < fuzz_end - 1;
                 if (!clean && time_left && r.restarts < k_max_restarts && r.quick_crashes < k_max_quick_crashes) {
                     ++r.restarts;
                     start_worker(r, w, r.workers - 1 + r.restarts);
@@ -242,14 +260,14 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(200));
     }
-    const double wall = elapsed();
+    const double fuzzed = elapsed() - started_at;
     for (TargetRun& r : plan.runs) {
         r.runs_done = 0;
         for (std::size_t w = 0; w < r.logs_of.size(); ++w) r.runs_done += count_runs(r, w);
-        r.seconds = wall;
+        r.seconds = fuzzed;
         r.corpus_size = count_files(r.corpus);
     }
-    return wall;
+    return fuzzed;
 }
 
 }  // namespace ricochet::fuzz
