@@ -1,8 +1,9 @@
 #!/bin/sh
 # `ricochet fuzz` and `ricochet fuzz convert`, one behaviour per call: the time budget, failures a stopped or
 # timed campaign leaves for the next, the binaries' own words when they refuse to start, reproducible
-# campaigns, bad folders, a build without tests. Fixed seeds and run counts decide every verdict; the one case by
-# time (time-budget) checks what holds whatever the machine's load. Everything goes into a mktemp folder.
+# campaigns, the --json document's failures, bad folders, a build without tests. Fixed seeds and run counts
+# decide every verdict; the one case by time (time-budget) checks what holds whatever the machine's load.
+# Everything goes into a mktemp folder.
 #   campaign_test.sh RICOCHET CASE [CXX]
 #   campaign_test.sh --cases     prints every case
 set -u
@@ -37,6 +38,8 @@ proj=$dir/proj
 mkdir -p "$proj/replays"
 # A fake fuzz binary: FAKE NAME SCRIPT-BODY writes $dir/bin/fuzz_NAME.
 fake() { mkdir -p "$dir/bin"; printf '#!/bin/sh\n%s\n' "$2" >"$dir/bin/fuzz_$1"; chmod +x "$dir/bin/fuzz_$1"; }
+# found LOG: the check, frame and ball of LOG's `found` line.
+found() { sed -n 's/^found \([^ ]*\) \([0-9]*\) \([0-9]*\)$/\1 \2 \3/p' "$1"; }
 
 case "$case" in
   replay-dir-file)   # A replay "folder" that is a file: refused before anything is made.
@@ -128,6 +131,17 @@ case "$case" in
                      [ ! -e "$p" ] && [ -f "$dir/cache/disc/lecture-float/artifacts/$(basename "$a")" ] || fail "it did not leave pending/"
                      run 2 fuzz convert "$dir/art" --target disc
                      has err "$dir/art: not a file" ;;
+  json-failures)     # Each failure in the --json document with its fields: target, kernel, check, frame, ball, the log.
+                     need_fuzzer disc
+                     cd "$proj"; run 1 fuzz --json --target disc --kernel lecture-float --runs 1 --seed 1 --jobs 1 --cache-dir "$dir/cache"
+                     json_is out 'len(d["failures"]) == 1 and d["new_failures"] == 1 and d["pending_failures"] == 0'
+                     json_is out '[(f["target"], f["kernel"], f["status"], f["new"]) for f in d["failures"]] == [("disc", "lecture-float", "saved", True)]'
+                     log=$(ls "$proj"/replays/fuzz-disc-*.scene)
+                     set -- $(found "$log")
+                     [ $# = 3 ] || fail "$log has no found line"
+                     json_is out 'd["failures"][0]["check"] == "'"$1"'" and d["failures"][0]["frame"] == '"$2"' and d["failures"][0]["ball"] == '"$3"
+                     json_is out 'os.path.samefile(d["failures"][0]["log"], "'"$log"'") and d["failures"][0]["message"].startswith("==ricochet-fuzz== FAILURE target=disc")'
+                     json_is out 'os.path.isfile(d["failures"][0]["artifact"]) and "/disc/lecture-float/artifacts/" in d["failures"][0]["artifact"]' ;;
   time-budget)       # --time bounds the whole command: the tail's steps are said as they go, the table's time is the
                      # command's own, and whatever the tail could not do is said and kept. What gets done in 8 s depends on
                      # the machine's load; what is checked here holds whatever it is.

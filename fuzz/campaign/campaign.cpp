@@ -32,12 +32,27 @@ struct Leftovers {
 /// A failure record as a JSON object (docs/cli-json.md, `failures[]`).
 void json_failure(app::JsonWriter& json, const FailureRecord& f) {
     json.begin_object().member("target", f.target).member("kernel", f.kernel).member("status", status_name(f.status));
+    json.key("check");
+    if (f.check.empty())
+        json.null();
+    else
+        json.value(f.check);
+    json.key("frame");
+    if (f.frame)
+        json.value(*f.frame);
+    else
+        json.null();
+    json.key("ball");
+    if (f.ball)
+        json.value(*f.ball);
+    else
+        json.null();
     json.key("log");
     if (f.log.empty())
         json.null();
     else
         json.value(f.log.string());
-    json.member("new", f.counts_as_new()).member("artifact", f.artifact.string()).end_object();
+    json.member("new", f.counts_as_new()).member("artifact", f.artifact.string()).member("message", f.message).end_object();
 }
 
 /// The campaign's --json document (docs/cli-json.md, ricochet-fuzz/1).

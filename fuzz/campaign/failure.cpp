@@ -6,6 +6,7 @@
 #include "failure.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -63,6 +64,42 @@ std::pair<std::string, std::string> signature_of(const std::string& out) {
         if (line.starts_with("SUMMARY:")) signature = first_line = line;
     }
     return {signature, first_line};
+}
+
+/// The word after key in line up to the next space ("check=" in the target's failure line), or empty.
+std::string field_of(std::string_view line, std::string_view key) {
+    const auto at = line.find(key);
+    if (at == std::string_view::npos) return {};
+    const auto from = at + key.size();
+    return std::string(line.substr(from, line.find(' ', from) - from));
+}
+
+/// A whole decimal number, or nothing.
+std::optional<std::uint64_t> number_of(std::string_view s) {
+    std::uint64_t v = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (s.empty() || ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+    return v;
+}
+
+/// Fills record's check, frame and ball from a failure log's `found C F B` line, else from the target's failure
+/// line (check and frame).
+void where_it_failed(FailureRecord& record, const std::string& log_text, const std::string& failure_line) {
+    std::istringstream lines(log_text);
+    for (std::string line; std::getline(lines, line);) {
+        std::istringstream words(line);
+        std::string word, check, frame, ball;
+        if (words >> word >> check >> frame >> ball && word == "found") {
+            record.check = check;
+            record.frame = number_of(frame);
+            record.ball = number_of(ball);
+            return;
+        }
+    }
+    if (failure_line.starts_with(k_failure_tag)) {
+        record.check = field_of(failure_line, " check=");
+        record.frame = number_of(field_of(failure_line, " frame="));
+    }
 }
 
 /// A line every k_progress_every_s calls (run_bounded calls its tick about once a second), "WHAT, N s so far".
@@ -211,6 +248,8 @@ std::optional<FailureRecord> convert_one(TargetRun& r, const ConvertSettings& se
         keep_raw();
         r.notes.push_back(fmt::format("{}: same failure as one above ({})", name, raw_signature));
         record.status = FailureStatus::duplicate;
+        record.message = raw_line;
+        where_it_failed(record, read_all(raw_scene), raw_line);
         return record;
     }
     if (settings.most > 0 && minimized >= settings.most) {
@@ -271,9 +310,11 @@ std::optional<FailureRecord> convert_one(TargetRun& r, const ConvertSettings& se
     auto [signature, first_line] = signature_of(run.out);
     if (signature.empty()) signature = fmt::format("exit {}", run.rc);
     signatures.insert(raw_signature);
+    record.message = first_line;
     if (!signatures.insert(signature).second && signature != raw_signature) {
         r.notes.push_back(fmt::format("{}: same failure as one above ({})", name, signature));
         record.status = FailureStatus::duplicate;
+        where_it_failed(record, read_all(scene_out), first_line);
         return record;
     }
     fmt::print("  {} failure: {}\n    raw artifact: {}\n    minimized:    {} (sha1 {})\n", r.target, first_line,
@@ -285,6 +326,7 @@ std::optional<FailureRecord> convert_one(TargetRun& r, const ConvertSettings& se
         fmt::print("    no scene log (run `{}{} {}` to reproduce; add it to fuzz/corpus/{}/ once fixed)\n", env,
                    r.bin.string(), input.string(), r.target);
         record.status = FailureStatus::no_log;
+        where_it_failed(record, {}, first_line);
         return record;
     }
     // The target wrote the failure log (make_failure_log); it is saved reduced, as a failure log of its own. A
@@ -293,6 +335,7 @@ std::optional<FailureRecord> convert_one(TargetRun& r, const ConvertSettings& se
     const std::string text = plugin_fault          ? written
                              : !plan.plugin.empty() ? reduced_log_apart(written, r, plan, scratch)
                                                     : reduced_log(written, scene_out, r, budget);
+    where_it_failed(record, text, first_line);
     std::string error;
     // Under the cache's lock, so that of two campaigns saving the same case one saves it, one finds it known.
     std::optional<SavedLog> saved;
@@ -425,6 +468,7 @@ std::optional<FailureRecord> convert_artifact(TargetRun& r, const ConvertSetting
         record.kernel = plan.kernel_name;
         record.artifact = path;
         record.status = FailureStatus::unsaved;
+        record.message = ec.message();
         return record;
     }
     int minimized = 0;

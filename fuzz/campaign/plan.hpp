@@ -37,7 +37,11 @@ struct FailureRecord {
     std::string kernel;                    ///< the kernel under test (a plug-in's own name)
     std::filesystem::path artifact;        ///< the raw input where it is kept (the cache's artifacts/ or pending/)
     FailureStatus status = FailureStatus::pending;
+    std::string check;                     ///< the check that failed (the saved log's `found`, else the target's report); empty if none
+    std::optional<std::uint64_t> frame;    ///< its frame
+    std::optional<std::uint64_t> ball;     ///< its ball (a saved log's `found` line names it)
     std::filesystem::path log;             ///< the saved log (new or the known case's); empty if none
+    std::string message;                   ///< the failure's first line (the target's report or the sanitizer's summary)
     /// True for a failure that counts as new: saved, no_log, unsaved, flaky, or pending (not known to be old).
     bool counts_as_new() const;
 };
