@@ -8,6 +8,7 @@
 
 #include "cache_lock.hpp"
 #include "process.hpp"
+#include "ricochet_app/stop_signal.hpp"
 
 namespace ricochet::fuzz {
 
@@ -41,9 +42,15 @@ std::size_t count_files(const fs::path& dir) {
     return n;
 }
 
-void merge_corpus(TargetRun& run, const std::filesystem::path& cache, const std::string& kernel) {
+void merge_corpus(TargetRun& run, const Plan& plan) {
+    const Budget& budget = plan.budget;
     // One merge of a target's corpus at a time; another campaign's workers may still add inputs meanwhile.
-    const CacheLock lock(cache, fmt::format("merging the {} corpus", run.target));
+    const CacheLock lock(plan.cache, fmt::format("merging the {} corpus", run.target), budget.deadline());
+    if (lock.timed_out()) {
+        run.merge = "out of time";
+        budget.say(run.target, "merge not done: another campaign held the cache's lock until the time was up");
+        return;
+    }
     std::error_code ec;
     // The inputs this merge judges: those there now. One a worker adds later is not judged, so it stays.
     std::set<std::string> judged;
@@ -52,10 +59,30 @@ void merge_corpus(TargetRun& run, const std::filesystem::path& cache, const std:
     const fs::path merged = run.work / "corpus.merged";
     fs::create_directories(merged, ec);
     const fs::path log = run.work / "merge.log";
-    const auto [rc, out] = run_capture({run.bin.string(), "-merge=1", "-timeout=10", merged.string(), run.corpus.string()},
-                                       {"RICOCHET_KERNEL=" + kernel}, log);
-    if (rc != 0) {
-        fmt::print("  {}: merge failed (exit {}), corpus kept as it was; its output:\n{}\n", run.target, rc, out);
+    budget.say(run.target, fmt::format("merging the corpus ({} inputs)", judged.size()));
+    const Clock::time_point began = Clock::now();
+    int ticks = 0;
+    const RunResult merge = run_bounded({run.bin.string(), "-merge=1", "-timeout=10", merged.string(), run.corpus.string()},
+                                        {"RICOCHET_KERNEL=" + plan.kernel_env}, log, budget.deadline(), [&] {
+                                            if (++ticks % k_progress_every_s == 0)
+                                                budget.say(run.target, fmt::format("merging, {:.0f} s so far",
+                                                                                   std::chrono::duration<double>(Clock::now() - began).count()));
+                                        });
+    if (merge.cut) {
+        run.merge = "out of time";
+        budget.say(run.target, "merge cut at the time limit: the corpus stays unmerged, for the next campaign's merge");
+        fs::remove_all(merged, ec);
+        return;
+    }
+    if (app::stop_requested()) {
+        run.merge = "stopped";
+        fs::remove_all(merged, ec);
+        return;
+    }
+    if (merge.rc != 0) {
+        run.merge = "failed";
+        fmt::print("  {}: merge failed (exit {}), corpus kept as it was; its output:\n{}\n", run.target, merge.rc, merge.out);
+        fs::remove_all(merged, ec);
         return;
     }
     // The kept inputs go in first (named by their SHA-1, as libFuzzer names corpus files: the same name is
@@ -70,6 +97,7 @@ void merge_corpus(TargetRun& run, const std::filesystem::path& cache, const std:
         if (!kept.contains(name)) fs::remove(run.corpus / name, ec);
     fs::remove_all(merged, ec);
     run.corpus_size = count_files(run.corpus);
+    run.merge = "done";
 }
 
 }  // namespace ricochet::fuzz

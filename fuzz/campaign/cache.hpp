@@ -23,7 +23,9 @@ std::size_t count_files(const std::filesystem::path& dir);
 
 /// Shrinks run's corpus to its -merge=1 minimization (the inputs that add coverage), holding the cache's
 /// lock (cache_lock.hpp); inputs added by another campaign during the merge stay. Keeps the corpus as it
-/// was if the merge fails (then it prints the merge's output). Updates run.corpus_size.
-void merge_corpus(TargetRun& run, const std::filesystem::path& cache, const std::string& kernel);
+/// was if the merge fails (then it prints the merge's output), is stopped, or does not end by plan's deadline (it
+/// is killed then). Prints a progress line as it starts and every few seconds; sets run.merge (plan.hpp) and
+/// updates run.corpus_size.
+void merge_corpus(TargetRun& run, const Plan& plan);
 
 }  // namespace ricochet::fuzz

@@ -41,10 +41,13 @@ void register_fuzz(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("fuzz", "run a libFuzzer campaign; failures become scene logs");
     sub->add_option("--target", opt->targets, "target(s): parser, static, sweep, scene, disc (default: all built; disc only for a kernel that steps discs)");
     sub->add_option("--kernel", opt->kernel, "kernel under test: a kernel's name, or plugin:PATH (ricochet/plugin.h; default robust)");
-    sub->add_option("--time", opt->time, "seconds to fuzz (default 60; 1 to 604800, a week)")
-        ->check(number_in(1.0, k_max_time_s, "a number of seconds"));
-    sub->add_option("--runs", opt->runs, "inputs per worker instead of a time limit (with --seed: a reproducible campaign)")
-        ->check(number_in<std::uint64_t>(1, std::numeric_limits<std::uint64_t>::max(), "a count of inputs"));
+    CLI::Option* time = sub->add_option("--time", opt->time,
+                                        "seconds the whole command takes, fuzzing then converting failures and merging "
+                                        "(default 60; 1 to 604800, a week)")
+                            ->check(number_in(1.0, k_max_time_s, "a number of seconds"));
+    CLI::Option* runs = sub->add_option("--runs", opt->runs,
+                                        "inputs per worker instead of a time limit (with --seed: a reproducible campaign)")
+                            ->check(number_in<std::uint64_t>(1, std::numeric_limits<std::uint64_t>::max(), "a count of inputs"));
     sub->add_option("--seed", opt->seed, "libFuzzer seed of the first worker (the next get seed+1, ...; default random)")
         ->check(number_in<unsigned>(1, std::numeric_limits<unsigned>::max(), "a seed"));
     sub->add_option("--jobs", opt->jobs, "worker processes in all, shared out among the targets (default: one per target)")
@@ -61,7 +64,31 @@ void register_fuzz(CLI::App& app) {
     sub->add_option("libfuzzer_flags", opt->libfuzzer_flags,
                     "after --: flags passed to every libFuzzer worker after the campaign's own (e.g. -- -max_len=256 -use_cmp=0)");
     sub->footer("Everything after -- goes to every libFuzzer worker, after the campaign's own flags (so it overrides them).");
-    sub->callback([opt] {
+
+    auto conv = std::make_shared<ConvertOptions>();
+    CLI::App* convert = sub->add_subcommand("convert", "turn failure artifacts into scene logs, as a campaign does");
+    convert->add_option("artifacts", conv->artifacts, "libFuzzer's failure inputs (crash-…, timeout-…; those a campaign left in "
+                                                      "CACHE/TARGET/KERNEL/pending/)")
+        ->required();
+    convert->add_option("--target", conv->target, "their target (default: read from the artifact's place in a cache)");
+    convert->add_option("--kernel", conv->kernel,
+                        "kernel under test: a kernel's name, or plugin:PATH (default: read from the artifact's place, else robust)");
+    convert->add_option("--replay-dir", conv->replay_dir, "where the logs go (default $RICOCHET_REPLAY_DIR, else the project folder's replays/)");
+    convert->add_option("--cache-dir", conv->cache_dir, "the cache it works in (default as for fuzz)");
+    convert->add_option("--bin-dir", conv->bin_dir, "folder of the fuzz_* binaries (default as for fuzz)");
+    convert->callback([conv] {
+        const int rc = run_convert(*conv);
+        if (rc != 0) throw CLI::RuntimeError(rc);
+    });
+
+    sub->callback([opt, convert, time, runs] {
+        if (convert->parsed()) return;
+        // A campaign is by count or by clock, never both: a count with --seed repeats, a clock does not.
+        if (time->count() > 0 && runs->count() > 0) {
+            fmt::print(stderr, "ricochet fuzz: error: --runs and --time exclude each other: --runs N runs N inputs per worker "
+                               "(with --seed S, the same inputs every time), --time S ends the whole command by S seconds\n");
+            throw CLI::RuntimeError(2);
+        }
         const int rc = run_campaign(*opt);
         if (rc != 0) throw CLI::RuntimeError(rc);
     });

@@ -7,9 +7,12 @@
 #include <cerrno>
 #include <charconv>
 #include <cstring>
+#include <fstream>
 #include <system_error>
 
 #include <fmt/format.h>
+
+#include "cache.hpp"
 
 namespace ricochet::fuzz {
 namespace {
@@ -26,8 +29,23 @@ pid_t run_owner(const std::string& name) {
     return static_cast<pid_t>(pid);
 }
 
-/// Removes the run folders of runs whose PID no longer exists (kill(pid, 0) gives ESRCH); a live PID's,
-/// ours or another user's, is kept. Best effort.
+/// Moves the failure artifacts of a dead campaign's run folder into the pending folders its targets name, so that
+/// the next campaign converts them. Best effort.
+void rescue_artifacts(const fs::path& run) {
+    std::error_code ec;
+    for (const auto& t : fs::directory_iterator(run, ec)) {
+        std::error_code e2;
+        if (!t.is_directory(e2)) continue;
+        std::ifstream in(t.path() / k_pending_to);
+        std::string to;
+        if (!std::getline(in, to) || to.empty() || !fs::is_directory(to, e2)) continue;
+        for (const std::string& name : list_artifacts(t.path() / "artifacts"))
+            if (!name.starts_with("slow-unit-")) fs::rename(t.path() / "artifacts" / name, fs::path(to) / name, e2);
+    }
+}
+
+/// Removes the run folders of runs whose PID no longer exists (kill(pid, 0) gives ESRCH), their failure
+/// artifacts rescued first; a live PID's, ours or another user's, is kept. Best effort.
 void remove_stale_runs(const fs::path& runs) {
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(runs, ec)) {
@@ -35,7 +53,9 @@ void remove_stale_runs(const fs::path& runs) {
         if (pid == 0 || pid == ::getpid()) continue;
         if (::kill(pid, 0) == 0 || errno != ESRCH) continue;
         std::error_code e2;
-        if (e.is_directory(e2) && !e.is_symlink(e2)) fs::remove_all(e.path(), e2);
+        if (!e.is_directory(e2) || e.is_symlink(e2)) continue;
+        rescue_artifacts(e.path());
+        fs::remove_all(e.path(), e2);
     }
 }
 

@@ -1,5 +1,6 @@
 // A campaign's own working folder in the cache: CACHE/runs/PID-XXXXXX, so that campaigns sharing one
-// cache never share a temporary file. Folders of campaigns whose PID is gone are removed.
+// cache never share a temporary file. Folders of campaigns whose PID is gone are removed, the failure artifacts
+// they had not converted moved first into the pending folder each target's folder names.
 #pragma once
 
 #include <filesystem>
@@ -8,8 +9,12 @@
 
 namespace ricochet::fuzz {
 
-/// Creates CACHE/runs/PID-XXXXXX (mkdtemp) after removing the run folders of dead PIDs; nothing, with
-/// *error set, if it cannot.
+/// The file in RUN/TARGET/ that names (one line, absolute) the pending folder its failure artifacts belong to.
+inline constexpr const char* k_pending_to = "pending-to";
+
+/// Creates CACHE/runs/PID-XXXXXX (mkdtemp) after removing the run folders of dead PIDs (their targets'
+/// failure artifacts, RUN/TARGET/artifacts/, moved first into the folder RUN/TARGET/pending-to names); nothing,
+/// with *error set, if it cannot.
 std::optional<std::filesystem::path> make_run_dir(const std::filesystem::path& cache, std::string* error);
 
 /// Moves file into dir under its own name (rename: atomic, same folder tree). Files are named by their

@@ -27,10 +27,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Seconds between progress lines.
-constexpr double k_progress_every_s = 5;
-/// Seconds past its time limit after which a worker is stopped (libFuzzer overruns by a unit's time).
-constexpr double k_overrun_grace_s = 60;
+/// Seconds past the end of fuzzing after which a worker still running is sent SIGTERM (libFuzzer ends at its
+/// -max_total_time only between two inputs, and counts whole seconds); one still there at the deadline is killed.
+constexpr double k_overrun_grace_s = 1;
 /// Most restarts of one target's workers in a campaign.
 constexpr int k_max_restarts = 50;
 /// Failures within a second of starting after which a target's workers are not restarted: a corpus
@@ -49,10 +48,10 @@ std::optional<std::uint64_t> number_after(const std::string& line, std::string_v
     return any ? std::optional(v) : std::nullopt;
 }
 
-/// Reads what the workers wrote since last time: coverage, corpus size, exec/s.
-void poll_log(TargetRun& r) {
-    std::ifstream in(r.log, std::ios::binary);
-    in.seekg(static_cast<std::streamoff>(r.log_read));
+/// Reads what worker w wrote since last time: coverage, corpus size, exec/s.
+void poll_log(TargetRun& r, std::size_t w) {
+    std::ifstream in(r.logs_of[w], std::ios::binary);
+    in.seekg(static_cast<std::streamoff>(r.log_read[w]));
     std::string line;
     std::streamoff consumed = 0;
     while (std::getline(in, line)) {
@@ -64,13 +63,15 @@ void poll_log(TargetRun& r) {
         if (auto corp = number_after(line, "corp: ")) r.corpus_size = *corp;
         if (auto e = number_after(line, "exec/s: ")) r.exec_s = *e;
     }
-    r.log_read += static_cast<std::size_t>(consumed);
+    r.log_read[w] += static_cast<std::size_t>(consumed);
 }
 
-/// Runs over every worker process of r: the sum of each process's last "#N" (read from the whole log).
-std::uint64_t count_runs(const TargetRun& r) {
+/// Runs over every process of worker w: the sum of each process's count (read from the worker's whole log, the
+/// processes one after another): its final `stat::number_of_executed_units`, else its last "#N". One log per
+/// worker: the lines of workers sharing one would interleave, and a count of one taken for another's restart.
+std::uint64_t count_runs(const TargetRun& r, std::size_t w) {
     std::uint64_t runs = 0, last = 0;
-    std::istringstream in(read_all(r.log));
+    std::istringstream in(read_all(r.logs_of[w]));
     for (std::string line; std::getline(in, line);) {
         if (line.size() > 1 && line[0] == '#' && line[1] >= '0' && line[1] <= '9') {
             const std::uint64_t n = number_after(line, "#").value_or(0);
@@ -85,8 +86,8 @@ std::uint64_t count_runs(const TargetRun& r) {
 
 /// The worker output's last line that says why it stopped: a failure line of the target, a sanitizer's or
 /// libFuzzer's SUMMARY, ERROR or INFO line, else the last line that is not a progress "#N" one.
-std::string last_words(const TargetRun& r) {
-    std::istringstream in(read_all(r.log));
+std::string last_words(const TargetRun& r, std::size_t w) {
+    std::istringstream in(read_all(r.logs_of[w]));
     std::string telling, last;
     for (std::string line; std::getline(in, line);) {
         if (line.starts_with(k_failure_tag) || line.starts_with("SUMMARY:") || line.starts_with("ERROR:") ||
@@ -123,9 +124,12 @@ std::string human(double x) {
 }
 
 double run_workers(Plan& plan, const CampaignOptions& opt) {
-    const auto t0 = Clock::now();
-    const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+    const Budget& budget = plan.budget;
+    const auto elapsed = [&] { return budget.elapsed(); };
+    const double started_at = elapsed();
     const bool by_runs = opt.runs > 0;
+    // A campaign by time fuzzes until the budget's share of fuzzing is spent (budget.hpp); the tail has the rest.
+    const double fuzz_end = budget.fuzz_end_s();
     // start: which start of this target's workers it is (0, 1, ...), so that each gets its own seed.
     const auto start_worker = [&](TargetRun& r, std::size_t w, int start) {
         std::vector<std::string> argv = {r.bin.string()};
@@ -134,7 +138,7 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
         if (by_runs)
             argv.insert(argv.end(), {fmt::format("-runs={}", opt.runs), "-reload=0"});
         else
-            argv.push_back(fmt::format("-max_total_time={}", std::max(1, static_cast<int>(opt.time - elapsed()))));
+            argv.push_back(fmt::format("-max_total_time={}", std::max(1, static_cast<int>(fuzz_end - elapsed()))));
         if (opt.seed > 0) argv.push_back(fmt::format("-seed={}", opt.seed + static_cast<unsigned>(start)));
         argv.insert(argv.end(), {"-timeout=10", "-rss_limit_mb=2048", "-print_final_stats=1",
                                  "-artifact_prefix=" + r.artifacts.string() + "/"});
@@ -143,16 +147,21 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
         argv.insert(argv.end(), opt.libfuzzer_flags.begin(), opt.libfuzzer_flags.end());
         argv.push_back(r.corpus.string());
         for (const auto& s : r.seeds) argv.push_back(s.string());
-        r.pids[w] = spawn(argv, {"RICOCHET_KERNEL=" + plan.kernel_env}, r.log);
+        r.pids[w] = spawn(argv, {"RICOCHET_KERNEL=" + plan.kernel_env}, r.logs_of[w]);
         r.started[w] = Clock::now();
     };
     for (TargetRun& r : plan.runs) {
-        r.pids.assign(static_cast<std::size_t>(r.workers), -1);
-        r.started.assign(static_cast<std::size_t>(r.workers), Clock::now());
-        for (std::size_t w = 0; w < r.pids.size(); ++w) start_worker(r, w, static_cast<int>(w));
+        const auto n = static_cast<std::size_t>(r.workers);
+        r.pids.assign(n, -1);
+        r.started.assign(n, Clock::now());
+        r.ended.assign(n, false);
+        r.log_read.assign(n, 0);
+        r.logs_of.clear();
+        for (std::size_t w = 0; w < n; ++w) r.logs_of.push_back(r.work / fmt::format("worker-{}.log", w));
+        for (std::size_t w = 0; w < n; ++w) start_worker(r, w, static_cast<int>(w));
     }
     double last_print = 0;
-    bool passed_stop = false, killed = false;
+    bool passed_stop = false, killed = false, out_of_time = false;
     double stop_at = 0;
     for (;;) {
         // A SIGINT or SIGTERM (run_campaign holds a StopOnSignal): every worker gets it once and exits
@@ -174,6 +183,16 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                         kill(r.pids[w], SIGKILL);
                     }
         }
+        // The deadline of the whole command: a worker still there (stuck in SIGTERM's handler) is killed.
+        if (!by_runs && !out_of_time && budget.left() <= 0) {
+            out_of_time = true;
+            for (TargetRun& r : plan.runs)
+                for (std::size_t w = 0; w < r.pids.size(); ++w)
+                    if (r.pids[w] > 0) {
+                        fmt::print("  {} worker {} did not end by the time limit: killed\n", r.target, w);
+                        kill(r.pids[w], SIGKILL);
+                    }
+        }
         bool any = false;
         for (TargetRun& r : plan.runs) {
             for (std::size_t w = 0; w < r.pids.size(); ++w) {
@@ -181,20 +200,25 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                 int status = 0;
                 if (waitpid(r.pids[w], &status, WNOHANG) == 0) {
                     any = true;
-                    // A worker that ignores its time limit.
-                    if (!by_runs && elapsed() > opt.time + k_overrun_grace_s) kill(r.pids[w], SIGTERM);
+                    // A worker past its time limit (an input that runs long): SIGTERM ends it through libFuzzer's
+                    // interrupt handler, with its final statistics.
+                    if (!by_runs && !r.ended[w] && elapsed() > fuzz_end + k_overrun_grace_s) {
+                        r.ended[w] = true;
+                        kill(r.pids[w], SIGTERM);
+                    }
                     continue;
                 }
                 r.pids[w] = -1;
-                poll_log(r);
+                poll_log(r, w);
                 const bool clean = WIFEXITED(status) && WEXITSTATUS(status) == 0;
                 if (!clean && std::chrono::duration<double>(Clock::now() - r.started[w]).count() < 1) ++r.quick_crashes;
                 // A worker stops at its first failure; restart it while time is left, unless it keeps failing
                 // at start-up (a corpus input that fails, or a kernel that fails on nearly every input, as the
                 // peers do: more restarts would find the same failures again). A campaign by runs does not restart: each worker
-                // runs its inputs once. A stopped campaign restarts nothing and says nothing: it was asked to.
-                if (app::stop_requested()) continue;
-                const bool time_left = !by_runs && elapsed() < opt.time - 1;
+                // runs its inputs once. A stopped campaign restarts nothing and says nothing: it was asked to; nor does
+                // one whose workers were ended at their time.
+                if (app::stop_requested() || r.ended[w]) continue;
+                const bool time_left = !by_runs && elapsed() < fuzz_end - 1;
                 if (!clean && time_left && r.restarts < k_max_restarts && r.quick_crashes < k_max_quick_crashes) {
                     ++r.restarts;
                     start_worker(r, w, r.workers - 1 + r.restarts);
@@ -217,12 +241,12 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                                       r.restarts);
                 if (!why.empty()) {
                     const std::string line = fmt::format("{} worker {} stopped early at {:.0f} s: {}; its last words: {}", r.target, w,
-                                                         elapsed(), why, last_words(r));
+                                                         elapsed(), why, last_words(r, w));
                     fmt::print("  {}\n", line);
                     r.stops.push_back(line);
                 }
             }
-            poll_log(r);
+            for (std::size_t w = 0; w < r.pids.size(); ++w) poll_log(r, w);
         }
         if (!any) break;
         if (elapsed() - last_print >= k_progress_every_s) {
@@ -236,13 +260,14 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(200));
     }
-    const double wall = elapsed();
+    const double fuzzed = elapsed() - started_at;
     for (TargetRun& r : plan.runs) {
-        r.runs_done = count_runs(r);
-        r.seconds = wall;
+        r.runs_done = 0;
+        for (std::size_t w = 0; w < r.logs_of.size(); ++w) r.runs_done += count_runs(r, w);
+        r.seconds = fuzzed;
         r.corpus_size = count_files(r.corpus);
     }
-    return wall;
+    return fuzzed;
 }
 
 }  // namespace ricochet::fuzz

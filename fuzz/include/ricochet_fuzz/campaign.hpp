@@ -1,5 +1,6 @@
 // `ricochet fuzz`'s campaign: libFuzzer workers over this build's fuzz targets, a working corpus in a
-// cache folder, and each new failure minimized and saved as a scene log (fuzz/README.md).
+// cache folder, and each new failure minimized and saved as a scene log (fuzz/README.md); and `ricochet fuzz
+// convert`, which turns failure artifacts into scene logs on demand.
 #pragma once
 
 #include <array>
@@ -17,8 +18,8 @@ inline constexpr std::array<std::string_view, 5> k_campaign_targets = {"parser",
 struct CampaignOptions {
     std::vector<std::string> targets;  ///< the targets to fuzz; empty: every target this build has
     std::string kernel = "robust";     ///< the kernel under test (RICOCHET_KERNEL of every worker)
-    double time = 60;                  ///< seconds of fuzzing; unused when runs > 0
-    std::uint64_t runs = 0;            ///< inputs per worker instead of a time limit (0: fuzz for time)
+    double time = 60;                  ///< seconds the whole command takes, fuzzing and its tail; unused when runs > 0
+    std::uint64_t runs = 0;            ///< inputs per worker instead of a time limit (0: a campaign by time)
     unsigned seed = 0;                 ///< libFuzzer's -seed of worker w is seed + w; 0: a random one each
     int jobs = 0;                      ///< worker processes in all, shared out among the targets (0: one each)
     std::string bin_dir;               ///< folder of the fuzz_* binaries
@@ -30,7 +31,24 @@ struct CampaignOptions {
 };
 
 /// Runs a campaign, printing progress and a summary on stdout. Returns 0 if nothing new failed, 1 if
-/// something did, 2 on bad usage or missing binaries.
+/// something did (or a failure was left unconverted), 2 on bad usage or missing binaries, 128 + the signal if
+/// stopped.
 int run_campaign(const CampaignOptions& options);
+
+/// What `ricochet fuzz convert` converts and where; an empty string takes its default.
+struct ConvertOptions {
+    std::vector<std::string> artifacts;  ///< failure artifacts (libFuzzer's crash-, timeout-, oom-, leak- files, or any input)
+    std::string target;                  ///< their target; empty: read from each artifact's place in a cache
+    std::string kernel;                  ///< the kernel; empty: read from each artifact's place in a cache, else robust
+    std::string bin_dir;                 ///< folder of the fuzz_* binaries
+    std::string cache_dir;               ///< where the conversion works (its own folder there, removed at the end)
+    std::string replay_dir;              ///< where the logs are saved
+};
+
+/// Converts each artifact as a campaign converts its failures (minimized, run once more to write its log,
+/// reduced, saved once), printing what it did. Returns 0 if every artifact was converted (a log saved, or its
+/// case found known), 1 if one did not fail when run again or its log could not be saved, 2 on bad usage,
+/// 128 + the signal if stopped.
+int run_convert(const ConvertOptions& options);
 
 }  // namespace ricochet::fuzz
