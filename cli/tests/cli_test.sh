@@ -35,10 +35,10 @@ first_line() { [ "$(head -n 1 "$dir/$1")" = "$2" ] || fail "std$1's first line i
 kernels='lecture-float, lecture-double, robust, exact'
 for k in ${RICOCHET_PEER_KERNELS:-}; do kernels="$kernels, $k"; done
 
-# A small valid log: 10 frames × 2 balls × (1 wall + 0 shapes + 1) = 40 units of work.
+# A small valid log: 10 frames × 2 balls × (1 wall + 0 shapes + 1) + 64 × 1 wall (its index) = 104 units of work.
 log=$dir/tiny.scene
 printf 'ricochet 1\nframes 10\nwall 0 -5 0 5\nball -1 0 0.5 0\nball -3 1 0.25 0\ncheck no-tunnel\n' >"$log"
-# A small valid log that would run for hours: 10^7 frames × 200 balls × (4 walls + 1) = 10^10.
+# A small valid log that would run for hours: 10^7 frames × 200 balls × (4 walls + 1) + 64 × 4 ≈ 10^10.
 big=$dir/big.scene
 { printf 'ricochet 1\nkernel exact\nframes 10000000\nwall 0 0 0 100\nwall 0 100 100 100\nwall 100 100 100 0\nwall 100 0 0 0\n'
   i=0; while [ $i -lt 200 ]; do printf 'ball %d.5 50 0.25 0.125\n' $((i % 90 + 5)); i=$((i + 1)); done; } >"$big"
@@ -222,14 +222,14 @@ case "$case" in
                      first_line err "ricochet: error: --time: '0' is out of range (expected a number of seconds from 1 to 604800)" ;;
   fuzz-time-absurd)  run 2 fuzz --time 1e300
                      first_line err "ricochet: error: --time: '1e300' is out of range (expected a number of seconds from 1 to 604800)" ;;
-  work-run)          run 2 run "$log" --max-work 39
-                     first_line err "ricochet: error: $log: too much work: 10 frames × 2 balls × (1 walls + 0 circles + 0 rects + 0 bumpers + 1) = 40 is over the bound of 39; raise it with --max-work N (0: no bound)"
+  work-run)          run 2 run "$log" --max-work 103
+                     first_line err "ricochet: error: $log: too much work: 10 frames × 2 balls × (1 walls + 0 circles + 0 rects + 0 bumpers + 1) + 64 × 1 walls (the wall index) = 104 is over the bound of 103; raise it with --max-work N (0: no bound)"
                      [ ! -s "$dir/out" ] || fail "run printed events before refusing"
-                     run 0 run "$log" --max-work 40; has out "state 10 1 -0.5 1 0.25 0" ;;
-  work-replay)       run 2 replay "$log" --max-work 39; has out "FAIL $log: not run (over --max-work)"
-                     first_line err "ricochet: error: $log: too much work: 10 frames × 2 balls × (1 walls + 0 circles + 0 rects + 0 bumpers + 1) = 40 is over the bound of 39; raise it with --max-work N (0: no bound)"
-                     run 0 replay "$log" --max-work 40 ;;
-  work-record)       cp "$log" "$dir/r.scene"; run 2 record "$dir/r.scene" --max-work 39
+                     run 0 run "$log" --max-work 104; has out "state 10 1 -0.5 1 0.25 0" ;;
+  work-replay)       run 2 replay "$log" --max-work 103; has out "FAIL $log: not run (over --max-work)"
+                     first_line err "ricochet: error: $log: too much work: 10 frames × 2 balls × (1 walls + 0 circles + 0 rects + 0 bumpers + 1) + 64 × 1 walls (the wall index) = 104 is over the bound of 103; raise it with --max-work N (0: no bound)"
+                     run 0 replay "$log" --max-work 104 ;;
+  work-record)       cp "$log" "$dir/r.scene"; run 2 record "$dir/r.scene" --max-work 103
                      cmp -s "$log" "$dir/r.scene" || fail "record changed the log"
                      grep -q "too much work" "$dir/err" || fail "no work error" ;;
   record-lowered-frames) cp "$log" "$dir/r.scene"; run 0 record "$dir/r.scene"
@@ -255,11 +255,17 @@ case "$case" in
                      [ ! -e "$dir/.r.scene.tmp.2147483647.AbC123" ] || fail "the stale temporary file is left"
                      [ -e "$dir/.r.scene.tmp.$$.AbC123" ] || fail "a live writer's temporary file was removed"
                      [ -e "$dir/.q.scene.tmp.2147483647.AbC123" ] || fail "another log's temporary file was removed" ;;
-  work-render)       run 2 render "$log" -o "$dir/x.svg" --max-work 39; grep -q "too much work" "$dir/err" || fail "no work error"
+  work-render)       run 2 render "$log" -o "$dir/x.svg" --max-work 103; grep -q "too much work" "$dir/err" || fail "no work error"
                      [ ! -e "$dir/x.svg" ] || fail "render wrote the picture" ;;
   work-default)      run 2 replay "$big"
-                     first_line err "ricochet: error: $big: too much work: 10000000 frames × 200 balls × (4 walls + 0 circles + 0 rects + 0 bumpers + 1) = 10000000000 is over the bound of 100000000; raise it with --max-work N (0: no bound)" ;;
-  work-frames-flag)  run 2 run "$log" --frames 5 --max-work 19; grep -q "= 20 is over the bound of 19" "$dir/err" || fail "work not from --frames" ;;
+                     first_line err "ricochet: error: $big: too much work: 10000000 frames × 200 balls × (4 walls + 0 circles + 0 rects + 0 bumpers + 1) + 64 × 4 walls (the wall index) = 10000000256 is over the bound of 100000000; raise it with --max-work N (0: no bound)" ;;
+  # The wall index is built before frame 1: 100 copies of one wall and `frames 0` are 64 × 100 = 6400 units.
+  work-index)        { printf 'ricochet 1\nframes 0\nball 0 0 1 0\n'; i=0; while [ $i -lt 100 ]; do
+                         printf 'wall 0 0 1 1\n'; i=$((i + 1)); done; } >"$dir/walls.scene"
+                     run 2 run "$dir/walls.scene" --max-work 6399
+                     first_line err "ricochet: error: $dir/walls.scene: too much work: 0 frames × 1 balls × (100 walls + 0 circles + 0 rects + 0 bumpers + 1) + 64 × 100 walls (the wall index) = 6400 is over the bound of 6399; raise it with --max-work N (0: no bound)"
+                     run 0 run "$dir/walls.scene" --max-work 6400 ;;
+  work-frames-flag)  run 2 run "$log" --frames 5 --max-work 83; grep -q "= 84 is over the bound of 83" "$dir/err" || fail "work not from --frames" ;;
   # render: its view, its bounds on what is drawn, and the pinball table's tunnel marked where it crossed.
   render-view-bad)   run 2 render "$log" -o "$dir/x.svg" --view some
                      first_line err "ricochet: error: --view: 'some' is not a view (expected failure or all)"
