@@ -4,6 +4,7 @@
 #
 #   cli/dev.sh check   build, then `ricochet check` (replays, properties, a short fuzz campaign)
 #   cli/dev.sh test    build, then every test (ctest: unit, replay, property, fuzz)
+#   cli/dev.sh deps    only install what is missing (CI's first step, before its other builds)
 #   cli/dev.sh coverage  the `coverage` preset into build-coverage/: every test under clang's source-based
 #                      coverage, then the llvm-cov report of core/ and harness/ (HTML in build-coverage/coverage-html)
 #
@@ -13,8 +14,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 job=${1:-}
 case "$job" in
-  check|test|coverage) ;;
-  *) echo "usage: cli/dev.sh check|test|coverage" >&2; exit 2 ;;
+  check|test|coverage|deps) ;;
+  *) echo "usage: cli/dev.sh check|test|coverage|deps" >&2; exit 2 ;;
 esac
 build=${BUILD_DIR:-build}
 jobs=${JOBS:-$(nproc)}
@@ -74,6 +75,9 @@ if [ "${RICOCHET_NO_APT:-0}" != 1 ]; then
   fi
 fi
 
+if [ "$job" = deps ]; then
+  exit 0
+fi
 if [ "$job" = coverage ]; then
   coverage
 fi
