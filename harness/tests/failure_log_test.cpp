@@ -105,7 +105,8 @@ TEST(FailureLog, ExpectStatesAreCappedAsRecordCapsThem) {
         const Ball copy = scene.balls[scene.balls.size() % 4];
         scene.balls.push_back(copy);
     }
-    const FailureLog log = make_failure_log(scene, KernelId::robust, "p", CheckFailure{Check::speed, 40, 9, "x", std::nullopt});
+    const FailureLog log =
+        make_failure_log(scene, KernelId::robust, "p", CheckFailure{Check::speed, 40, 9, "x", std::nullopt, std::nullopt});
     std::set<std::int64_t> frames;
     std::set<std::uint32_t> balls;
     for (const ExpectState& e : log.scene.expect_states) frames.insert(e.frame), balls.insert(e.ball);
@@ -115,7 +116,8 @@ TEST(FailureLog, ExpectStatesAreCappedAsRecordCapsThem) {
     EXPECT_EQ(log.scene.expect_states.size(), 64u);
     EXPECT_EQ(log.scene.frames, 40);
     // A failure at frame 0 (a static test) pins no state.
-    const FailureLog at0 = make_failure_log(scene, KernelId::robust, "p", CheckFailure{Check::boundary, 0, 0, "x", std::nullopt});
+    const FailureLog at0 =
+        make_failure_log(scene, KernelId::robust, "p", CheckFailure{Check::boundary, 0, 0, "x", std::nullopt, std::nullopt});
     EXPECT_TRUE(at0.scene.expect_states.empty());
     EXPECT_EQ(at0.scene.frames, 0);
 }

@@ -17,7 +17,8 @@
 
 namespace ricochet::mutant {
 
-/// The registered kernel "mutant": the functions of Mutant::ops (its speed bound is robust's).
+/// The registered kernel "mutant": the functions of Mutant::ops (its speed bound is robust's), discs and
+/// bumpers included.
 struct Mutant {
     static inline KernelOps ops = kernel_ops(KernelId::robust);
     static Side classify(Vec2 p, const Wall& w) { return ops.classify(p, w); }
@@ -30,6 +31,11 @@ struct Mutant {
     static FrameStatus step_ball(Ball& ball, BallMemory& memory, std::span<const Wall> walls,
                                  std::vector<HitEvent>& hits, StepScratch& scratch, const WallIndex* index) {
         return ops.step_ball(ball, memory, walls, hits, scratch, index);
+    }
+    static constexpr bool k_steps_bumpers = true;
+    static FrameStatus step_disc(Ball& ball, BallMemory& memory, const Obstacles& obstacles,
+                                 std::vector<HitEvent>& hits, StepScratch& scratch) {
+        return ops.step_disc(ball, memory, obstacles, hits, scratch);
     }
 };
 

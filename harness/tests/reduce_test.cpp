@@ -5,7 +5,11 @@
 // at its `found` check, frame and ball.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <variant>
 #include <vector>
@@ -196,6 +200,89 @@ TEST(Reduce, AnExpectedFailureStaysExpectedUnderAnyKernel) {
     ASSERT_TRUE(expected.log.scene.expect_failure);
     EXPECT_EQ(*expected.log.scene.expect_failure, (ExpectFailure{Check::oracle, 0}));
     expect_reproduces(expected);
+}
+
+// --- What made the failure: a disc stays a disc, a bumper a bumper
+
+/// Steps every ball as if nothing were in its way: a point's and a disc's paths go through everything.
+FrameStatus ghost_point(STEP_PARAMS) {
+    (void)walls, (void)index;
+    return mutant::robust().step_ball(b, mem, {}, hits, scratch, nullptr);
+}
+FrameStatus ghost_disc(Ball& b, BallMemory& mem, const Obstacles&, std::vector<HitEvent>& hits, StepScratch& scratch) {
+    return mutant::robust().step_disc(b, mem, Obstacles{}, hits, scratch);
+}
+
+TEST(Reduce, ADiscFailureStaysADiscWhereAPointWouldFailToo) {
+    // A disc of radius 0.375 goes through the wall at x = 0 in frame 1. A point ball there tunnels too, and 0 is
+    // the simplest radius: only the culprit rule keeps R > 0.
+    mutant::Mutation m;
+    m.ops.step_ball = &ghost_point;
+    m.ops.step_disc = &ghost_disc;
+    const Scene s = parse_ok("ricochet 1\nframes 1\nwall 0 -5 0 5\nball -1.75 0.3125 3 0 0.375\ncheck no-tunnel\n");
+    ReduceOptions options;
+    options.kernel = mutant::id();
+    Scene point = s;
+    point.balls[0].r = 0.0;
+    ASSERT_TRUE(run_checked(point, mutant::id(), 1, point.checks).failure) << "the point would fail as well";
+    const ReducedLog r = reduced(s, options);
+    ASSERT_EQ(r.log.scene.balls.size(), 1u) << r.log.text();
+    EXPECT_GT(r.log.scene.balls[0].r, 0.0) << r.log.text();
+    EXPECT_EQ(r.log.scene.found->check, Check::no_tunnel);
+    expect_reproduces(r);
+}
+
+TEST(Reduce, ACandidateFailingForAnotherKindOfBallOrObstacleIsAnotherFailure) {
+    using detail::reduce::Culprit;
+    using detail::reduce::judge;
+    using detail::reduce::Target;
+    // Under lecture-double, a disc of radius 1 reaches into a bumper (replays/discs/lecture/
+    // double-bumper-penetration.scene) and one of radius 5 into a wall's cap (double-cap-penetration.scene).
+    const Scene bumper = parse_ok("ricochet 1\nkernel lecture-double\nframes 1\nball 13 18 1 -3 1\nbumper 14 14 1\n"
+                                  "check penetration\n");
+    const Scene cap = parse_ok("ricochet 1\nkernel lecture-double\nframes 1\nwall 0 14 0 18\nball 1 9 0 1 5\n"
+                               "check penetration\n");
+    const Target into_bumper{Check::penetration, {Check::penetration}, Culprit{true, true}};
+    const Target into_wall{Check::penetration, {Check::penetration}, Culprit{true, false}};
+    EXPECT_TRUE(judge(bumper, KernelId::lecture_double, into_bumper));
+    EXPECT_FALSE(judge(bumper, KernelId::lecture_double, into_wall));
+    EXPECT_TRUE(judge(cap, KernelId::lecture_double, into_wall));
+    EXPECT_FALSE(judge(cap, KernelId::lecture_double, into_bumper));
+    // The point ball of the same check is another culprit; without one (a step error's target) any failure
+    // of the check counts.
+    const Target point_into_wall{Check::penetration, {Check::penetration}, Culprit{false, false}};
+    EXPECT_FALSE(judge(cap, KernelId::lecture_double, point_into_wall));
+    EXPECT_TRUE(judge(cap, KernelId::lecture_double, Target{Check::penetration, {Check::penetration}, std::nullopt}));
+}
+
+TEST(Reduce, TheLectureKernelsDiscFailuresReduceToDiscFailuresThatReplay) {
+    // Every disc failure the lecture kernels leave in the corpus, its expect lines dropped: reduced, it fails the
+    // same check for a disc, against the same kind of obstacle, and replays.
+    std::vector<std::filesystem::path> logs;
+    for (const auto& e : std::filesystem::directory_iterator(RICOCHET_DISC_LECTURE_DIR))
+        if (e.path().extension() == ".scene") logs.push_back(e.path());
+    std::sort(logs.begin(), logs.end());
+    ASSERT_GE(logs.size(), 6u);
+    for (const std::filesystem::path& path : logs) {
+        SCOPED_TRACE(path.string());
+        std::ifstream in(path);
+        std::stringstream text;
+        text << in.rdbuf();
+        Scene log = parse_ok(text.str());
+        log.expect_failure.reset();
+        log.expect_hash.reset();
+        log.expect_states.clear();
+        const CheckedRun run = run_checked(log, log.kernel, log.frames, log.checks);
+        ASSERT_TRUE(run.failure);
+        const ReducedLog r = reduced(log);
+        ASSERT_TRUE(r.log.scene.found) << r.log.text();
+        EXPECT_EQ(r.log.scene.found->check, run.failure->check) << r.log.text();
+        const CheckedRun again = run_checked(r.log.scene, r.log.scene.kernel, r.log.scene.frames, r.log.scene.checks);
+        ASSERT_TRUE(again.failure) << r.log.text();
+        using detail::reduce::culprit_of;
+        EXPECT_EQ(culprit_of(r.log.scene, *again.failure), culprit_of(log, *run.failure)) << r.log.text();
+        expect_reproduces(r);
+    }
 }
 
 // --- Refusals and step errors

@@ -75,7 +75,7 @@ TEST(ReplayMessages, AFoundNamingAnotherCheckIsSaidAsADrift) {
 TEST(FailureLogVerdict, ReproducesOnlyWhenCheckFrameAndBallAllAgree) {
     FailureLog log;
     EXPECT_FALSE(log.reproduces());  // nothing replayed, nothing found
-    log.replayed = CheckFailure{Check::speed, 4, 1, "m", std::nullopt};
+    log.replayed = CheckFailure{Check::speed, 4, 1, "m", std::nullopt, std::nullopt};
     EXPECT_FALSE(log.reproduces());  // replayed, but no found
     log.scene.found = Found{Check::speed, 4, 1};
     EXPECT_TRUE(log.reproduces());

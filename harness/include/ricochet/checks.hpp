@@ -171,6 +171,12 @@ struct FailurePiece {
     std::uint32_t wall = 0;  ///< the wall it went through
 };
 
+/// What a disc's failing piece reached into (`penetration`): a wall or a bumper, by its index in the scene.
+struct FailureObstacle {
+    bool bumper = false;      ///< a bumper, else a wall
+    std::uint32_t index = 0;  ///< its index among the scene's walls or bumpers
+};
+
 /// The first broken invariant of a run.
 struct CheckFailure {
     Check check = Check::no_tunnel;  ///< the invariant that broke
@@ -178,6 +184,7 @@ struct CheckFailure {
     std::uint32_t ball = 0;          ///< the ball it broke for
     std::string message;  ///< expected against actual, for people
     std::optional<FailurePiece> piece;  ///< no-tunnel: the piece and its wall, for pictures (message unchanged)
+    std::optional<FailureObstacle> against;  ///< penetration: what the piece reached into (message unchanged)
     /// "CHECK broke at frame F ball I: MESSAGE".
     std::string str() const;
 };

@@ -55,7 +55,7 @@ std::unique_ptr<FrameCheck> make_plan(const Scene& scene, KernelId kernel, const
 
 /// A failure of check c at frame f for ball.
 inline CheckFailure failure(Check c, std::int64_t f, std::uint32_t ball, std::string message) {
-    return CheckFailure{c, f, ball, std::move(message), std::nullopt};
+    return CheckFailure{c, f, ball, std::move(message), std::nullopt, std::nullopt};
 }
 
 /// Compares two frames' events: bit for bit (bits) or by value. Describes the first difference as `who`

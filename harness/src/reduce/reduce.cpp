@@ -22,9 +22,9 @@ std::variant<ReducedLog, ReduceRefusal> reduce_log(const Scene& log, const Reduc
     const CheckedRun run = run_to_first_failure(log, kernel, log.checks);
     Target target;
     if (run.failure) {
-        target = {run.failure->check, {run.failure->check}};
+        target = {run.failure->check, {run.failure->check}, culprit_of(log, *run.failure)};
     } else if (run.error) {
-        target = {std::nullopt, log.checks};
+        target = {std::nullopt, log.checks, std::nullopt};
     } else if (log.checks.empty()) {
         return ReduceRefusal{fmt::format("the log names no check and its run under {} ends at frame {} without an "
                                          "error: nothing to reduce",

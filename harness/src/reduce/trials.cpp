@@ -16,6 +16,12 @@ constexpr std::int64_t k_grid_from_ball_frames = 16;
 
 }  // namespace
 
+Culprit culprit_of(const Scene& scene, const CheckFailure& f) {
+    // Degenerate: a static shape's failure (oracle at frame 0) names ball 0 of a scene that may have none.
+    const bool disc = f.ball < scene.balls.size() && scene.balls[f.ball].r > 0.0;
+    return {disc, f.against ? std::optional<bool>(f.against->bumper) : std::nullopt};
+}
+
 CheckedRun run_to_first_failure(const Scene& scene, KernelId kernel, std::span<const Check> checks,
                                 const std::function<void(std::span<const Event>)>& on_frame) {
     CheckOptions options;
@@ -36,6 +42,8 @@ std::optional<Failing> judge(const Scene& scene, KernelId kernel, const Target& 
     if (target.check) {
         // Only C runs, so a failure is C's; a run that stops at an error before it fails otherwise.
         if (!run.failure || run.failure->check != *target.check) return std::nullopt;
+        // The same check, failing for another kind of ball or obstacle, is another failure.
+        if (target.culprit && culprit_of(scene, *run.failure) != *target.culprit) return std::nullopt;
         out.failure = std::move(run.failure);
     } else {
         if (run.failure || !run.error) return std::nullopt;

@@ -14,10 +14,24 @@
 
 namespace ricochet::detail::reduce {
 
-/// The failure a reduction keeps: check C (run alone), or a step error with every check of the log held.
+/// What made a check's failure, which every smaller scene must keep: the failing ball a disc (R > 0) or a
+/// point, and for `penetration` whether the piece reached into a bumper or a wall. A disc failure that a
+/// point ball would also show is still a disc failure: the reduced log keeps the disc.
+struct Culprit {
+    bool disc = false;            ///< the failing ball has a radius
+    std::optional<bool> bumper;   ///< penetration: into a bumper (true) or a wall (false)
+    friend bool operator==(const Culprit&, const Culprit&) = default;
+};
+
+/// The culprit of failure f in scene.
+Culprit culprit_of(const Scene& scene, const CheckFailure& f);
+
+/// The failure a reduction keeps: check C (run alone) with its culprit, or a step error with every check of
+/// the log held.
 struct Target {
     std::optional<Check> check;  ///< the check that must break; nothing: a step error must stop the run
     std::vector<Check> checks;   ///< the checks each try runs: {C}, or the log's for a step error
+    std::optional<Culprit> culprit;  ///< with check: what made C's failure
 };
 
 /// A scene that fails the target, and what its run showed.
