@@ -3,6 +3,7 @@
 #include "ricochet_fuzz/campaign.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -10,6 +11,7 @@
 
 #include "cache.hpp"
 #include "failure.hpp"
+#include "fixed_addresses.hpp"
 #include "plan.hpp"
 #include "ricochet_app/json.hpp"
 #include "ricochet_app/json_stdout.hpp"
@@ -135,6 +137,15 @@ int run_campaign(const CampaignOptions& opt) {
                plan->replay_dir.string());
     // Seen as it starts, also when stdout is a file (a caller waiting for the campaign to be under way).
     std::fflush(stdout);
+    // --runs with --seed is reproducible: every worker, minimization and merge at fixed addresses.
+    std::optional<FixedAddresses> fixed;
+    if (opt.runs > 0 && opt.seed > 0) {
+        fixed.emplace();
+        if (!fixed->error().empty())
+            fmt::print(stderr, "ricochet fuzz: warning: address randomization stays on ({}): coverage, and so the inputs "
+                               "run, may differ from one run of this campaign to the next\n",
+                       fixed->error());
+    }
     const double fuzzed = run_workers(*plan, opt);
     // The tail: each target's failures converted (those earlier campaigns left first), then the corpora merged.
     budget.say("", app::stop_requested() ? "fuzzing stopped; converting nothing more, merging nothing"

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "failure.hpp"
+#include "fixed_addresses.hpp"
 #include "plan.hpp"
 #include "ricochet_app/stop_signal.hpp"
 #include "ricochet_fuzz/campaign.hpp"
@@ -37,6 +38,8 @@ std::pair<std::string, std::string> place_of(const fs::path& artifact) {
 
 int run_convert(const ConvertOptions& opt) {
     const app::StopOnSignal stop_on_signal;
+    // Minimization follows addresses too (fixed_addresses.hpp): at fixed ones, the same artifact gives the same log.
+    const FixedAddresses fixed;
     // Every artifact is checked, and its target and kernel known, before anything is converted.
     std::map<std::pair<std::string, std::string>, std::vector<fs::path>> groups;
     for (const std::string& a : opt.artifacts) {
