@@ -266,9 +266,10 @@ void measure(const Config& cfg, const std::string& sweep, int n, std::size_t bal
                 checked.balls.resize(cb);
                 const Check checks[] = {Check::no_tunnel, Check::penetration};
                 long long hits = 0;
-                CheckOptions options{.keep_events = false};
-                options.on_frame = [&](std::span<const Event> events) {
-                    for (const Event& e : events) hits += e.kind == Event::Kind::hit || e.kind == Event::Kind::bump;
+                CheckOptions options;
+                options.keep_events = false;
+                options.on_frame = [&](std::span<const Event> frame) {
+                    for (const Event& e : frame) hits += e.kind == Event::Kind::hit || e.kind == Event::Kind::bump;
                 };
                 const CheckedRun run = run_checked(checked, KernelId::robust, cfg.check_frames, checks, options);
                 r.tunnels = run.failure || run.error ? 1 : 0;

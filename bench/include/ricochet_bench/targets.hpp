@@ -17,14 +17,14 @@ namespace ricochet::bench {
 
 /// One target and where this run stands on it.
 struct Verdict {
-    std::string workload;  ///< what is measured: "sweep, uniform"
-    std::string robust;    ///< robust's figure as measured, for people: "21.8 ns"
-    std::string ratio;     ///< robust ÷ lecture-double in the same run, for people ("–" where none)
-    double value = NAN;    ///< the number the target bounds; NaN: not measured in this run
-    double limit = 0.0;    ///< the bound
-    bool at_least = false; ///< the target is value ≥ limit (a speed-up); else value ≤ limit (a time or a ratio)
-    std::string target;    ///< the bound, for people: "≤ 1.2×"
-    std::string peers;     ///< the peers' figures in the same run ("–" where none)
+    std::string workload{};  ///< what is measured: "sweep, uniform"
+    std::string robust{};    ///< robust's figure as measured, for people: "21.8 ns"
+    std::string ratio{};     ///< robust ÷ lecture-double in the same run, for people ("–" where none)
+    double value = NAN;      ///< the number the target bounds; NaN: not measured in this run
+    double limit = 0.0;      ///< the bound
+    bool at_least = false;   ///< the target is value ≥ limit (a speed-up); else value ≤ limit (a time or a ratio)
+    std::string target{};    ///< the bound, for people: "≤ 1.2×"
+    std::string peers{};     ///< the peers' figures in the same run ("–" where none)
 };
 
 /// True if v's value is measured and within its bound (the bound itself counts as met).

@@ -11,6 +11,13 @@
 #include "ricochet/line.hpp"
 #include "ricochet/predicates.hpp"
 
+// A decision answers std::optional<Answer> (nothing: undecided in this frame), Answer itself an optional contact.
+// GCC 12 at -O2 takes the copy of an empty Answer's payload into the outer optional for a read of uninitialized
+// memory (GCC bug 80635, 35 warnings in this file); the payload is never read while empty.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
 namespace ricochet::disc {
 namespace {
 
