@@ -24,8 +24,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
+#include "base/bignum.hpp"
 #include "kernels/candidates.hpp"
 #include "kernels/disc/contact.hpp"
 #include "ricochet/step_trace.hpp"
@@ -87,8 +89,43 @@ bool piece_allowed(Vec2 q, Vec2 x, double R, const Obstacles& obstacles, StepScr
 /// How many doublings walk_back tries before x's own neighbours. A piece that meets the capsule at a grazing angle
 /// gains almost no distance from it along the way back, and whether a rounded point on it is clear is a matter of
 /// its rounding: before the walk goes past 16 ulps, the eight doubles next to x (one ulp in x, in y, or both) are
-/// tried, in a fixed order, and the first allowed kept.
+/// tried, and the best allowed one kept (nearest_allowed_neighbour).
 constexpr int k_walk_before_neighbours = 4;
+
+/// Of the eight doubles next to x, the one the piece from q may end at that lies nearest the leg's line q + s·d,
+/// then furthest along it: |(c − q) × d| smallest, then (c − q)·d largest, both exactly (rationals: the keys of
+/// neighbours differ by products of ulps). A mirror or a quarter turn of the scene maps the keys to the same
+/// values, so the choice maps to the choice (the `symmetry` check); two allowed neighbours with equal keys are
+/// mirror images across the leg's line (a leg along an axis or a diagonal), a choice no rule can make
+/// symmetrically: then none is taken and the walk goes on.
+std::optional<Vec2> nearest_allowed_neighbour(Vec2 q, Vec2 x, Vec2 d, double R, const Obstacles& obstacles,
+                                              StepScratch& scratch) {
+    using bignum::Rational;
+    const Rational qx = bignum::rational(q.x), qy = bignum::rational(q.y);
+    const Rational dx = bignum::rational(d.x), dy = bignum::rational(d.y);
+    std::optional<Vec2> best;
+    Rational best_across, best_along;
+    bool tied = false;
+    for (const double sx : {-1.0, 0.0, 1.0})
+        for (const double sy : {-1.0, 0.0, 1.0}) {
+            const Vec2 c{sx == 0.0 ? x.x : std::nextafter(x.x, sx * HUGE_VAL),
+                         sy == 0.0 ? x.y : std::nextafter(x.y, sy * HUGE_VAL)};
+            if (c == x || !std::isfinite(c.x) || !std::isfinite(c.y) || !piece_allowed(q, c, R, obstacles, scratch))
+                continue;
+            const Rational ux = bignum::rational(c.x) - qx, uy = bignum::rational(c.y) - qy;
+            // |(c − q) × d|, compared by its square.
+            const Rational cross = ux * dy - uy * dx, across = cross * cross, along = ux * dx + uy * dy;
+            if (!best || across < best_across || (across == best_across && along > best_along)) {
+                best = c;
+                best_across = across;
+                best_along = along;
+                tied = false;
+            } else if (across == best_across && along == best_along) {
+                tied = true;
+            }
+        }
+    return tied ? std::nullopt : best;
+}
 
 /// x, or the first point on the way back towards q whose piece from q is allowed (q itself at worst): the walk
 /// of path.hpp's make_safe, 1, 2, 4, … ulps of the piece's largest coordinate, then half the piece, then q.
@@ -100,13 +137,7 @@ Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles, StepScratch
     int step = 0;
     for (double g = std::max(m * 0x1p-52 / d_inf, 0x1p-60); g < 0.5; g *= 2.0, ++step) {
         if (step == k_walk_before_neighbours)
-            for (const double dx : {0.0, -1.0, 1.0})
-                for (const double dy : {0.0, -1.0, 1.0}) {
-                    const Vec2 c{dx == 0.0 ? x.x : std::nextafter(x.x, dx * HUGE_VAL),
-                                 dy == 0.0 ? x.y : std::nextafter(x.y, dy * HUGE_VAL)};
-                    if (c != x && std::isfinite(c.x) && std::isfinite(c.y) && piece_allowed(q, c, R, obstacles, scratch))
-                        return c;
-                }
+            if (const auto c = nearest_allowed_neighbour(q, x, d, R, obstacles, scratch)) return *c;
         const Vec2 c = q + (1.0 - g) * d;
         if (c != x && piece_allowed(q, c, R, obstacles, scratch)) return c;
     }
