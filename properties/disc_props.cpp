@@ -17,6 +17,7 @@
 #include "ricochet/bits.hpp"
 #include "ricochet/checks.hpp"
 #include "ricochet/scene_log_format.hpp"
+#include "ricochet/truth.hpp"
 
 namespace ricochet::props {
 namespace {
@@ -191,7 +192,7 @@ std::optional<Failure> symmetric(KernelId k, const Scene& s) {
         const Run other = run(transformed(s, t), k);
         if (base.error || other.error) {
             if (base.error != other.error)
-                return fail(Check::symmetry, fmt::format("{}, the run {} the accepted range, the scene's {}", name(t),
+                return fail(t == Transform::swap_ends ? Check::swap : Check::symmetry, fmt::format("{}, the run {} the accepted range, the scene's {}", name(t),
                                                          other.error ? "leaves" : "stays in", base.error ? "leaves it" : "does not"));
             continue;
         }
@@ -207,8 +208,9 @@ std::optional<Failure> symmetric(KernelId k, const Scene& s) {
                 e.pos = map(t, e.pos);
                 e.vel = map(t, e.vel);
                 const bool same = i < events.size() && i < m && e == it->second[i];
+                // The walls' direction is the `swap` check's image, the maps and the balls' order `symmetry`'s.
                 if (!same)
-                    return fail(Check::symmetry, fmt::format("{}: ball {}'s event {} should be `{}`, is `{}`", name(t), ball, i,
+                    return fail(t == Transform::swap_ends ? Check::swap : Check::symmetry, fmt::format("{}: ball {}'s event {} should be `{}`, is `{}`", name(t), ball, i,
                                                              i < events.size() ? str(e) : std::string("none"),
                                                              i < m ? str(it->second[i]) : std::string("none")));
             }
@@ -372,6 +374,46 @@ TEST_P(Discs, BumperNoTunnel) {
     RICOCHET_SKIP_UNLESS_DISCS(GetParam(), true);
     run_property({"BumperNoTunnel", Check::penetration, gen::bumper_scene(8, true),
                   checked({Check::no_escape, Check::no_tunnel, Check::penetration, Check::speed}, disc_tags), 1000},
+                 GetParam());
+}
+
+/// The checks read for discs: every contact decision and first contact is the exact one (oracle); a scene mirrored,
+/// turned, with its balls reversed or its walls walked the other way runs as the image of the run (symmetry, swap);
+/// moved by an exact offset it meets the same obstacles first (translation); a disc that starts touching an
+/// obstacle and moves closer meets it at once (boundary); a disc bounced off a face stays on its side until its
+/// next contact (bounce-side). Discs starting exactly touching a wall's face, a cap or a bumper, and every disc
+/// scene.
+/// disc_tags, and how each ball starts against the obstacles: exactly touching one (decided exactly), moving closer,
+/// along or away.
+void touch_tags(const Scene& s) {
+    disc_tags(s);
+    for (const Ball& b : s.balls) {
+        const double R = b.r > 0 ? b.r : 0.0;
+        const Vec2 be = b.pos + b.vel;
+        const auto approach = [](int sign) { return sign < 0 ? "closer" : sign == 0 ? "along or not at all" : "away"; };
+        for (const Wall& w : s.walls)
+            if (R > 0 && truth::wall_reach_side(b.pos, w, R) == 0)
+                tag(fmt::format("a disc starting exactly touching a wall, moving {}",
+                                approach(truth::wall_approach_sign(b.pos, be, w))));
+        for (const Bumper& u : s.bumpers)
+            if (truth::circle_reach_side(b.pos, u.c, R, u.r) == 0)
+                tag(fmt::format("a ball starting exactly touching a bumper, moving {}",
+                                approach(truth::circle_approach_sign(b.pos, be, u.c))));
+    }
+}
+
+TEST_P(Discs, DiscEveryCheck) {
+    RICOCHET_SKIP_UNLESS_DISCS(GetParam(), false);
+    const bool bumpers = !disc_refusal(GetParam(), true);
+    run_property({"DiscEveryCheck", Check::boundary,
+                  rc::gen::weightedOneOf<Scene>({{2, gen::touching_scene(4)}, {1, gen::disc_scene(4, bumpers)}}),
+                  [bumpers](KernelId k, const Scene& s) -> std::optional<Failure> {
+                      if (!bumpers && !s.bumpers.empty()) return std::nullopt;  // a kernel of discs among walls
+                      return checked({Check::oracle, Check::boundary, Check::bounce_side, Check::symmetry,
+                                      Check::swap, Check::translation},
+                                     touch_tags)(k, s);
+                  },
+                  400},
                  GetParam());
 }
 

@@ -283,6 +283,61 @@ inline rc::Gen<Scene> bumper_scene(int max_frames, bool box, int max_pairs = 3) 
         rcg::inRange(1, max_frames + 1));
 }
 
+/// How to place one disc touching an obstacle, in units: on a wall's face, at a cap, or at a bumper's rim.
+struct TouchSpec {
+    int kind = 0;            ///< 0 face, 1 cap (beyond an end, along the wall's line), 2 a bumper
+    int len = 4;             ///< the wall's length, 1..8 units
+    int along = 0;           ///< face: where the centre's foot lies, 0..8·len eighths of a unit (both ends included)
+    bool far_end = false;    ///< cap: beyond P1 rather than P0; face: on the wall's other side
+    bool reversed = false;   ///< the wall walked the other way
+    int rm = 16, cm = 16;    ///< disc radius rm/64 units (1..64), bumper radius cm/64 units (0..64)
+    int vx = 0, vy = -1;     ///< the velocity in quarter units (toward, along or away from the obstacle)
+};
+
+inline rc::Gen<TouchSpec> touch_spec() {
+    return rcg::build<TouchSpec>(
+        rcg::set(&TouchSpec::kind, upto(2)), rcg::set(&TouchSpec::len, rcg::inRange(1, 9)),
+        rcg::set(&TouchSpec::along, upto(64)), rcg::set(&TouchSpec::far_end, rcg::arbitrary<bool>()),
+        rcg::set(&TouchSpec::reversed, rcg::arbitrary<bool>()), rcg::set(&TouchSpec::rm, rcg::inRange(1, 65)),
+        rcg::set(&TouchSpec::cm, upto(64)), rcg::set(&TouchSpec::vx, signed_upto(8)),
+        rcg::set(&TouchSpec::vy, signed_upto(8)));
+}
+
+/// One disc per spec (1..3), each starting exactly touching its own obstacle (R from a wall's face or end, R + r
+/// from a bumper's centre) and moving toward it, along it or away, the obstacles 16 units apart; placed by an
+/// exact map, so "exactly touching" holds bit for bit.
+inline rc::Gen<Scene> touching_scene(int max_frames) {
+    return rcg::apply(
+        [](const Placement& at, const std::vector<TouchSpec>& ts, int frames) {
+            Scene s;
+            const double unit = std::ldexp(1.0, at.scale_exp);
+            for (std::size_t i = 0; i < ts.size(); ++i) {
+                const TouchSpec& t = ts[i];
+                const Vec2 o{16.0 * double(i), 0.0};
+                const double R = t.rm / 64.0, len = double(t.len);
+                Vec2 centre;
+                if (t.kind == 2) {
+                    // |B − C| = R + r along the first axis the spec's side picks.
+                    s.bumpers.push_back({at.place(o), unit * (t.cm / 64.0)});
+                    centre = o + Vec2{0.0, (t.far_end ? -1.0 : 1.0) * (R + t.cm / 64.0)};
+                } else {
+                    const Vec2 p0 = o, p1 = o + Vec2{len, 0.0};
+                    s.walls.push_back(t.reversed ? Wall{at.place(p1), at.place(p0)} : Wall{at.place(p0), at.place(p1)});
+                    if (t.kind == 0)
+                        centre = o + Vec2{std::fmin(t.along / 8.0, len), (t.far_end ? -1.0 : 1.0) * R};
+                    else
+                        centre = t.far_end ? p1 + Vec2{R, 0.0} : p0 - Vec2{R, 0.0};
+                }
+                s.balls.push_back({at.place(centre), at.vector(Vec2{t.vx / 4.0, t.vy / 4.0}), unit * R});
+            }
+            s.frames = frames;
+            return s;
+        },
+        placement(),
+        rcg::mapcat(rcg::inRange(1, 4), [](int n) { return rcg::container<std::vector<TouchSpec>>(std::size_t(n), touch_spec()); }),
+        rcg::inRange(1, max_frames + 1));
+}
+
 /// Any disc scene: polygons (inside and outside), chains, sliding chains and bumpers (bumpers only if asked).
 inline rc::Gen<Scene> disc_scene(int max_frames, bool bumpers) {
     if (!bumpers)

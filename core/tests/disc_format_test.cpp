@@ -116,7 +116,7 @@ TEST(DiscFormat, OnlyChecksDefinedForDiscsMayBeListed) {
         }
     }
     // The whole-log checks of the expect lines come first.
-    EXPECT_EQ(diag("ricochet 1\ncheck oracle\nbumper 0 0 1\nexpect state 0 0 0 0 0 0\n"),
+    EXPECT_EQ(diag("ricochet 1\ncheck accuracy\nbumper 0 0 1\nexpect state 0 0 0 0 0 0\n"),
               "t.scene:4:16: error: expect state for ball 0 but the log has 0 balls");
 }
 
@@ -208,9 +208,9 @@ TEST(DiscFormat, AKernelThatCannotStepThemRefusesTheScene) {
 
 TEST(DiscFormat, RunCheckedRefusesAnUndefinedCheckInsteadOfSkippingIt) {
     const Scene disc = parse_ok("ricochet 1\nframes 1\nball 0 0 1 1 0.5\n");
-    const Check oracle[] = {Check::oracle};
-    EXPECT_EQ(refusal(disc, KernelId::robust, oracle), "check 'oracle' is not defined for discs and bumpers yet");
-    EXPECT_THROW(run_checked(disc, KernelId::robust, 1, oracle), UnsupportedScene);
+    const Check accuracy[] = {Check::accuracy};
+    EXPECT_EQ(refusal(disc, KernelId::robust, accuracy), "check 'accuracy' is not defined for discs and bumpers yet");
+    EXPECT_THROW(run_checked(disc, KernelId::robust, 1, accuracy), UnsupportedScene);
 }
 
 }  // namespace

@@ -198,10 +198,12 @@ TEST(GrammarAcceptor, DiscsAndBumpers) {
     // checks of the expect lines.
     accepted(h + "ball 0 0 1 1 0.5\ncheck deterministic\ncheck broad-phase\ncheck round-trip\ncheck event-order\n");
     accepted(h + "bumper 0 0 1\ncheck no-tunnel\ncheck speed\ncheck no-escape\ncheck penetration\ncheck ghost-bounce\ncheck plan\n");
-    accepted(h + "ball 0 0 1 1 0\ncheck oracle\ncheck penetration\n");  // R = 0: a point ball
-    rejected_at(h + "check boundary\nball 0 0 1 1 0.5\n", 2);
-    rejected_at(h + "check round-trip\ncheck oracle\nbumper 0 0 1\ncheck boundary\n", 3);
-    rejected_at(h + "check oracle\nbumper 0 0 1\nexpect state 0 1 0 0 0 0\n", 4);
+    accepted(h + "ball 0 0 1 1 0.5\ncheck oracle\ncheck symmetry\ncheck swap\ncheck translation\ncheck boundary\n"
+                 "check bounce-side\n");
+    accepted(h + "ball 0 0 1 1 0\ncheck accuracy\ncheck penetration\n");  // R = 0: a point ball
+    rejected_at(h + "check accuracy\nball 0 0 1 1 0.5\n", 2);
+    rejected_at(h + "check round-trip\ncheck oracle\nbumper 0 0 1\ncheck accuracy\n", 5);
+    rejected_at(h + "check accuracy\nbumper 0 0 1\nexpect state 0 1 0 0 0 0\n", 4);
 }
 
 TEST(GrammarAcceptor, RectCorners) {

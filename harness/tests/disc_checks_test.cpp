@@ -1,5 +1,8 @@
 // The disc checks themselves on paths written by hand (frame_check.hpp), which no sound kernel gives: penetration
-// fails on a piece that comes too close, ghost-bounce on a hit only a tangent could make.
+// fails on a piece that comes too close, ghost-bounce on a hit only a tangent could make, boundary on a touching
+// disc that moves closer without a contact, bounce-side on a disc back across a face it bounced off; and the
+// images (symmetry, swap, translation) and the oracle on mutant kernels that prefer a direction, a wall's
+// direction or a place, step another radius or miss the bumpers.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +10,7 @@
 #include <vector>
 
 #include "checks/frame_check.hpp"
+#include "mutant_kernel.hpp"
 #include "ricochet/checks.hpp"
 
 namespace ricochet {
@@ -120,6 +124,201 @@ TEST(DiscChecks, GhostBounceCatchesAHitOnlyATangentCouldMake) {
     Scene dot = point;
     dot.walls = {{{3, 0}, {3, 0}}};
     EXPECT_EQ(ghost_verdict(dot, point.balls, {hit_wall(0, {3, 0})}), "");
+}
+
+
+// The boundary check's touching rule on frames written by hand: the ball's state before frame 1 and its events.
+std::string touching_verdict(const Scene& s, const std::vector<Event>& frame1) {
+    auto check = checks::make_boundary(s, KernelId::robust, {});
+    if (auto r = check->frame({0, {}, {}, {}, {}})) return r->message;
+    if (auto r = check->frame({1, frame1, s.balls, {}, {}})) return r->message;
+    return "";
+}
+
+Event bump_at(Vec2 p) { return {Event::Kind::bump, 1, 0, Event::Shape::none, 0, p, {}}; }
+
+TEST(DiscChecks, BoundaryTouchingIsContact) {
+    Scene s;
+    s.walls = {{{0, 0}, {10, 0}}};
+    s.balls = {{{5, 1}, {0, -1}, 1}};
+    // Exactly R above the face, moving closer: a contact at the start point, nothing else.
+    EXPECT_EQ(touching_verdict(s, {hit(1, {5, 1}), state(1, {5, 2})}), "");
+    EXPECT_NE(touching_verdict(s, {state(1, {5, 0})}), "");
+    EXPECT_NE(touching_verdict(s, {hit(1, {5, 0.5}), state(1, {5, 1})}), "");
+    // Moving away or along: no contact owed.
+    for (const Vec2 v : {Vec2{0, 1}, Vec2{1, 0}}) {
+        Scene away = s;
+        away.balls[0].vel = v;
+        EXPECT_EQ(touching_verdict(away, {state(1, s.balls[0].pos + v)}), "") << v.x << " " << v.y;
+    }
+    // One ulp farther than R: not touching.
+    Scene farther = s;
+    farther.balls[0].pos.y = std::nextafter(1.0, 2.0);
+    EXPECT_EQ(touching_verdict(farther, {state(1, {5, 0})}), "");
+    // Within reach (a start overlapping the wall), moving closer: a contact too; the centre on the segment has no
+    // normal, so nothing is owed.
+    Scene within = s;
+    within.balls[0].pos = {5, 0.5};
+    EXPECT_NE(touching_verdict(within, {state(1, {5, -0.5})}), "");
+    within.balls[0].pos = {5, 0};
+    EXPECT_EQ(touching_verdict(within, {state(1, {5, -1})}), "");
+    // A cap: R beyond P1 along the wall's line, moving back toward it.
+    Scene cap = s;
+    cap.balls = {{{11, 0}, {-1, 0}, 1}};
+    EXPECT_NE(touching_verdict(cap, {state(1, {10, 0})}), "");
+    EXPECT_EQ(touching_verdict(cap, {hit(1, {11, 0}), state(1, {12, 0})}), "");
+    // A bumper: R + r from its centre, the exact sum; the leg is Bs → Bs + v as rounded, so a velocity too small to
+    // move the ball owes nothing.
+    Scene bumper;
+    bumper.bumpers = {{{20, 20}, 2}};
+    bumper.balls = {{{17, 20}, {1, 0}, 1}};
+    EXPECT_NE(touching_verdict(bumper, {state(1, {18, 20})}), "");
+    EXPECT_EQ(touching_verdict(bumper, {bump_at({17, 20}), state(1, {16, 20})}), "");
+    bumper.balls[0].vel = {5e-324, 0};
+    EXPECT_EQ(touching_verdict(bumper, {state(1, {17, 20})}), "");
+    // A point ball on a bumper's rim (R = 0) is held to it; to walls, the point rules' parts of boundary only.
+    Scene point = bumper;
+    point.walls = s.walls;
+    point.balls = {{{18, 20}, {1, 0}, 0}};
+    EXPECT_NE(touching_verdict(point, {state(1, {19, 20})}), "");
+    // The kernels: robust meets a touching disc at once; lecture-double passes over a point it is within reach of.
+    Scene run = s;
+    run.frames = 1;
+    EXPECT_FALSE(run_checked(run, KernelId::robust, 1, std::vector<Check>{Check::boundary}).failure);
+    run.walls = {{{0, 0}, {0, 0}}};
+    run.balls = {{{0, 0.004}, {0, -1}, 1}};
+    EXPECT_FALSE(run_checked(run, KernelId::robust, 1, std::vector<Check>{Check::boundary}).failure);
+    const auto lecture = run_checked(run, KernelId::lecture_double, 1, std::vector<Check>{Check::boundary}).failure;
+    ASSERT_TRUE(lecture);
+    EXPECT_EQ(lecture->check, Check::boundary);
+}
+
+// bounce-side for discs on paths written by hand: held after a face contact, not after a cap or a bump.
+std::string side_verdict(const Scene& s, const std::vector<std::vector<Event>>& frames) {
+    auto check = checks::make_bounce_side(s, KernelId::robust, {});
+    for (std::size_t f = 0; f < frames.size(); ++f)
+        if (auto r = check->frame({static_cast<std::int64_t>(f + 1), frames[f], {}, {}, {}})) return r->message;
+    return "";
+}
+
+TEST(DiscChecks, BounceSideHoldsADiscToAFaceItBouncedOff) {
+    Scene s;
+    s.walls = {{{0, 0}, {10, 0}}};
+    s.balls = {{{5, 3}, {0, -4}, 1}};
+    // A face contact from above, then a point below the wall's line: back across the face.
+    EXPECT_NE(side_verdict(s, {{hit(1, {5, 1}), state(1, {5, -3})}}), "");
+    EXPECT_EQ(side_verdict(s, {{hit(1, {5, 1}), state(1, {5, 3})}}), "");
+    // At the face's end (the foot on P1 itself) the face's rule holds.
+    EXPECT_NE(side_verdict(s, {{hit(1, {10, 1}), state(1, {10, -3})}}), "");
+    // A cap (the foot beyond P1) has no side: below the line later is no failure.
+    Scene cap = s;
+    cap.balls = {{{13, 4}, {-3, -4}, 1}};
+    EXPECT_EQ(side_verdict(cap, {{hit(1, {10.6, 0.8}), state(1, {12, -3})}}), "");
+    // A bump ends the rule, as a hit does.
+    Scene bumper = s;
+    bumper.bumpers = {{{5, -20}, 1}};
+    EXPECT_EQ(side_verdict(bumper, {{hit(1, {5, 1}), bump_at({5, 2}), state(1, {5, -3})}}), "");
+    // A point ball: held after any hit, as always.
+    Scene point = s;
+    point.balls[0].r = 0;
+    EXPECT_NE(side_verdict(point, {{hit(1, {11, 0}), state(1, {12, -3})}}), "");
+}
+
+// The images a disc run is held to, on the mutant kernel: robust's disc step with one direction-dependent bug each.
+namespace bugs {
+/// Nudges the end state one ulp toward +x after a contact: a preference for one direction.
+FrameStatus toward_plus_x(Ball& ball, BallMemory& memory, const Obstacles& o, std::vector<HitEvent>& hits,
+                          StepScratch& scratch) {
+    const FrameStatus st = mutant::robust().step_disc(ball, memory, o, hits, scratch);
+    if (!hits.empty()) ball.pos.x = std::nextafter(ball.pos.x, HUGE_VAL);
+    return st;
+}
+/// Nudges the end velocity after a contact with a wall walked left to right: the wall's direction matters.
+FrameStatus wall_direction(Ball& ball, BallMemory& memory, const Obstacles& o, std::vector<HitEvent>& hits,
+                           StepScratch& scratch) {
+    const FrameStatus st = mutant::robust().step_disc(ball, memory, o, hits, scratch);
+    if (!hits.empty() && !hits.back().bumper && o.walls[hits.back().wall].p0.x < o.walls[hits.back().wall].p1.x)
+        ball.vel.y = std::nextafter(ball.vel.y, HUGE_VAL);
+    return st;
+}
+/// Forgets the bumpers once the ball is past x = 1000: where the scene is decides what it meets.
+FrameStatus place(Ball& ball, BallMemory& memory, const Obstacles& o, std::vector<HitEvent>& hits,
+                  StepScratch& scratch) {
+    Obstacles far = o;
+    if (ball.pos.x > 1000) {
+        far.bumpers = {};
+        far.bumper_index = nullptr;
+    }
+    return mutant::robust().step_disc(ball, memory, far, hits, scratch);
+}
+/// Steps the disc as if its radius were half what it is: every contact decision is another disc's.
+FrameStatus half_radius(Ball& ball, BallMemory& memory, const Obstacles& o, std::vector<HitEvent>& hits,
+                        StepScratch& scratch) {
+    const double R = ball.r;
+    ball.r = R / 2;
+    const FrameStatus st = mutant::robust().step_disc(ball, memory, o, hits, scratch);
+    ball.r = R;
+    return st;
+}
+/// Never sees the bumpers.
+FrameStatus no_bumpers(Ball& ball, BallMemory& memory, const Obstacles& o, std::vector<HitEvent>& hits,
+                       StepScratch& scratch) {
+    Obstacles walls_only = o;
+    walls_only.bumpers = {};
+    walls_only.bumper_index = nullptr;
+    return mutant::robust().step_disc(ball, memory, walls_only, hits, scratch);
+}
+}  // namespace bugs
+
+TEST(DiscChecks, OracleCatchesAKernelThatDecidesForAnotherDiscOrMissesABumper) {
+    // A disc of radius 1 coming down from (5, 2.5) to (5, 0.75), within R of the floor (a disc of radius 1/2 would
+    // stop short of it); a bumper in the way of another.
+    Scene s = mutant::scene({{{0, 0}, {10, 0}}}, {{{5, 2.5}, {0, -1.75}, 1}, {{20, 5}, {0, -4}, 1}});
+    s.bumpers = {{{20, 0}, 1}};
+    s.frames = 1;
+    EXPECT_FALSE(mutant::first_failure(s, 1, {Check::oracle}, KernelId::robust));
+    EXPECT_FALSE(mutant::first_failure(s, 1, {Check::oracle}, KernelId::exact));
+    {
+        mutant::Mutation m;
+        m.ops.step_disc = bugs::half_radius;
+        mutant::expect_failure(mutant::first_failure(s, 1, {Check::oracle}), Check::oracle, 1, 0,
+                               "against wall 0: the kernel says no contact, exactly a contact");
+    }
+    {
+        mutant::Mutation m;
+        m.ops.step_disc = bugs::no_bumpers;
+        mutant::expect_failure(mutant::first_failure(s, 1, {Check::oracle}), Check::oracle, 1, 1,
+                               "the kernel meets nothing first, exactly bumper 0 (its rim)");
+    }
+}
+
+TEST(DiscChecks, ImagesCatchAKernelThatPrefersADirectionAWallsDirectionOrAPlace) {
+    Scene s = mutant::scene({{{0, 0}, {10, 0}}}, {{{5, 3}, {0.5, -4}, 1}});
+    s.frames = 2;
+    for (Check c : {Check::symmetry, Check::swap, Check::translation})
+        EXPECT_FALSE(mutant::first_failure(s, 2, {c}, KernelId::robust)) << check_name(c);
+    {
+        mutant::Mutation m;
+        m.ops.step_disc = bugs::toward_plus_x;
+        mutant::expect_failure(mutant::first_failure(s, 2, {Check::symmetry}), Check::symmetry, 1, 0,
+                               "mirrored across x = 0");
+    }
+    {
+        mutant::Mutation m;
+        m.ops.step_disc = bugs::wall_direction;
+        mutant::expect_failure(mutant::first_failure(s, 2, {Check::swap}), Check::swap, 1, 0,
+                               "every wall walked the other way");
+    }
+    Scene b = mutant::scene({}, {{{3, 0}, {-2, 0}, 1}});
+    b.bumpers = {{{0, 0}, 1}};
+    b.frames = 1;
+    EXPECT_FALSE(mutant::first_failure(b, 1, {Check::translation}, KernelId::robust));
+    {
+        mutant::Mutation m;
+        m.ops.step_disc = bugs::place;
+        mutant::expect_failure(mutant::first_failure(b, 1, {Check::translation}), Check::translation, 1, 0,
+                               "changes a hit, a bump or an overlap");
+    }
 }
 
 }  // namespace

@@ -39,6 +39,12 @@ struct TracedLeg {
     /// The velocity the ball moved with on this leg (the leg is the rest of the frame at this velocity); the
     /// next leg's, or the frame's end state's, is the one it left a hit with.
     Vec2 vel{};
+    /// A disc's leg (or a point ball's among bumpers): the bumper taken as the leg's first contact, or none (hit
+    /// then names a wall, or nothing).
+    std::optional<std::uint32_t> bumped{};
+    /// The bumper the kernel skipped without a decision because of its own rule (lecture: the bumper just bounced
+    /// off), or none.
+    std::optional<std::uint32_t> skipped_bumper{};
 };
 
 /// One ball's frame as its kernel stepped it.

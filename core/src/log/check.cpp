@@ -42,14 +42,16 @@ bool defined_for_discs(Check c) {
         case Check::no_escape:
         case Check::penetration:
         case Check::ghost_bounce:
-        case Check::plan: return true;
-        // Written for points among walls: not yet given a meaning for discs and bumpers.
+        case Check::plan:
+        // Read for discs: their runs against their images, their first contacts, touching, face contacts, the
+        // exact disc contacts.
         case Check::symmetry:
-        case Check::boundary:
-        case Check::oracle:
         case Check::swap:
         case Check::translation:
+        case Check::boundary:
         case Check::bounce_side:
+        case Check::oracle: return true;
+        // Written for points among walls: not yet given a meaning for discs and bumpers.
         case Check::accuracy: return false;
     }
     return false;

@@ -16,13 +16,23 @@
 //                  and both-outside exchanged), and a hit keeps t by value and maps its point; point_in_circle
 //                  and point_in_rect of p keep their answers; at frame 0 circles_overlap and rects_overlap of
 //                  every ordered pair of static shapes keep theirs.
+//                  In a scene with a disc or a bumper, (a) becomes four images stepped in lockstep (mapped_run):
+//                  the scene mirrored across x = 0, mirrored across y = 0, turned by R, and with its balls in
+//                  reverse order (radii kept) each print, ball by ball, the run's events mapped (positions and
+//                  velocities; ball i as its image), by value; (b) is asked of point balls only.
 //   boundary       At each printed state p, v: the radius-0 circle and the zero-size rect at p hold exactly
 //                  the frame's printed positions equal to p; for every circle C, point_in_circle(p, C) =
 //                  circles_overlap({p, 0}, C) = point_in_circle(C.c, {p, C.r}); for every rect R,
 //                  point_in_rect(p, R) = rects_overlap({p, p, p, p}, R); and if v ≠ 0, for every wall w with
 //                  s = classify(p, w) and the sweep from p moving v: s = On gives neither test 1 nor test 2 and
 //                  no hit, Inside never both-outside, Outside never both-inside, and a hit whose Be = p + v
-//                  classifies On has t = 1 and point Be.
+//                  classifies On has t = 1 and point Be. For discs and among bumpers (the touching rule): a
+//                  ball of radius R whose state before a frame, p, is at most R from a wall's closed segment
+//                  (R > 0) or at most R + r from a bumper's centre (exactly: touching, or within reach) while
+//                  its leg p → Be = p + v (as rounded) starts by moving closer (d·(p − X) < 0, X the nearest
+//                  point of the segment or the centre, exactly; p on the segment or at the centre has no
+//                  normal), makes a hit or a bump at p its first event of that frame. The state parts above
+//                  are asked of point balls only.
 //   speed          Per ball per frame, with m the reflections its kernel made in the frame (StepTrace:
 //                  every reflect() call, hits, corner re-reflections and contact reflections without a hit;
 //                  v′ = −v is exact and counts 0): | |v_end| − |v_start| | ≤ ((1 + b)^m − 1)·|v_start| + m·a,
@@ -51,16 +61,32 @@
 //                  the exact kernel's frame leaves the accepted range). The exact kernel's legs are rational,
 //                  so it has only the static parts; a kernel that steps whole frames itself and traces no legs
 //                  (a plug-in's frame step, plugin.h) has the static parts and the frame's first hit.
+//                  A ball the disc frame steps (radius R > 0, or any ball in a scene with bumpers): its printed
+//                  states' overlaps are the sensors its disc touches (|p − c| ≤ R + r; the rect within R), and
+//                  for each leg a → b it swept: its contact decision for each wall it tried equals
+//                  truth::disc_meets_wall(a, b, R) (docs/scene-log.md's rules: an entry, tangents none, the
+//                  start-in-reach rule, no normal on the segment); every wall it did not try has no contact; the
+//                  obstacle it met first (a wall, or a bumper) is truth::disc_first_contact's (contact times
+//                  compared exactly as (A − √C)/D; ties to the lowest wall, then bumpers; the obstacle the
+//                  kernel's own rule skips left out); the contacts it took are the frame's hits and bumps in
+//                  order; at most 16 a frame, as above; and the frame's first contact equals the exact kernel's
+//                  from the same state. The exact kernel's disc legs are doubles (its contact points are
+//                  rounded), so it is judged leg by leg too.
 //   swap           circles_overlap(a, b) = circles_overlap(b, a) and rects_overlap likewise for every pair of
 //                  static shapes (frame 0); for each printed state p, v and every wall w, the wall walked the
 //                  other way gives p and Be = p + v the opposite side and the sweep from p the same hit or miss.
+//                  In a scene with a disc or a bumper, also: the scene with every wall walked the other way,
+//                  stepped in lockstep, prints ball by ball the run's events by value (a capsule has no
+//                  direction); the per-state part is asked of point balls only.
 //   translation    For each offset t of a fixed list ((1, −2), (1024, 4096), (−3·2^30, 2^31), (2^40, −5·2^40),
 //                  (0.5, 0.25)) that moves every coordinate of the scene and every ball's Bs and Be = Bs + v
 //                  without rounding (and (Bs + t) + v = Be + t), the moved scene stepped in lockstep prints
 //                  the same overlaps and, per ball, the same first hit wall (the exact kernel: every hit wall)
 //                  at frames 0 and 1; and at every frame, for each printed state p, v that t moves exactly,
 //                  classify, the sweep's Miss, point_in_circle and point_in_rect are unchanged by moving p and
-//                  the scene by t.
+//                  the scene by t. In a scene with a disc or a bumper, bumpers move too, a bump counts as a
+//                  contact (per ball, the first hit wall or bumped bumper, every kernel: the exact kernel rounds
+//                  a disc's contact points), and the per-state part is asked of point balls only.
 //   broad-phase    The scene stepped with no broad phase on one thread, and with the wall grid and static
 //                  index on two threads, print the checked run's events bit for bit.
 //   round-trip     At frame 0: the scene written as a log (write_scene_log) reads back (parse_scene_log) as
@@ -72,6 +98,9 @@
 //   bounce-side    After a ball hits a wall from side s (the side of its previous printed point; along the
 //                  line, the side it last met that wall from), none of its printed points lies strictly on the
 //                  wall's side −s until its next hit, that hit's point included (BallMemory, kernel.hpp).
+//                  A disc is held to it after a face contact only: a hit whose point's foot on the wall's
+//                  line lies on the closed segment (truth::projects_onto_segment); a cap has no side, so a hit
+//                  elsewhere ends the rule, and so does a bump (a bumper has no side either).
 //   accuracy       kernel.hpp's "t_i and B_i within a few ulps of the exact crossing for well-conditioned
 //                  hits", made precise: for each leg a → b of the frame's legs that took a hit, with
 //                  e = P1 − P0 of its wall and d = b − a, if |e × d| ≥ |e|∞·|d|∞ / 4 and |e|∞, |d|∞ ≥ 2^−400
@@ -126,8 +155,10 @@
 // Discs and bumpers: in a scene with a disc or a bumper only the checks defined_for_discs (check.hpp) names are
 // defined: no-tunnel, speed, no-escape (each as written above, read for the disc's centre: its printed path, its
 // velocity; m counts the bounces off bumpers and the corner reflections too), deterministic, broad-phase,
-// round-trip, event-order (a bump names a bumper of the scene and no shape), penetration, ghost-bounce and plan.
-// run_checked refuses any other (UnsupportedScene), the reader rejects its `check` line.
+// round-trip, event-order (a bump names a bumper of the scene and no shape), penetration, ghost-bounce, plan, and
+// symmetry, swap, translation, boundary, bounce-side and oracle as read for discs above. accuracy is not defined
+// for them yet (the bound on a disc's contact time, contact point and bounce is not written). run_checked refuses
+// an undefined check (UnsupportedScene), the reader rejects its `check` line.
 //
 // speed, oracle and accuracy read the frame's StepTrace: each ball is stepped again from its state and memory before
 // the frame with a trace (the same wall index); that step must end in the run's state bit for bit, else
@@ -183,8 +214,8 @@ struct CheckFailure {
     std::int64_t frame = 0;          ///< the first frame it broke in
     std::uint32_t ball = 0;          ///< the ball it broke for
     std::string message;  ///< expected against actual, for people
-    std::optional<FailurePiece> piece;  ///< no-tunnel: the piece and its wall, for pictures (message unchanged)
-    std::optional<FailureObstacle> against;  ///< penetration: what the piece reached into (message unchanged)
+    std::optional<FailurePiece> piece{};  ///< no-tunnel: the piece and its wall, for pictures (message unchanged)
+    std::optional<FailureObstacle> against{};  ///< penetration: what the piece reached into (message unchanged)
     /// "CHECK broke at frame F ball I: MESSAGE".
     std::string str() const;
 };

@@ -3,6 +3,7 @@
 // path.hpp or any kernel, so a bug there cannot hide itself here. Do not deduplicate it into them.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -48,6 +49,21 @@ bool clear_of_wall(Vec2 a, Vec2 b, const Wall& w, double R);
 /// exactly, with R + r not rounded.
 bool clear_of_circle(Vec2 a, Vec2 b, Vec2 c, double R, double r);
 
+/// sign(|p − X|² − R²) for X the point of wall w's closed segment (a point if w has no length) nearest to p,
+/// exactly: −1 within reach of a disc of radius R centred at p, 0 touching, +1 clear (the `boundary` check).
+int wall_reach_side(Vec2 p, const Wall& w, double R);
+/// sign((b − a)·(a − X)), X the point of w's segment nearest to a: −1 if the leg a → b starts by taking a closer
+/// to the segment (the derivative of |a − X|² along the leg), exactly; 0 if a lies on the segment (no normal), the
+/// leg has no length or runs parallel to the segment there.
+int wall_approach_sign(Vec2 a, Vec2 b, const Wall& w);
+/// sign(|p − c|² − (R + r)²), exactly, with R + r not rounded: a disc of radius R at p against a bumper (c, r).
+int circle_reach_side(Vec2 p, Vec2 c, double R, double r);
+/// sign((b − a)·(a − c)), exactly: −1 if the leg a → b starts by taking a closer to c; 0 at c itself.
+int circle_approach_sign(Vec2 a, Vec2 b, Vec2 c);
+/// True if the foot of p on w's line lies on the closed segment, 0 ≤ (p − P0)·e ≤ e·e, exactly; false for a wall
+/// of no length. A disc touching w there touches its face (or the face's end, where face and cap share a normal).
+bool projects_onto_segment(Vec2 p, const Wall& w);
+
 /// The leg a → b runs parallel to the line through w's end points (w of non-zero length), at least R from it,
 /// exactly: n·(b − a) = 0 and (n·(a − P0))² ≥ R²·(n·n), n = (e_y, −e_x), e = P1 − P0 (the `ghost-bounce` check).
 bool parallel_clear_of_line(Vec2 a, Vec2 b, const Wall& w, double R);
@@ -65,6 +81,33 @@ bool sum_exact(double a, double b);
 Miss leg_miss(Vec2 a, Vec2 b, const Wall& w);
 /// The first wall the leg a → b hits (the earliest exact crossing, the lowest index on a tie), or −1.
 long first_hit(Vec2 a, Vec2 b, std::span<const Wall> walls);
+
+/// A disc's contact on a leg (the disc `oracle` check), by the rules of docs/scene-log.md "Discs and bumpers": a
+/// contact is an entry (the centre's distance to the obstacle reaches ρ = R, or R + r for a bumper, while
+/// decreasing; a tangent is none); a leg starting within ρ meets the obstacle at t = 0 if it starts by moving
+/// closer, else not at all; a start on the wall's segment or at the bumper's centre has no normal and meets
+/// nothing. A wall's reach is its capsule: the face (the band within R of its line, the foot on the segment) and
+/// the caps (|X − P_k| = R); a zero-length wall has its cap only. Computed apart from the kernels (truth_discs.cpp).
+struct DiscContact {
+    enum class Obstacle : std::uint8_t { none, wall, bumper };
+    enum class Part : std::uint8_t { face, cap0, cap1, circle };
+    Obstacle obstacle = Obstacle::none;
+    std::uint32_t index = 0;   ///< the wall or the bumper
+    Part part = Part::face;    ///< where the entry is (at t = 0: the part of the segment nearest the start)
+    bool at_start = false;     ///< t = 0 by the start-in-reach rule
+};
+/// True if the leg a → b of a ball of radius R ≥ 0 has a contact with wall w, exactly.
+bool disc_meets_wall(Vec2 a, Vec2 b, double R, const Wall& w);
+/// The first contact of the leg a → b of a ball of radius R ≥ 0 among the walls and bumpers: the earliest exact
+/// entry time (contact times compared exactly, as numbers (A − √C)/D, no square root rounded); ties to the lowest
+/// wall, then the lowest bumper; on one wall the face, then cap P0, then cap P1. skip_wall, skip_bumper: one
+/// obstacle the kernel's own rule leaves out (lecture: the one just bounced off), or −1.
+DiscContact disc_first_contact(Vec2 a, Vec2 b, double R, std::span<const Wall> walls, std::span<const Bumper> bumpers,
+                               long skip_wall = -1, long skip_bumper = -1);
+/// True if a disc of radius R centred at p overlaps (or touches) the sensor circle c: |p − c| ≤ R + r, exactly.
+bool disc_in_circle(Vec2 p, double R, const Circle& c);
+/// True if a disc of radius R centred at p overlaps (or touches) the closed rect r, exactly.
+bool disc_in_rect(Vec2 p, double R, const Rect& r);
 
 /// How close a hit point is to the exact crossing (the `accuracy` check, checks.hpp).
 struct HitAccuracy {

@@ -1,5 +1,7 @@
 // bounce-side: a ball that hit a wall from one side prints no later point strictly on that wall's other
-// side until its next hit (BallMemory's rule, kernel.hpp), the next hit point included.
+// side until its next hit (BallMemory's rule, kernel.hpp), the next hit point included. A disc is held to it
+// after meeting a wall's face (its centre's foot on the segment: the bounce about ±n leaves the line behind);
+// a cap or a bumper has no side, and a bump, like a hit, ends the rule.
 #include <fmt/format.h>
 
 #include "checks/frame_check.hpp"
@@ -27,11 +29,14 @@ public:
                                             "before its next hit",
                                             k.wall, k.from, e.kind == Event::Kind::hit ? "hit point" : "end of frame",
                                             e.pos));
+            if (e.kind == Event::Kind::bump) k = {};
             if (e.kind == Event::Kind::hit) {
+                const Wall& w = scene_.walls[e.index];
                 // The side it met the wall from: that of the point it came from; coming along the line, the side
                 // it last met that wall from still holds.
-                const int from = truth::side(at_[e.ball], scene_.walls[e.index]);
-                if (from != 0 || k.wall != e.index) k = {e.index, from};
+                const int from = truth::side(at_[e.ball], w);
+                if (is_disc(scene_.balls[e.ball]) && !truth::projects_onto_segment(e.pos, w)) k = {};
+                else if (from != 0 || k.wall != e.index) k = {e.index, from};
             }
             at_[e.ball] = e.pos;
         }

@@ -1,9 +1,10 @@
 // oracle: every decision the kernel makes equals the exact one (truth.hpp), leg by leg on its own legs,
-// and every static test the scene poses.
+// and every static test the scene poses. A ball stepped as a disc has its legs judged by oracle_discs.cpp.
 #include <cmath>
 #include <fmt/format.h>
 
 #include "checks/frame_check.hpp"
+#include "checks/oracle_discs.hpp"
 #include "ricochet/bits.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/truth.hpp"
@@ -15,7 +16,7 @@ std::string wall_name(long w) { return w < 0 ? std::string("no wall") : fmt::for
 
 class Oracle final : public FrameCheck {
 public:
-    Oracle(const Scene& scene, KernelId kernel) : scene_(scene), kernel_(kernel) {}
+    Oracle(const Scene& scene, KernelId kernel) : scene_(scene), kernel_(kernel), discs_(scene, kernel) {}
 
     bool needs_traces() const override { return true; }
 
@@ -24,12 +25,15 @@ public:
             if (auto bad = statics()) return bad;
         if (auto bad = positions(f)) return bad;
         if (f.index == 0) return std::nullopt;
-        for (std::size_t i = 0; i < f.before.size(); ++i)
-            if (auto bad = legs(f, static_cast<std::uint32_t>(i))) return bad;
+        for (std::uint32_t i = 0; i < f.before.size(); ++i)
+            if (auto bad = stepped_as_disc(i) ? discs_.legs(f, i) : legs(f, i)) return bad;
         return std::nullopt;
     }
 
 private:
+    /// A disc, or any ball among bumpers: the disc frame steps it (kernel.hpp, step_ball with obstacles).
+    bool stepped_as_disc(std::uint32_t i) const { return is_disc(scene_.balls[i]) || !scene_.bumpers.empty(); }
+
     /// Frame 0: every pair of static shapes, in both orders.
     std::optional<CheckFailure> statics() const {
         const KernelId k = kernel_;
@@ -70,10 +74,14 @@ private:
             std::vector<std::pair<Event::Shape, std::uint32_t>> got, want;
             for (const Event& o : f.events)
                 if (o.kind == Event::Kind::overlap && o.ball == e.ball) got.emplace_back(o.shape, o.index);
+            // A disc overlaps a sensor it touches at its size (docs/scene-log.md, "Discs and bumpers").
+            const double R = scene_.balls[e.ball].r;
             for (std::uint32_t c = 0; c < scene_.circles.size(); ++c)
-                if (truth::point_in_circle(p, scene_.circles[c])) want.emplace_back(Event::Shape::circle, c);
+                if (R > 0 ? truth::disc_in_circle(p, R, scene_.circles[c]) : truth::point_in_circle(p, scene_.circles[c]))
+                    want.emplace_back(Event::Shape::circle, c);
             for (std::uint32_t r = 0; r < scene_.rects.size(); ++r)
-                if (truth::point_in_rect(p, scene_.rects[r])) want.emplace_back(Event::Shape::rect, r);
+                if (R > 0 ? truth::disc_in_rect(p, R, scene_.rects[r]) : truth::point_in_rect(p, scene_.rects[r]))
+                    want.emplace_back(Event::Shape::rect, r);
             if (got != want) {
                 const auto list = [](const auto& v) {
                     std::string s;
@@ -203,6 +211,7 @@ private:
 
     const Scene& scene_;
     KernelId kernel_;
+    DiscOracle discs_;
     std::vector<HitEvent> hits_;
     StepScratch scratch_;
     std::vector<Wall> others_;

@@ -1,8 +1,10 @@
 // swap: the static tests are symmetric in their arguments, and a wall walked the other way gives the
-// opposite side and the same hit or miss.
+// opposite side and the same hit or miss. A scene with a disc or a bumper also runs, with every wall walked the
+// other way, as the same run (a wall's capsule has no direction; mapped_run.hpp).
 #include <fmt/format.h>
 
 #include "checks/frame_check.hpp"
+#include "checks/mapped_run.hpp"
 #include "ricochet/format.hpp"
 
 namespace ricochet::checks {
@@ -10,10 +12,14 @@ namespace {
 
 class Swap final : public FrameCheck {
 public:
-    Swap(const Scene& scene, KernelId kernel) : scene_(scene), kernel_(kernel) {}
+    Swap(const Scene& scene, KernelId kernel, const WorldOptions& world) : scene_(scene), kernel_(kernel) {
+        if (has_discs_or_bumpers(scene)) reversed_.emplace(scene, k_reversed, kernel, world);
+    }
 
     std::optional<CheckFailure> frame(const Frame& f) override {
         const KernelId k = kernel_;
+        if (reversed_)
+            if (auto bad = reversed_->frame(Check::swap, f)) return bad;
         if (f.index == 0) {
             for (const Circle& a : scene_.circles)
                 for (const Circle& c : scene_.circles)
@@ -28,8 +34,9 @@ public:
                                        fmt::format("rects_overlap({}, {}) = {} but swapped {}", a, r,
                                                    rects_overlap(k, a, r), rects_overlap(k, r, a)));
         }
+        // A point ball's decisions from its printed states (a disc's are its run's, compared above).
         for (const Event& e : f.events) {
-            if (e.kind != Event::Kind::state) continue;
+            if (e.kind != Event::Kind::state || is_disc(scene_.balls[e.ball])) continue;
             const Vec2 p = e.pos, v = e.vel, be = p + v;
             for (std::size_t i = 0; i < scene_.walls.size(); ++i) {
                 const Wall& w = scene_.walls[i];
@@ -51,12 +58,17 @@ public:
     }
 
 private:
+    static constexpr SceneMap k_reversed{"the run with every wall walked the other way", nullptr, true, false};
+
     const Scene& scene_;
     KernelId kernel_;
+    std::optional<MappedRun> reversed_;
 };
 
 }  // namespace
 
-std::unique_ptr<FrameCheck> make_swap(const Scene& scene, KernelId kernel, const WorldOptions&) { return std::make_unique<Swap>(scene, kernel); }
+std::unique_ptr<FrameCheck> make_swap(const Scene& scene, KernelId kernel, const WorldOptions& world) {
+    return std::make_unique<Swap>(scene, kernel, world);
+}
 
 }  // namespace ricochet::checks

@@ -1,8 +1,11 @@
 // symmetry: the scene mirrored across x = 0 runs as the mirror of the run; every static answer and
-// every sweep from a printed state is unchanged by the mirror and by a quarter turn (both exact maps).
+// every sweep from a printed state is unchanged by the mirror and by a quarter turn (both exact maps). A scene
+// with a disc or a bumper also runs as its image mirrored across y = 0 and with its balls in reverse order,
+// compared ball by ball (mapped_run.hpp).
 #include <fmt/format.h>
 
 #include "checks/frame_check.hpp"
+#include "checks/mapped_run.hpp"
 #include "ricochet/format.hpp"
 
 namespace ricochet::checks {
@@ -44,14 +47,22 @@ public:
     Symmetry(const Scene& scene, KernelId kernel, const WorldOptions& world)
         : scene_(scene),
           kernel_(kernel),
-          mirror_scene_(mirror_x(scene)),
-          turned_scene_(turned(scene)),
-          mirror_(mirror_scene_, kernel, world),
-          turn_(turned_scene_, kernel, world) {}
+          discs_(has_discs_or_bumpers(scene)) {
+        if (discs_) {
+            for (const SceneMap& m : k_disc_maps) images_.emplace_back(scene, m, kernel, world);
+            return;
+        }
+        mirror_scene_ = mirror_x(scene);
+        turned_scene_ = turned(scene);
+        mirror_.emplace(mirror_scene_, kernel, world);
+        turn_.emplace(turned_scene_, kernel, world);
+    }
 
     std::optional<CheckFailure> frame(const Frame& f) override {
-        for (int which = 0; which < 2; ++which) {
-            World& world = which == 0 ? mirror_ : turn_;
+        for (MappedRun& image : images_)
+            if (auto bad = image.frame(Check::symmetry, f)) return bad;
+        for (int which = 0; which < 2 && !discs_; ++which) {
+            World& world = which == 0 ? *mirror_ : *turn_;
             other_.clear();
             if (f.index == 0) world.start(other_);
             else (void)world.step(other_);
@@ -64,8 +75,9 @@ public:
         }
         if (f.index == 0)
             if (auto bad = statics(f.index)) return bad;
+        // A point ball's decisions from its printed states (a disc's are its run's, compared above).
         for (const Event& e : f.events)
-            if (e.kind == Event::Kind::state)
+            if (e.kind == Event::Kind::state && !is_disc(scene_.balls[e.ball]))
                 if (auto bad = decisions(f.index, e)) return bad;
         return std::nullopt;
     }
@@ -128,16 +140,26 @@ private:
     static Scene turned(const Scene& s) {
         Scene out = s;
         for (Wall& w : out.walls) w = map(k_maps[1], w);
-        for (Ball& b : out.balls) b = {k_maps[1].f(b.pos), k_maps[1].f(b.vel)};
+        for (Ball& b : out.balls) b = {k_maps[1].f(b.pos), k_maps[1].f(b.vel), b.r};
         for (Circle& c : out.circles) c = map(k_maps[1], c);
         for (Rect& r : out.rects) r = map(k_maps[1], r);
         return out;
     }
 
+    /// The images a scene with a disc or a bumper is held to: both mirrors, the quarter turn, the balls reversed.
+    static constexpr SceneMap k_disc_maps[] = {
+        {"the run mirrored across x = 0", [](Vec2 p) { return Vec2{-p.x, p.y}; }, false, false},
+        {"the run mirrored across y = 0", [](Vec2 p) { return Vec2{p.x, -p.y}; }, false, false},
+        {"the run turned by 90 degrees", [](Vec2 p) { return Vec2{-p.y, p.x}; }, false, false},
+        {"the run with its balls in reverse order", nullptr, false, true},
+    };
+
     const Scene& scene_;
     KernelId kernel_;
+    bool discs_;
     Scene mirror_scene_, turned_scene_;
-    World mirror_, turn_;
+    std::optional<World> mirror_, turn_;
+    std::vector<MappedRun> images_;
     std::vector<Event> other_, expected_;
 };
 

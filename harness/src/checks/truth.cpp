@@ -3,18 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
-#include "base/bignum.hpp"
+#include "checks/truth_detail.hpp"
 
 namespace ricochet::truth {
 namespace {
 
-using bignum::Rational;
-
-int sgn(const Rational& q) { return bignum::sign(q); }
 int sgn_q(const Rational& q) { return sgn(q); }
-Rational Q(double x) { return bignum::rational(x); }  // exact: every finite double is a rational
 
 }  // namespace
 
@@ -109,9 +106,9 @@ bool speed_within(Vec2 v, Vec2 w, int m, double b, double a) {
 
 namespace {
 
-/// |p − X|² for the point X of the closed segment a → b nearest to p: X = a + u·(b − a) with u the projection
+/// p − X for the point X of the closed segment a → b nearest to p: X = a + u·(b − a) with u the projection
 /// (p − a)·e/(e·e) clamped to [0, 1] (u = 0 for a segment of no length), all in rationals.
-Rational distance2_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+std::pair<Rational, Rational> from_segment(Vec2 p, Vec2 a, Vec2 b) {
     const Rational ex = Q(b.x) - Q(a.x), ey = Q(b.y) - Q(a.y);
     const Rational px = Q(p.x) - Q(a.x), py = Q(p.y) - Q(a.y);
     const Rational ee = ex * ex + ey * ey;
@@ -121,17 +118,13 @@ Rational distance2_to_segment(Vec2 p, Vec2 a, Vec2 b) {
         if (u < 0) u = 0;
         if (u > 1) u = 1;
     }
-    const Rational dx = px - u * ex, dy = py - u * ey;
-    return dx * dx + dy * dy;
+    return {px - u * ex, py - u * ey};
 }
 
-/// Every coordinate of the boxes of a → b and of c → d apart by more than reach, decided on doubles with a
-/// margin (a computed gap g > 0 is at least g/(1 + 2^−53) exactly): no point of one is within reach of the
-/// other. False says nothing.
-bool boxes_apart(Vec2 a, Vec2 b, Vec2 c, Vec2 d, double reach) {
-    const double limit = reach * (1.0 + 0x1p-48);
-    return std::min(c.x, d.x) - std::max(a.x, b.x) > limit || std::min(a.x, b.x) - std::max(c.x, d.x) > limit ||
-           std::min(c.y, d.y) - std::max(a.y, b.y) > limit || std::min(a.y, b.y) - std::max(c.y, d.y) > limit;
+/// |p − X|², X as in from_segment.
+Rational distance2_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+    const auto [dx, dy] = from_segment(p, a, b);
+    return dx * dx + dy * dy;
 }
 
 }  // namespace
@@ -154,6 +147,35 @@ bool clear_of_circle(Vec2 a, Vec2 b, Vec2 c, double R, double r) {
     if (boxes_apart(a, b, c, c, (R + r) * (1.0 + 0x1p-52))) return true;
     const Rational rho = Q(R) + Q(r);
     return distance2_to_segment(c, a, b) >= rho * rho;
+}
+
+int wall_reach_side(Vec2 p, const Wall& w, double R) {
+    return sgn(distance2_to_segment(p, w.p0, w.p1) - Q(R) * Q(R));
+}
+
+int wall_approach_sign(Vec2 a, Vec2 b, const Wall& w) {
+    // d/dt |a + t·d − X(t)|² = 2·d·(a − X) at t = 0, d = b − a: the nearest point of a convex set moves, the
+    // distance's derivative does not see it.
+    const auto [dx, dy] = from_segment(a, w.p0, w.p1);
+    return sgn((Q(b.x) - Q(a.x)) * dx + (Q(b.y) - Q(a.y)) * dy);
+}
+
+int circle_reach_side(Vec2 p, Vec2 c, double R, double r) {
+    const Rational dx = Q(p.x) - Q(c.x), dy = Q(p.y) - Q(c.y), rho = Q(R) + Q(r);
+    return sgn(dx * dx + dy * dy - rho * rho);
+}
+
+int circle_approach_sign(Vec2 a, Vec2 b, Vec2 c) {
+    return sgn((Q(b.x) - Q(a.x)) * (Q(a.x) - Q(c.x)) + (Q(b.y) - Q(a.y)) * (Q(a.y) - Q(c.y)));
+}
+
+bool projects_onto_segment(Vec2 p, const Wall& w) {
+    const Rational ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
+    const Rational ee = ex * ex + ey * ey;
+    if (sgn(ee) == 0) return false;
+    // 0 ≤ (p − P0)·e ≤ e·e: the projection's fraction u in [0, 1].
+    const Rational pe = (Q(p.x) - Q(w.p0.x)) * ex + (Q(p.y) - Q(w.p0.y)) * ey;
+    return sgn(pe) >= 0 && pe <= ee;
 }
 
 bool parallel_clear_of_line(Vec2 a, Vec2 b, const Wall& w, double R) {

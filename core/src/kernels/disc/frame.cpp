@@ -205,6 +205,7 @@ FrameStatus disc::step_frame(Ball& ball, const Obstacles& obstacles, std::vector
             traced->hit = first.index;
             traced->hit_t = t;
         }
+        if (traced != nullptr && first.bumper) traced->bumped = first.index;
         const Vec2 x = walk_back(q, at.x, R, obstacles, scratch);
         now += t * rest;
         hits.push_back({first.index, now, x, first.bumper});

@@ -87,6 +87,7 @@ FrameStatus step_lecture_disc(Ball& ball, const Obstacles& obstacles, std::vecto
                 last == k_none || last_bumper ? std::nullopt : std::optional<std::uint32_t>(last);
             traced = &t->legs.emplace_back(TracedLeg{a, b, false, 0, 0, std::nullopt, first, 0, skipped});
             traced->vel = vec_cast<double>(vel);
+            if (last != k_none && last_bumper) traced->skipped_bumper = last;
         }
         bool found = false;
         Real best_t = 0;
@@ -143,6 +144,7 @@ FrameStatus step_lecture_disc(Ball& ball, const Obstacles& obstacles, std::vecto
             traced->hit = best;
             traced->hit_t = static_cast<double>(best_t);
         }
+        if (traced != nullptr && best_bumper) traced->bumped = best;
         if (bounce == k_max_bounces) {
             status = FrameStatus::bounce_limit;
             break;

@@ -1,0 +1,46 @@
+// Internal: a scene under an exact map, stepped in lockstep with the run and compared, ball by ball, with the run
+// mapped. How the symmetry and swap checks hold a scene with discs or bumpers to its images: every decision of a
+// disc is exact and its constructions round the same numbers up to sign and order, so the image of the run is the
+// run of the image (by value: −0 = +0).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "checks/frame_check.hpp"
+#include "ricochet/world.hpp"
+
+namespace ricochet::checks {
+
+/// An exact map of a scene: a linear map of the plane exact on doubles (negations and swaps of coordinates), every
+/// wall walked the other way, the balls in reverse order.
+struct SceneMap {
+    const char* name = "";          ///< for messages: "the run mirrored across x = 0"
+    Vec2 (*point)(Vec2) = nullptr;  ///< points and velocities; nullptr: unchanged
+    bool reverse_walls = false;
+    bool reverse_balls = false;
+};
+
+/// The scene under m: walls, balls, bumpers, circles and rects mapped (a rect's corners re-sorted), radii kept.
+Scene apply(const SceneMap& m, const Scene& s);
+
+/// The image of a scene stepped beside the run.
+class MappedRun {
+public:
+    MappedRun(const Scene& scene, const SceneMap& map, KernelId kernel, const WorldOptions& world);
+    /// Steps the image one frame (frame 0: starts it) and compares its events with f's mapped: ball i's events,
+    /// mapped, in order, must be its image ball's. The first difference is a failure of c at ball i.
+    std::optional<CheckFailure> frame(Check c, const Frame& f);
+
+private:
+    Event mapped(Event e) const;
+    std::uint32_t image_of(std::uint32_t ball) const;
+
+    SceneMap map_;
+    Scene image_;
+    World world_;
+    std::vector<Event> events_;
+    std::vector<std::vector<Event>> want_, got_;  // per ball of the image
+};
+
+}  // namespace ricochet::checks

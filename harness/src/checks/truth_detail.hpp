@@ -1,0 +1,27 @@
+// Internal: what truth.cpp and truth_discs.cpp share: rationals from doubles, their signs, and a filter on
+// bounding boxes. Part of the independent oracle: it shares nothing with predicates.hpp or any kernel.
+#pragma once
+
+#include <algorithm>
+
+#include "base/bignum.hpp"
+#include "ricochet/vec2.hpp"
+
+namespace ricochet::truth {
+
+using bignum::Rational;
+
+inline int sgn(const Rational& q) { return bignum::sign(q); }
+/// Exact: every finite double is a rational.
+inline Rational Q(double x) { return bignum::rational(x); }
+
+/// Every coordinate of the boxes of a → b and of c → d apart by more than reach, decided on doubles with a
+/// margin (a computed gap g > 0 is at least g/(1 + 2^−53) exactly): no point of one is within reach of the
+/// other. False says nothing.
+inline bool boxes_apart(Vec2 a, Vec2 b, Vec2 c, Vec2 d, double reach) {
+    const double limit = reach * (1.0 + 0x1p-48);
+    return std::min(c.x, d.x) - std::max(a.x, b.x) > limit || std::min(a.x, b.x) - std::max(c.x, d.x) > limit ||
+           std::min(c.y, d.y) - std::max(a.y, b.y) > limit || std::min(a.y, b.y) - std::max(c.y, d.y) > limit;
+}
+
+}  // namespace ricochet::truth

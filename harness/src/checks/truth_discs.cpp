@@ -1,0 +1,172 @@
+// Ground truth for discs (truth.hpp's DiscContact): contact times as exact algebraic numbers t = (A − √C)/D,
+// compared by the signs of sums of square roots, in rationals. Written from the rules of docs/scene-log.md, apart
+// from core/src/kernels/disc/ (which decides the same questions with filters and its own exact stage): a bug there
+// cannot hide itself here.
+#include "ricochet/truth.hpp"
+
+#include <optional>
+
+#include "checks/truth_detail.hpp"
+
+namespace ricochet::truth {
+namespace {
+
+/// sign(x + y·√u), u ≥ 0.
+int sign2(const Rational& x, const Rational& y, const Rational& u) {
+    const int sx = sgn(x), sy = sgn(u) == 0 ? 0 : sgn(y);
+    if (sy == 0) return sx;
+    if (sx == 0 || sx == sy) return sy;
+    // Opposite signs: |x| against |y|·√u, by their squares.
+    return sx * sgn(x * x - y * y * u);
+}
+
+/// sign(x + y·√u + z·√v), u, v ≥ 0.
+int sign3(const Rational& x, const Rational& y, const Rational& u, const Rational& z, const Rational& v) {
+    const int sl = sign2(x, y, u), sz = sgn(v) == 0 ? 0 : sgn(z);
+    if (sz == 0) return sl;
+    if (sl == 0 || sl == sz) return sz;
+    // L = x + y·√u against |z|·√v, by their squares: L² − z²v = x² + y²u − z²v + 2xy·√u.
+    return sl * sign2(x * x + y * y * u - z * z * v, Rational(2) * x * y, u);
+}
+
+/// An entry time t = (A − √C)/D, D > 0, C ≥ 0.
+struct Root {
+    Rational A, C, D;
+};
+
+/// sign(t1 − t2) = sign((D2·A1 − D1·A2) − D2·√C1 + D1·√C2), both denominators positive.
+int compare(const Root& r1, const Root& r2) { return sign3(r2.D * r1.A - r1.D * r2.A, -r2.D, r1.C, r1.D, r2.C); }
+
+/// t ≤ 1: A − √C ≤ D.
+bool at_most_one(const Root& r) { return sign2(r.A - r.D, Rational(-1), r.C) <= 0; }
+
+using Part = DiscContact::Part;
+
+struct Met {
+    Root t;
+    Part part = Part::face;
+    bool at_start = false;
+};
+
+const Root k_zero{Rational(0), Rational(0), Rational(1)};
+
+/// The leg's entry into the circle of radius ρ (ρ² = rho2) around P, from outside it (|f|² > ρ², f = a − P):
+/// the smaller root of |f + t·d|² = ρ², t = (−β − √Δ)/(d·d) with β = d·f, Δ = β² − (d·d)(|f|² − ρ²), if the leg
+/// moves closer (β < 0), the line is a secant (Δ > 0: Δ = 0 is a tangent, no contact) and t ≤ 1.
+std::optional<Root> circle_entry(const Rational& dx, const Rational& dy, const Rational& fx, const Rational& fy,
+                                 const Rational& rho2) {
+    const Rational beta = dx * fx + dy * fy;
+    if (sgn(beta) >= 0) return std::nullopt;
+    const Rational dd = dx * dx + dy * dy;
+    const Rational delta = beta * beta - dd * (fx * fx + fy * fy - rho2);
+    if (sgn(delta) <= 0) return std::nullopt;
+    const Root r{-beta, delta, dd};
+    if (!at_most_one(r)) return std::nullopt;
+    return r;
+}
+
+/// Keeps m if it is earlier than best (a tie keeps best: the earlier candidate in the rules' order).
+void keep_earliest(std::optional<Met>& best, const Met& m) {
+    if (!best || compare(m.t, best->t) < 0) best = m;
+}
+
+std::optional<Met> wall_contact(Vec2 a, Vec2 b, double R, const Wall& w) {
+    if (a == b || boxes_apart(a, b, w.p0, w.p1, R)) return std::nullopt;
+    const Rational ax = Q(a.x), ay = Q(a.y), dx = Q(b.x) - ax, dy = Q(b.y) - ay;
+    const Rational R2 = Q(R) * Q(R);
+    const Rational ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y), ee = ex * ex + ey * ey;
+    const Rational wx = ax - Q(w.p0.x), wy = ay - Q(w.p0.y);
+    // The segment's point nearest to a: P0 + u·e, u = (a − P0)·e/(e·e) clamped to [0, 1]; its part: u ≤ 0 the
+    // cap at P0 (a zero-length wall too), u ≥ 1 the cap at P1, else the face.
+    Rational u = 0;
+    Part nearest = Part::cap0;
+    if (sgn(ee) != 0) {
+        u = (wx * ex + wy * ey) / ee;
+        if (sgn(u) <= 0) u = 0;
+        else if (u >= 1) u = 1, nearest = Part::cap1;
+        else nearest = Part::face;
+    }
+    const Rational fx = wx - u * ex, fy = wy - u * ey;  // a − X
+    const Rational dist2 = fx * fx + fy * fy;
+    // On the segment: no normal. Not moving closer (d·(a − X) ≥ 0, the slope of |X(t) − segment|² at t = 0): the
+    // distance to a convex set is convex along the leg, so it never decreases and nothing is entered.
+    if (sgn(dist2) == 0 || sgn(dx * fx + dy * fy) >= 0) return std::nullopt;
+    // Within reach (touching included) and moving closer: a contact at t = 0.
+    if (sgn(dist2 - R2) <= 0) return Met{k_zero, nearest, true};
+    std::optional<Met> best;
+    if (sgn(ee) != 0) {
+        // The face on a's side s = sign(n·w), n = (e_y, −e_x), w = a − P0, entered if the leg moves toward the line
+        // (s·n·d < 0): n·(a + t·d − P0) = s·R·|n|  ⇒  t_f = (s·n·w − √(R²·n·n)) / (−s·n·d).
+        const Rational nw = ey * wx - ex * wy, nd = ey * dx - ex * dy;
+        const int s = sgn(nw);
+        if (s != 0 && s * sgn(nd) < 0) {
+            const Rational S(s);
+            const Root r{S * nw, R2 * ee, -(S * nd)};
+            // 0 ≤ t_f ≤ 1, and the foot of X(t_f) on the closed segment: 0 ≤ (w + t_f·d)·e ≤ e·e, times D:
+            // w·e·D + A·(d·e) − (d·e)·√C in [0, e·e·D].
+            const Rational we = wx * ex + wy * ey, de = dx * ex + dy * ey, base = we * r.D + r.A * de;
+            if (sign2(r.A, Rational(-1), r.C) >= 0 && at_most_one(r) && sign2(base, -de, r.C) >= 0 &&
+                sign2(base - ee * r.D, -de, r.C) <= 0)
+                keep_earliest(best, {r, Part::face, false});
+        }
+    }
+    // The caps: circles of radius R around P0 and (a wall with a length) P1.
+    for (const Part cap : {Part::cap0, Part::cap1}) {
+        if (cap == Part::cap1 && sgn(ee) == 0) break;
+        const Vec2 P = cap == Part::cap0 ? w.p0 : w.p1;
+        if (const auto r = circle_entry(dx, dy, ax - Q(P.x), ay - Q(P.y), R2)) keep_earliest(best, {*r, cap, false});
+    }
+    return best;
+}
+
+std::optional<Met> bumper_contact(Vec2 a, Vec2 b, double R, const Bumper& u) {
+    // (R + r)·(1 + 2^−52) is above R + r however the sum rounds.
+    if (a == b || boxes_apart(a, b, u.c, u.c, (R + u.r) * (1.0 + 0x1p-52))) return std::nullopt;
+    const Rational dx = Q(b.x) - Q(a.x), dy = Q(b.y) - Q(a.y);
+    const Rational fx = Q(a.x) - Q(u.c.x), fy = Q(a.y) - Q(u.c.y);
+    const Rational rho = Q(R) + Q(u.r), rho2 = rho * rho;
+    const Rational dist2 = fx * fx + fy * fy;
+    // At the centre: no normal. Not moving closer: never closer.
+    if (sgn(dist2) == 0 || sgn(dx * fx + dy * fy) >= 0) return std::nullopt;
+    if (sgn(dist2 - rho2) <= 0) return Met{k_zero, Part::circle, true};
+    if (const auto r = circle_entry(dx, dy, fx, fy, rho2)) return Met{*r, Part::circle, false};
+    return std::nullopt;
+}
+
+}  // namespace
+
+bool disc_meets_wall(Vec2 a, Vec2 b, double R, const Wall& w) { return wall_contact(a, b, R, w).has_value(); }
+
+DiscContact disc_first_contact(Vec2 a, Vec2 b, double R, std::span<const Wall> walls, std::span<const Bumper> bumpers,
+                               long skip_wall, long skip_bumper) {
+    DiscContact out;
+    std::optional<Root> best;
+    const auto take = [&](const std::optional<Met>& m, DiscContact::Obstacle o, std::size_t i) {
+        // Strictly earlier only: a tie keeps the lower wall, then walls before bumpers.
+        if (!m || (best && compare(m->t, *best) >= 0)) return;
+        best = m->t;
+        out = {o, static_cast<std::uint32_t>(i), m->part, m->at_start};
+    };
+    for (std::size_t i = 0; i < walls.size(); ++i)
+        if (static_cast<long>(i) != skip_wall) take(wall_contact(a, b, R, walls[i]), DiscContact::Obstacle::wall, i);
+    for (std::size_t k = 0; k < bumpers.size(); ++k)
+        if (static_cast<long>(k) != skip_bumper)
+            take(bumper_contact(a, b, R, bumpers[k]), DiscContact::Obstacle::bumper, k);
+    return out;
+}
+
+bool disc_in_circle(Vec2 p, double R, const Circle& c) {
+    const Rational dx = Q(p.x) - Q(c.c.x), dy = Q(p.y) - Q(c.c.y), rho = Q(R) + Q(c.r);
+    return dx * dx + dy * dy <= rho * rho;
+}
+
+bool disc_in_rect(Vec2 p, double R, const Rect& r) {
+    // The distance from p to the closed rect, per axis: how far p lies outside [left, right], [bottom, top].
+    const auto outside = [](const Rational& x, const Rational& lo, const Rational& hi) {
+        return x < lo ? lo - x : x > hi ? x - hi : Rational(0);
+    };
+    const Rational dx = outside(Q(p.x), Q(r.left), Q(r.right)), dy = outside(Q(p.y), Q(r.bottom), Q(r.top));
+    return dx * dx + dy * dy <= Q(R) * Q(R);
+}
+
+}  // namespace ricochet::truth
