@@ -1,5 +1,6 @@
 // Disc and bumper properties: R = 0 is the point ball bit for bit; whole runs are symmetric under mirrors, quarter
-// turns, ball order and wall direction; no tunnelling, no escape and penetration within δ = 0 in closed polygons
+// turns and ball order; every check read for discs (oracle, boundary, bounce-side, symmetry, swap, translation)
+// on discs starting exactly touching what they meet; no tunnelling, no escape and penetration within δ = 0 in closed polygons
 // and through chains of walls; no ghost bounce at the joints of a straight chain; a disc meeting a bumper
 // head-on comes straight back. Generators: generators_discs.hpp.
 //
@@ -142,18 +143,17 @@ std::optional<Failure> radius_zero(KernelId k, const Scene& s) {
 
 // ---- symmetry -------------------------------------------------------------------------------------------
 
-/// A map of the plane exact on doubles (negations and swaps of coordinates) or of the scene's order.
-enum class Transform { mirror_x, mirror_y, turn, reverse_balls, swap_ends };
-constexpr Transform k_transforms[] = {Transform::mirror_x, Transform::mirror_y, Transform::turn, Transform::reverse_balls,
-                                      Transform::swap_ends};
+/// A map of the plane exact on doubles (negations and swaps of coordinates) or of the scene's order. (Walls walked
+/// the other way keep only a disc's decisions, not its rounded contact points: the `swap` check, DiscEveryCheck.)
+enum class Transform { mirror_x, mirror_y, turn, reverse_balls };
+constexpr Transform k_transforms[] = {Transform::mirror_x, Transform::mirror_y, Transform::turn, Transform::reverse_balls};
 
 const char* name(Transform t) {
     switch (t) {
         case Transform::mirror_x: return "mirrored in x";
         case Transform::mirror_y: return "mirrored in y";
         case Transform::turn: return "turned 90 degrees";
-        case Transform::reverse_balls: return "with its balls in reverse order";
-        default: return "with every wall's end points swapped";
+        default: return "with its balls in reverse order";
     }
 }
 
@@ -169,10 +169,7 @@ Vec2 map(Transform t, Vec2 p) {
 
 Scene transformed(const Scene& s, Transform t) {
     Scene out = s;
-    for (Wall& w : out.walls) {
-        w = {map(t, w.p0), map(t, w.p1)};
-        if (t == Transform::swap_ends) std::swap(w.p0, w.p1);
-    }
+    for (Wall& w : out.walls) w = {map(t, w.p0), map(t, w.p1)};
     for (Ball& b : out.balls) b = {map(t, b.pos), map(t, b.vel), b.r};
     for (Bumper& u : out.bumpers) u.c = map(t, u.c);
     if (t == Transform::reverse_balls) std::reverse(out.balls.begin(), out.balls.end());
@@ -192,7 +189,7 @@ std::optional<Failure> symmetric(KernelId k, const Scene& s) {
         const Run other = run(transformed(s, t), k);
         if (base.error || other.error) {
             if (base.error != other.error)
-                return fail(t == Transform::swap_ends ? Check::swap : Check::symmetry, fmt::format("{}, the run {} the accepted range, the scene's {}", name(t),
+                return fail(Check::symmetry, fmt::format("{}, the run {} the accepted range, the scene's {}", name(t),
                                                          other.error ? "leaves" : "stays in", base.error ? "leaves it" : "does not"));
             continue;
         }
@@ -208,9 +205,8 @@ std::optional<Failure> symmetric(KernelId k, const Scene& s) {
                 e.pos = map(t, e.pos);
                 e.vel = map(t, e.vel);
                 const bool same = i < events.size() && i < m && e == it->second[i];
-                // The walls' direction is the `swap` check's image, the maps and the balls' order `symmetry`'s.
                 if (!same)
-                    return fail(t == Transform::swap_ends ? Check::swap : Check::symmetry, fmt::format("{}: ball {}'s event {} should be `{}`, is `{}`", name(t), ball, i,
+                    return fail(Check::symmetry, fmt::format("{}: ball {}'s event {} should be `{}`, is `{}`", name(t), ball, i,
                                                              i < events.size() ? str(e) : std::string("none"),
                                                              i < m ? str(it->second[i]) : std::string("none")));
             }
@@ -350,7 +346,7 @@ TEST_P(Discs, DiscNoGhostBounce) {
     run_property({"DiscNoGhostBounce", Check::ghost_bounce, gen::sliding_chain_scene(8), no_ghost_bounce, 2000}, GetParam());
 }
 
-/// Mirrors in x and y, quarter turns, the balls' order and the walls' directions give the mapped run.
+/// Mirrors in x and y, quarter turns and the balls' order give the mapped run.
 TEST_P(Discs, DiscSymmetry) {
     RICOCHET_SKIP_UNLESS_DISCS(GetParam(), false);
     run_property({"DiscSymmetry", Check::symmetry, gen::disc_scene(6, !disc_refusal(GetParam(), true)), symmetric, 600},

@@ -56,7 +56,8 @@ Scene falling_disc() {
     return s;
 }
 
-CheckedRun falling_run() {
+/// The disc's fall, failing `penetration` at frame 3 against wall 0 (or bumper 0), as the check names it.
+CheckedRun falling_run(bool bumper = false) {
     CheckedRun run;
     run.frames_run = 3;
     run.events = {state(0, 0, {0, 3}), state(1, 0, {0, 2}), state(2, 0, {0, 1}), state(3, 0, {0, 0.5})};
@@ -64,6 +65,7 @@ CheckedRun falling_run() {
     f.check = Check::penetration;
     f.frame = 3;
     f.message = "the path piece (0, 1) -> (0, 0.5) comes closer than the radius 1 to wall 0";
+    f.against = FailureObstacle{bumper, 0, {0, 1}, {0, 0.5}};
     run.failure = f;
     return run;
 }
@@ -89,10 +91,26 @@ TEST(RenderView, ABumperADiscReachedIntoIsInTheView) {
     Scene s = falling_disc();
     s.walls.clear();
     s.bumpers = {{{0, -2}, 2}};
-    const std::string svg = render_svg(s, falling_run());
+    const std::string svg = render_svg(s, falling_run(true));
     EXPECT_TRUE(has(svg, "marked at (0, 0.5), where the disc of radius 1 comes nearest bumper 0")) << svg;
     EXPECT_TRUE(has(svg, "x in [-2.5, 2.5], y in [-3, 2]")) << svg;
     EXPECT_TRUE(has(svg, ">k0</text>"));
+}
+
+TEST(RenderView, ThePenetratedObstacleIsTheOneTheCheckNames) {
+    // The disc starts within reach of wall 0 (a post at x = 0.5 from y = 0 to 5), so `penetration` holds it to
+    // wall 0 only once a printed point is clear of it, which none is: the failure is wall 1, the floor, which the
+    // view marks, though the piece comes closer than R to wall 0 first in the scene's order.
+    Scene s = falling_disc();
+    s.walls = {{{0.5, 0}, {0.5, 5}}, {{-4, 0}, {4, 0}}};
+    CheckedRun run = falling_run();
+    run.failure->message = "the path piece (0, 1) -> (0, 0.5) comes closer than the radius 1 to wall 1";
+    run.failure->against = FailureObstacle{false, 1, {0, 1}, {0, 0.5}};
+    const std::string svg = render_svg(s, run);
+    EXPECT_TRUE(has(svg, "marked at (0, 0.5), where the disc of radius 1 comes nearest wall 1")) << svg;
+    // Without the check's word (a failure built by hand with no obstacle) nothing is marked as reached into.
+    run.failure->against.reset();
+    EXPECT_FALSE(has(render_svg(s, run), "comes nearest wall"));
 }
 
 TEST(RenderView, OnALongRunOnlyTheFramesAroundTheFailingOneAreDrawn) {
@@ -222,6 +240,7 @@ TEST(RenderView, ADiscReachingASubUlpDistancePastAWallGetsAnInset) {
     Scene s = falling_disc();
     CheckedRun run = falling_run();
     run.events.back() = state(3, 0, {0, 1 - 0x1p-53});
+    run.failure->against->to = {0, 1 - 0x1p-53};
     const std::string svg = render_svg(s, run);
     const std::string line = caption_after(svg, "inset: the disc reaches ");
     ASSERT_FALSE(line.empty()) << svg;

@@ -76,8 +76,9 @@
 //                  static shapes (frame 0); for each printed state p, v and every wall w, the wall walked the
 //                  other way gives p and Be = p + v the opposite side and the sweep from p the same hit or miss.
 //                  In a scene with a disc or a bumper, also: the scene with every wall walked the other way,
-//                  stepped in lockstep, prints ball by ball the run's events by value (a capsule has no
-//                  direction); the per-state part is asked of point balls only.
+//                  stepped in lockstep, meets per ball the same first obstacle (hit wall or bumped bumper) at
+//                  frames 0 and 1 (a capsule has no direction; a contact point is a rounded construction that
+//                  may round from either end); the per-state part is asked of point balls only.
 //   translation    For each offset t of a fixed list ((1, −2), (1024, 4096), (−3·2^30, 2^31), (2^40, −5·2^40),
 //                  (0.5, 0.25)) that moves every coordinate of the scene and every ball's Bs and Be = Bs + v
 //                  without rounding (and (Bs + t) + v = Be + t), the moved scene stepped in lockstep prints
@@ -98,8 +99,10 @@
 //   bounce-side    After a ball hits a wall from side s (the side of its previous printed point; along the
 //                  line, the side it last met that wall from), none of its printed points lies strictly on the
 //                  wall's side −s until its next hit, that hit's point included (BallMemory, kernel.hpp).
-//                  A disc is held to it after a face contact only: a hit whose point's foot on the wall's
-//                  line lies on the closed segment (truth::projects_onto_segment); a cap has no side, so a hit
+//                  A ball the disc frame steps (a disc, or any ball in a scene with bumpers) is held to it
+//                  after a face contact only, a hit whose point's foot on the wall's line lies on the closed
+//                  segment (truth::projects_onto_segment), and for its printed points whose foot lies on the
+//                  segment too (beyond an end its path may pass around the wall); a cap has no side, so a hit
 //                  elsewhere ends the rule, and so does a bump (a bumper has no side either).
 //   accuracy       kernel.hpp's "t_i and B_i within a few ulps of the exact crossing for well-conditioned
 //                  hits", made precise: for each leg a → b of the frame's legs that took a hit, with
@@ -206,6 +209,7 @@ struct FailurePiece {
 struct FailureObstacle {
     bool bumper = false;      ///< a bumper, else a wall
     std::uint32_t index = 0;  ///< its index among the scene's walls or bumpers
+    Vec2 from{}, to{};        ///< the piece of the path that came too close to it
 };
 
 /// The first broken invariant of a run.

@@ -1,7 +1,8 @@
 // bounce-side: a ball that hit a wall from one side prints no later point strictly on that wall's other
-// side until its next hit (BallMemory's rule, kernel.hpp), the next hit point included. A disc is held to it
-// after meeting a wall's face (its centre's foot on the segment: the bounce about ±n leaves the line behind);
-// a cap or a bumper has no side, and a bump, like a hit, ends the rule.
+// side until its next hit (BallMemory's rule, kernel.hpp), the next hit point included. A ball the disc frame
+// steps (a disc, or any ball among bumpers) is held to it after meeting a wall's face (the hit point's foot on
+// the segment: the bounce about ±n leaves the line behind), for its points whose foot is on the segment too
+// (beyond an end the path may pass around it); a cap or a bumper has no side, and a bump, like a hit, ends it.
 #include <fmt/format.h>
 
 #include "checks/frame_check.hpp"
@@ -13,7 +14,8 @@ namespace {
 
 class BounceSide final : public FrameCheck {
 public:
-    explicit BounceSide(const Scene& scene) : scene_(scene), at_(scene.balls.size()), kept_(scene.balls.size()) {
+    explicit BounceSide(const Scene& scene)
+        : scene_(scene), at_(scene.balls.size()), kept_(scene.balls.size()), bumpers_(!scene.bumpers.empty()) {
         for (std::size_t i = 0; i < scene.balls.size(); ++i) at_[i] = scene.balls[i].pos;
     }
 
@@ -23,7 +25,9 @@ public:
         for (const Event& e : f.events) {
             if (e.kind == Event::Kind::overlap) continue;
             Kept& k = kept_[e.ball];
-            if (k.from != 0 && truth::side(e.pos, scene_.walls[k.wall]) == -k.from && !found)
+            const bool disc_frame = bumpers_ || is_disc(scene_.balls[e.ball]);
+            if (k.from != 0 && truth::side(e.pos, scene_.walls[k.wall]) == -k.from && !found &&
+                (!disc_frame || truth::projects_onto_segment(e.pos, scene_.walls[k.wall])))
                 found = failure(Check::bounce_side, f.index, e.ball,
                                 fmt::format("the ball hit wall {} from side {}, but its {} {} lies on the other side "
                                             "before its next hit",
@@ -35,7 +39,7 @@ public:
                 // The side it met the wall from: that of the point it came from; coming along the line, the side
                 // it last met that wall from still holds.
                 const int from = truth::side(at_[e.ball], w);
-                if (is_disc(scene_.balls[e.ball]) && !truth::projects_onto_segment(e.pos, w)) k = {};
+                if ((bumpers_ || is_disc(scene_.balls[e.ball])) && !truth::projects_onto_segment(e.pos, w)) k = {};
                 else if (from != 0 || k.wall != e.index) k = {e.index, from};
             }
             at_[e.ball] = e.pos;
@@ -51,6 +55,7 @@ private:
     const Scene& scene_;
     std::vector<Vec2> at_;
     std::vector<Kept> kept_;
+    bool bumpers_;  ///< every ball is stepped by the disc frame
 };
 
 }  // namespace

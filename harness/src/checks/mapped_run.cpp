@@ -44,23 +44,38 @@ Event MappedRun::mapped(Event e) const {
 }
 
 std::optional<CheckFailure> MappedRun::frame(Check c, const Frame& f) {
+    if (map_.first_contacts && f.index > 1) return std::nullopt;
     events_.clear();
     if (f.index == 0) world_.start(events_);
     else (void)world_.step(events_);
     for (auto& v : want_) v.clear();
     for (auto& v : got_) v.clear();
-    for (const Event& e : f.events) want_[image_of(e.ball)].push_back(mapped(e));
-    for (const Event& e : events_) got_[e.ball].push_back(e);
+    // First contacts: a ball's first hit or bump, its kind and obstacle (the point is a rounded construction).
+    const auto keep = [&](std::vector<Event>& v, Event e) {
+        if (!map_.first_contacts) return v.push_back(e);
+        if ((e.kind != Event::Kind::hit && e.kind != Event::Kind::bump) || !v.empty()) return;
+        e.pos = e.vel = {};
+        v.push_back(e);
+    };
+    for (const Event& e : f.events) keep(want_[image_of(e.ball)], mapped(e));
+    for (const Event& e : events_) keep(got_[e.ball], e);
     for (std::uint32_t ball = 0; ball < want_.size(); ++ball) {
         const auto& want = want_[image_of(ball)];
         const auto& got = got_[image_of(ball)];
         for (std::size_t j = 0; j < std::max(want.size(), got.size()); ++j) {
             // By value: x − x is +0 in both runs, so −0 against +0 is no asymmetry.
             if (j < want.size() && j < got.size() && want[j] == got[j]) continue;
+            const auto say = [&](const std::vector<Event>& v) {
+                if (j >= v.size()) return std::string("nothing");
+                if (!map_.first_contacts) return fmt::format("'{}'", v[j]);
+                return fmt::format("{} {}", v[j].kind == Event::Kind::hit ? "wall" : "bumper", v[j].index);
+            };
+            if (map_.first_contacts)
+                return failure(c, f.index, ball,
+                               fmt::format("{} meets {} first in this frame, the run {}", map_.name, say(got), say(want)));
             return failure(c, f.index, ball,
                            fmt::format("{} gives {} as ball {}'s event {} in this frame, expected {}", map_.name,
-                                       j < got.size() ? fmt::format("'{}'", got[j]) : std::string("nothing"), ball, j,
-                                       j < want.size() ? fmt::format("'{}'", want[j]) : std::string("nothing")));
+                                       say(got), ball, j, say(want)));
         }
     }
     return std::nullopt;

@@ -1,7 +1,9 @@
 // Internal: a scene under an exact map, stepped in lockstep with the run and compared, ball by ball, with the run
-// mapped. How the symmetry and swap checks hold a scene with discs or bumpers to its images: every decision of a
-// disc is exact and its constructions round the same numbers up to sign and order, so the image of the run is the
-// run of the image (by value: −0 = +0).
+// mapped. How the symmetry and swap checks hold a scene with discs or bumpers to its images. Under a mirror or a
+// quarter turn every decision of a disc is exact and its constructions round the same numbers up to sign and
+// order, so the image of the run is the run of the image (by value: −0 = +0). A wall walked the other way is
+// the same capsule, but robust rounds a face contact's t_i from the wall's first end point: there only the
+// decisions are the same, each ball's first contact at frames 0 and 1 (as `translation` compares them).
 #pragma once
 
 #include <optional>
@@ -19,6 +21,7 @@ struct SceneMap {
     Vec2 (*point)(Vec2) = nullptr;  ///< points and velocities; nullptr: unchanged
     bool reverse_walls = false;
     bool reverse_balls = false;
+    bool first_contacts = false;    ///< compare each ball's first hit or bump at frames 0 and 1 only
 };
 
 /// The scene under m: walls, balls, bumpers, circles and rects mapped (a rect's corners re-sorted), radii kept.

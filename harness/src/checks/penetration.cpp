@@ -45,7 +45,8 @@ public:
                                                    "expected every piece at least R + r from every bumper it was clear of",
                                                    from, e.pos, R, scene_.bumpers[k - scene_.walls.size()].r,
                                                    k - scene_.walls.size(), scene_.bumpers[k - scene_.walls.size()]));
-                found->against = FailureObstacle{!wall, static_cast<std::uint32_t>(wall ? k : k - scene_.walls.size())};
+                found->against =
+                    FailureObstacle{!wall, static_cast<std::uint32_t>(wall ? k : k - scene_.walls.size()), from, e.pos};
             }
         }
         return found;

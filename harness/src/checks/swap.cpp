@@ -1,6 +1,6 @@
 // swap: the static tests are symmetric in their arguments, and a wall walked the other way gives the
-// opposite side and the same hit or miss. A scene with a disc or a bumper also runs, with every wall walked the
-// other way, as the same run (a wall's capsule has no direction; mapped_run.hpp).
+// opposite side and the same hit or miss. A scene with a disc or a bumper, with every wall walked the other way,
+// meets the same obstacles first (a wall's capsule has no direction; mapped_run.hpp).
 #include <fmt/format.h>
 
 #include "checks/frame_check.hpp"
@@ -58,7 +58,7 @@ public:
     }
 
 private:
-    static constexpr SceneMap k_reversed{"the run with every wall walked the other way", nullptr, true, false};
+    static constexpr SceneMap k_reversed{"the run with every wall walked the other way", nullptr, true, false, true};
 
     const Scene& scene_;
     KernelId kernel_;

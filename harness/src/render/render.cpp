@@ -133,12 +133,12 @@ struct Path {
     }
 };
 
-/// What a failure was against, when the check names no piece: the obstacle the failing piece is not clear of
-/// (`penetration`), found exactly (truth.hpp).
+/// What a failure was against, when the check names no piece: the obstacle the failing piece is not clear of, as
+/// `penetration` names it (CheckFailure::against).
 struct Obstacle {
     bool wall = true;          ///< a wall, else a bumper
     std::uint32_t index = 0;   ///< the wall's or the bumper's index
-    Vec2 from, to;             ///< the failing frame's first piece not clear of it
+    Vec2 from, to;             ///< the piece that came too close to it
 };
 
 /// The failing frame: the failing ball's path in it (from its state before the frame), the walls it hit
@@ -267,36 +267,22 @@ public:
             ff.piece = failure.piece;
         }
         if (failure.ball < scene_.balls.size()) ff.radius = scene_.balls[failure.ball].r;
-        // A disc that reached into a wall or a bumper it was clear of: what it reached into is what the view must
-        // show, with the disc; the mark goes where the piece comes nearest it.
-        if (failure.check == Check::penetration && ff.radius > 0)
-            if ((ff.against = obstacle_of(ff.points, ff.radius))) {
-                const Obstacle& o = *ff.against;
-                if (o.wall) {
-                    ff.walls.push_back(o.index);
-                    ff.mark = nearest_to_wall(o.from, o.to, scene_.walls[o.index]);
-                } else {
-                    ff.mark = nearest_on(o.from, o.to, scene_.bumpers[o.index].c);
-                }
+        // A disc that reached into a wall or a bumper it was clear of: the view shows that obstacle, as the check
+        // names it (one the disc started within reach of does not count until a printed point is clear of it), with
+        // the disc; the mark goes where the piece comes nearest it.
+        if (failure.check == Check::penetration && ff.radius > 0 && failure.against &&
+            failure.against->index < (failure.against->bumper ? scene_.bumpers.size() : scene_.walls.size())) {
+            const FailureObstacle& a = *failure.against;
+            ff.against = Obstacle{!a.bumper, a.index, a.from, a.to};
+            if (!a.bumper) {
+                ff.walls.push_back(a.index);
+                ff.mark = nearest_to_wall(a.from, a.to, scene_.walls[a.index]);
+            } else {
+                ff.mark = nearest_on(a.from, a.to, scene_.bumpers[a.index].c);
             }
+        }
         failing_ = std::move(ff);
         open_window(failure.frame);
-    }
-
-    /// The first wall, else bumper, that the first piece of points (in order) not clear of it comes closer to
-    /// than radius allows (truth.hpp, exactly, as `penetration` decides), or nothing.
-    std::optional<Obstacle> obstacle_of(const std::vector<Vec2>& points, double radius) const {
-        for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-            const Vec2 a = points[i], b = points[i + 1];
-            // Degenerate: a lecture kernel's NaN or infinity is no piece.
-            if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) continue;
-            for (std::uint32_t w = 0; w < scene_.walls.size(); ++w)
-                if (!truth::clear_of_wall(a, b, scene_.walls[w], radius)) return Obstacle{true, w, a, b};
-            for (std::uint32_t k = 0; k < scene_.bumpers.size(); ++k)
-                if (!truth::clear_of_circle(a, b, scene_.bumpers[k].c, radius, scene_.bumpers[k].r))
-                    return Obstacle{false, k, a, b};
-        }
-        return std::nullopt;
     }
 
     /// Path i, moved out.
