@@ -1,6 +1,7 @@
 // Internal: one check as the checker runs it, frame after frame (the definitions are in checks.hpp).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -56,6 +57,12 @@ std::unique_ptr<FrameCheck> make_plan(const Scene& scene, KernelId kernel, const
 /// A failure of check c at frame f for ball.
 inline CheckFailure failure(Check c, std::int64_t f, std::uint32_t ball, std::string message) {
     return CheckFailure{c, f, ball, std::move(message), std::nullopt, std::nullopt};
+}
+
+/// The leg's ends are finite: a leg with an infinite or NaN end is not a segment, and no exact decision exists to
+/// compare the kernel's with (lecture-float's arithmetic overflows to one). The oracle fails such a leg.
+inline bool finite_leg(const TracedLeg& leg) {
+    return std::isfinite(leg.from.x) && std::isfinite(leg.from.y) && std::isfinite(leg.to.x) && std::isfinite(leg.to.y);
 }
 
 /// Compares two frames' events: bit for bit (bits) or by value. Describes the first difference as `who`

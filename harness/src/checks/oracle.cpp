@@ -1,6 +1,5 @@
 // oracle: every decision the kernel makes equals the exact one (truth.hpp), leg by leg on its own legs,
 // and every static test the scene poses. A ball stepped as a disc has its legs judged by oracle_discs.cpp.
-#include <cmath>
 #include <fmt/format.h>
 
 #include "checks/frame_check.hpp"
@@ -113,10 +112,7 @@ private:
         for (std::size_t l = 0; l < trace.legs.size(); ++l) {
             const TracedLeg& leg = trace.legs[l];
             const std::string where = fmt::format("leg {} ({} -> {})", l, leg.from, leg.to);
-            // A leg with an infinite or NaN end is not a segment: no exact decision exists to compare with
-            // (lecture-float's arithmetic overflows to one).
-            if (!std::isfinite(leg.from.x) || !std::isfinite(leg.from.y) || !std::isfinite(leg.to.x) ||
-                !std::isfinite(leg.to.y))
+            if (!finite_leg(leg))
                 return fail(fmt::format("{}: the kernel swept a leg whose end is not finite", where));
             if (leg.blocked) {
                 ++blocked;

@@ -2,8 +2,6 @@
 // disc contacts.
 #include "checks/oracle_discs.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
 
 #include "ricochet/format.hpp"
@@ -46,8 +44,7 @@ std::optional<CheckFailure> DiscOracle::legs(const Frame& f, std::uint32_t i) {
     for (std::size_t l = 0; l < trace.legs.size(); ++l) {
         const TracedLeg& leg = trace.legs[l];
         const std::string where = fmt::format("leg {} ({} -> {})", l, leg.from, leg.to);
-        if (!std::isfinite(leg.from.x) || !std::isfinite(leg.from.y) || !std::isfinite(leg.to.x) ||
-            !std::isfinite(leg.to.y))
+        if (!finite_leg(leg))
             return fail(fmt::format("{}: the kernel swept a leg whose end is not finite", where));
         std::fill(decided.begin(), decided.end(), false);
         for (std::uint32_t d = leg.first_decision; d < leg.first_decision + leg.decision_count; ++d) {
