@@ -101,9 +101,10 @@
 //                  wall's side −s until its next hit, that hit's point included (BallMemory, kernel.hpp).
 //                  A ball the disc frame steps (a disc, or any ball in a scene with bumpers) is held to it
 //                  after a face contact only, a hit whose point's foot on the wall's line lies on the closed
-//                  segment (truth::projects_onto_segment), and for its printed points whose foot lies on the
-//                  segment too (beyond an end its path may pass around the wall); a cap has no side, so a hit
-//                  elsewhere ends the rule, and so does a bump (a bumper has no side either).
+//                  segment (truth::projects_onto_segment), s the side of that hit point (else of the point it
+//                  came from), and for its printed points whose foot lies on the segment too (beyond an end its
+//                  path may pass around the wall); a cap has no side, so a hit elsewhere ends the rule, and so
+//                  does a bump (a bumper has no side either).
 //   accuracy       kernel.hpp's "t_i and B_i within a few ulps of the exact crossing for well-conditioned
 //                  hits", made precise: for each leg a → b of the frame's legs that took a hit, with
 //                  e = P1 − P0 of its wall and d = b − a, if |e × d| ≥ |e|∞·|d|∞ / 4 and |e|∞, |d|∞ ≥ 2^−400

@@ -31,15 +31,21 @@ public:
                 found = failure(Check::bounce_side, f.index, e.ball,
                                 fmt::format("the ball hit wall {} from side {}, but its {} {} lies on the other side "
                                             "before its next hit",
-                                            k.wall, k.from, e.kind == Event::Kind::hit ? "hit point" : "end of frame",
+                                            k.wall, k.from,
+                                            e.kind == Event::Kind::hit    ? "hit point"
+                                            : e.kind == Event::Kind::bump ? "bump point"
+                                                                          : "end of frame",
                                             e.pos));
             if (e.kind == Event::Kind::bump) k = {};
             if (e.kind == Event::Kind::hit) {
                 const Wall& w = scene_.walls[e.index];
                 // The side it met the wall from: that of the point it came from; coming along the line, the side
-                // it last met that wall from still holds.
-                const int from = truth::side(at_[e.ball], w);
-                if ((bumpers_ || is_disc(scene_.balls[e.ball])) && !truth::projects_onto_segment(e.pos, w)) k = {};
+                // it last met that wall from still holds. The disc frame's: that of its hit point, off the line
+                // by R or walked back (a leg almost along the wall may cross the line beyond an end, then meet
+                // the face from the other side), else the point it came from.
+                int from = disc_frame ? truth::side(e.pos, w) : 0;
+                if (from == 0) from = truth::side(at_[e.ball], w);
+                if (disc_frame && !truth::projects_onto_segment(e.pos, w)) k = {};
                 else if (from != 0 || k.wall != e.index) k = {e.index, from};
             }
             at_[e.ball] = e.pos;
