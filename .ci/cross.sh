@@ -58,7 +58,8 @@ say() { echo "cross: $*" >&2; }
 updated=0
 apt_update() {
   [ $updated = 1 ] && return 0
-  apt-get update -q >/dev/null || { say "apt-get update failed"; return 1; }
+  # Tried again while a mirror is mid-sync; after that the install (or download) decides, with the lists apt has.
+  bash cli/apt-update.sh || say "apt-get update failed; installing from the package lists apt has"
   updated=1
 }
 missing() {  # the packages among "$@" that are not installed

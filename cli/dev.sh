@@ -70,7 +70,8 @@ if [ "${RICOCHET_NO_APT:-0}" != 1 ]; then
     echo "dev.sh: installing ${missing[*]}"
     if [ "$(id -u)" != 0 ]; then echo "dev.sh: run as root to install packages" >&2; exit 2; fi
     export DEBIAN_FRONTEND=noninteractive
-    apt-get update -qq
+    # A mirror caught mid-sync fails `apt-get update` for a moment: tried again, then the install decides.
+    bash cli/apt-update.sh || echo "dev.sh: installing from the package lists apt has" >&2
     apt-get install -y -qq --no-install-recommends "${missing[@]}"
   fi
 fi
