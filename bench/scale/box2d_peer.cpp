@@ -1,9 +1,12 @@
 // The Box2D 2.4.1 peer (box2d_peer.hpp).
 #include "box2d_peer.hpp"
 
+#include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
+#include <box2d/b2_distance.h>
 #include <box2d/b2_dynamic_tree.h>
 #include <box2d/b2_edge_shape.h>
+#include <box2d/b2_time_of_impact.h>
 
 #include <cstdint>
 
@@ -81,6 +84,96 @@ void Box2dPeer::step(FloatBall& ball, std::vector<Vec2>* hits) const {
         v = v - 2.0f * b2Dot(v, cb.normal) * cb.normal;
         rest *= 1.0f - cb.fraction;
         last = cb.hit;
+        if (hits != nullptr) hits->push_back({p.x, p.y});
+    }
+    ball = {p.x, p.y, v.x, v.y};
+}
+
+namespace {
+
+/// The tree's proxies whose boxes meet a query box, as their edges' indices.
+struct Candidates {
+    const b2DynamicTree* tree;
+    std::vector<std::uintptr_t>* out;
+    bool QueryCallback(int32 proxy) {
+        out->push_back(reinterpret_cast<std::uintptr_t>(tree->GetUserData(proxy)));
+        return true;
+    }
+};
+
+/// A sweep that does not turn: the centre from c0 to c, no rotation.
+b2Sweep straight(b2Vec2 c0, b2Vec2 c) {
+    b2Sweep s;
+    s.localCenter.SetZero();
+    s.c0 = c0;
+    s.c = c;
+    s.a0 = s.a = 0.0f;
+    s.alpha0 = 0.0f;
+    return s;
+}
+
+}  // namespace
+
+void Box2dPeer::step_disc(FloatBall& ball, float r, std::vector<Vec2>* hits) const {
+    b2CircleShape circle;
+    circle.m_radius = r;
+    const b2Sweep edge_at_rest = straight(b2Vec2_zero, b2Vec2_zero);
+    const b2Transform identity(b2Vec2_zero, b2Rot(0.0f));
+    b2Vec2 p(ball.x, ball.y), v(ball.vx, ball.vy);
+    float rest = 1.0f;
+    std::vector<std::uintptr_t> candidates;
+    for (int bounce = 0; bounce < 16; ++bounce) {
+        const b2Vec2 end = p + rest * v;
+        if (p == end) break;
+        // The candidates: the edges whose boxes meet the leg's box grown by r (the edges' own boxes carry their
+        // polygon radius).
+        b2AABB box;
+        box.lowerBound = b2Min(p, end) - b2Vec2(r, r);
+        box.upperBound = b2Max(p, end) + b2Vec2(r, r);
+        candidates.clear();
+        Candidates query{&impl_->tree, &candidates};
+        impl_->tree.Query(&query, box);
+        float first = 1.0f;
+        b2Vec2 normal(0.0f, 0.0f);
+        bool found = false;
+        for (std::uintptr_t i : candidates) {
+            b2TOIInput in;
+            in.proxyA.Set(&circle, 0);
+            in.proxyB.Set(&impl_->edges[i], 0);
+            in.sweepA = straight(p, end);
+            in.sweepB = edge_at_rest;
+            in.tMax = first;
+            b2TOIOutput out;
+            b2TimeOfImpact(&out, &in);
+            // Touching within [0, first]; separated (none), overlapped (already inside: Box2D leaves it to the
+            // contact solver, which this loop does not have) and failed are no contact.
+            if (out.state != b2TOIOutput::e_touching || out.t >= first) continue;
+            // The normal there: from the edge's nearest point to the centre.
+            b2DistanceInput d;
+            d.proxyA.Set(&circle, 0);
+            d.proxyB.Set(&impl_->edges[i], 0);
+            d.transformA = b2Transform(p + out.t * (end - p), b2Rot(0.0f));
+            d.transformB = identity;
+            d.useRadii = false;
+            b2SimplexCache cache;
+            cache.count = 0;
+            b2DistanceOutput dist;
+            b2Distance(&dist, &cache, &d);
+            b2Vec2 n = dist.pointA - dist.pointB;
+            if (n.Normalize() < b2_epsilon) continue;
+            // A leg starting at the edge it just left touches it at t = 0 while moving away: no contact.
+            if (b2Dot(v, n) >= 0.0f) continue;
+            first = out.t;
+            normal = n;
+            found = true;
+        }
+        if (!found) {
+            p = end;
+            break;
+        }
+        p = p + first * (end - p);
+        v = v - 2.0f * b2Dot(v, normal) * normal;
+        rest *= 1.0f - first;
         if (hits != nullptr) hits->push_back({p.x, p.y});
     }
     ball = {p.x, p.y, v.x, v.y};

@@ -9,12 +9,15 @@
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
+#include <initializer_list>
 #include <random>
 #include <thread>
+#include <utility>
 
 #include <time.h>
 
 #include "box2d_peer.hpp"
+#include "chipmunk_peer.hpp"
 #include "ricochet_bench/result_file.hpp"
 #include "ricochet_bench/targets.hpp"
 #include "ricochet/checks.hpp"
@@ -31,6 +34,16 @@ struct Box2dPeer::Impl {};
 Box2dPeer::Box2dPeer(std::span<const Wall>) {}
 Box2dPeer::~Box2dPeer() = default;
 void Box2dPeer::step(FloatBall&, std::vector<Vec2>*) const {}
+void Box2dPeer::step_disc(FloatBall&, float, std::vector<Vec2>*) const {}
+}  // namespace scale
+#endif
+#ifndef RICOCHET_HAVE_CHIPMUNK
+namespace scale {
+bool chipmunk_available() { return false; }
+struct ChipmunkPeer::Impl {};
+ChipmunkPeer::ChipmunkPeer(std::span<const Wall>) {}
+ChipmunkPeer::~ChipmunkPeer() = default;
+void ChipmunkPeer::step(Ball&, std::vector<Vec2>*) const {}
 }  // namespace scale
 #endif
 
@@ -133,6 +146,26 @@ bool tunnels(Vec2 q, Vec2 r, std::span<const Wall> walls, const WallGrid& grid, 
     return false;
 }
 
+/// True if the centre c is closer than reach to a wall (squared distances in double: the margin the bench asks,
+/// a hundredth of a cell, is far above their rounding); the grid supplies the candidates.
+bool within(Vec2 c, double reach, std::span<const Wall> walls, const WallGrid& grid,
+            std::vector<std::uint32_t>& scratch) {
+    scratch.clear();
+    grid.query_near(c, c, reach, scratch);
+    for (std::uint32_t i : scratch) {
+        const Wall& w = walls[i];
+        const Vec2 d = w.p1 - w.p0, e = c - w.p0;
+        // The nearest point of the segment: p0 + s·d, s = (e·d)/(d·d) clamped to [0, 1].
+        const double dd = dot(d, d), s = dd > 0 ? std::clamp(dot(e, d) / dd, 0.0, 1.0) : 0.0;
+        const Vec2 off = e - s * d;
+        if (dot(off, off) < reach * reach) return true;
+    }
+    return false;
+}
+
+Vec2 centre_of(const FloatBall& b) { return {b.x, b.y}; }
+Vec2 centre_of(const Ball& b) { return b.pos; }
+
 struct Row {
     std::string sweep, method;
     std::size_t walls = 0, balls = 0;
@@ -141,6 +174,7 @@ struct Row {
     double cpu_ns_per_ball_frame = 0;  // this thread's CPU time (one-thread rows)
     double hits_per_ball_frame = -1;  // from the checked frames, -1 if not checked
     long long tunnels = -1;           // pieces crossing a wall in the checked frames, -1 if not checked
+    long long penetrations = -1;      // disc rows: contacts or ends inside a wall's reach, -1 if not checked
     std::size_t checked_ball_frames = 0;
 };
 
@@ -190,11 +224,12 @@ void measure(const Config& cfg, const std::string& sweep, int n, std::size_t bal
         r.ns_per_ball_frame = t.wall * 1e9 / static_cast<double>(ball_count);
         r.cpu_ns_per_ball_frame = t.cpu * 1e9 / static_cast<double>(ball_count);
         rows.push_back(r);
-        fmt::print("{:<7} {:>8} walls {:>8} balls  {:<13} {:>10.4f} ms/frame {:>9.1f} ns/ball-frame ({:>7.1f} CPU)",
+        fmt::print("{:<7} {:>8} walls {:>8} balls  {:<17} {:>10.4f} ms/frame {:>9.1f} ns/ball-frame ({:>7.1f} CPU)",
                    r.sweep, r.walls, r.balls, r.method, r.ms_per_frame, r.ns_per_ball_frame, r.cpu_ns_per_ball_frame);
         if (r.tunnels >= 0)
-            fmt::print("  {:.3f} hits/ball-frame, {} tunnels in {} checked ball-frames", r.hits_per_ball_frame,
-                       r.tunnels, r.checked_ball_frames);
+            fmt::print("  {:.3f} hits/ball-frame, {} tunnels{} in {} checked ball-frames", r.hits_per_ball_frame,
+                       r.tunnels, r.penetrations >= 0 ? fmt::format(", {} penetrations", r.penetrations) : "",
+                       r.checked_ball_frames);
         fmt::print("\n");
         std::fflush(stdout);
     };
@@ -272,7 +307,10 @@ void measure(const Config& cfg, const std::string& sweep, int n, std::size_t bal
                     for (const Event& e : frame) hits += e.kind == Event::Kind::hit || e.kind == Event::Kind::bump;
                 };
                 const CheckedRun run = run_checked(checked, KernelId::robust, cfg.check_frames, checks, options);
-                r.tunnels = run.failure || run.error ? 1 : 0;
+                // The first failure only (the checked run stops there): never expected.
+                const bool penetrated = run.failure && run.failure->check == Check::penetration;
+                r.tunnels = (run.failure && !penetrated) || run.error ? 1 : 0;
+                r.penetrations = penetrated ? 1 : 0;
                 r.checked_ball_frames = cb * static_cast<std::size_t>(cfg.check_frames);
                 r.hits_per_ball_frame = static_cast<double>(hits) / static_cast<double>(r.checked_ball_frames);
             }
@@ -289,39 +327,80 @@ void measure(const Config& cfg, const std::string& sweep, int n, std::size_t bal
             stepped("robust-disc-brute", discs, BroadPhase::none, false);
     }
 
-    if (scale::box2d_available()) {
-        const scale::Box2dPeer peer(walls);
-        std::vector<FloatBall> fb(ball_count);
-        for (std::size_t i = 0; i < ball_count; ++i)
-            fb[i] = {static_cast<float>(start[i].pos.x), static_cast<float>(start[i].pos.y),
-                     static_cast<float>(start[i].vel.x), static_cast<float>(start[i].vel.y)};
-        Row r = base("box2d-2.4.1");
+    // The peers, each through its own loop (box2d_peer.hpp, chipmunk_peer.hpp), the points as they start and, in
+    // the walls sweep, the discs of the disc rows. Checked over the first cb balls for check_frames frames: the
+    // centre's pieces through the walls (tunnels) and, for discs, every contact and frame end whose centre is
+    // closer to a wall than R − 0.01 (penetrations). Box2D stops a circle R − 0.005 from an edge by design (its
+    // edges' skin of 2 slops, less the 3 slops its time of impact aims short of), give or take a quarter slop:
+    // 0.01 is twice its slop.
+    const std::vector<Ball> discs = walls_sweep ? scale::make_discs(ball_count, n, 2000 + ball_count) : std::vector<Ball>{};
+    const auto peer = [&](const char* method, auto states, auto step, bool disc) {
+        Row row = base(method);
         {
-            std::vector<FloatBall> c(fb.begin(), fb.begin() + static_cast<std::ptrdiff_t>(cb));
+            auto c = states;
+            c.resize(cb);
             std::vector<Vec2> hits;
-            long long t = 0, h = 0;
+            long long t = 0, pen = 0, h = 0;
             for (int f = 0; f < cfg.check_frames; ++f)
-                for (FloatBall& b : c) {
+                for (auto& b : c) {
                     hits.clear();
-                    Vec2 q{b.x, b.y};
-                    peer.step(b, &hits);
+                    Vec2 q = centre_of(b);
+                    step(b, &hits);
                     h += static_cast<long long>(hits.size());
-                    hits.push_back({b.x, b.y});
+                    hits.push_back(centre_of(b));
                     for (Vec2 p : hits) {
                         t += tunnels(q, p, walls, grid, scratch);
+                        if (disc) pen += within(p, scale::k_disc_radius - 0.01, walls, grid, scratch);
                         q = p;
                     }
                 }
-            r.tunnels = t;
-            r.checked_ball_frames = cb * static_cast<std::size_t>(cfg.check_frames);
-            r.hits_per_ball_frame = static_cast<double>(h) / static_cast<double>(r.checked_ball_frames);
+            row.tunnels = t;
+            row.penetrations = disc ? pen : -1;
+            row.checked_ball_frames = cb * static_cast<std::size_t>(cfg.check_frames);
+            row.hits_per_ball_frame = static_cast<double>(h) / static_cast<double>(row.checked_ball_frames);
         }
-        finish(r, time_per_frame(
-                      [&] {
-                          for (FloatBall& b : fb) peer.step(b, nullptr);
-                      },
-                      cfg.budget));
+        finish(row, time_per_frame(
+                        [&] {
+                            for (auto& b : states) step(b, nullptr);
+                        },
+                        cfg.budget));
+    };
+    if (scale::box2d_available()) {
+        const scale::Box2dPeer box2d(walls);
+        const auto floats = [](const std::vector<Ball>& balls) {
+            std::vector<FloatBall> fb;
+            for (const Ball& b : balls)
+                fb.push_back({static_cast<float>(b.pos.x), static_cast<float>(b.pos.y), static_cast<float>(b.vel.x),
+                              static_cast<float>(b.vel.y)});
+            return fb;
+        };
+        peer("box2d-2.4.1", floats(start), [&](FloatBall& b, std::vector<Vec2>* hits) { box2d.step(b, hits); }, false);
+        if (walls_sweep) {
+            const float r = static_cast<float>(scale::k_disc_radius);
+            peer("box2d-disc-2.4.1", floats(discs),
+                 [&](FloatBall& b, std::vector<Vec2>* hits) { box2d.step_disc(b, r, hits); }, true);
+        }
     }
+    if (scale::chipmunk_available()) {
+        const scale::ChipmunkPeer chipmunk(walls);
+        const auto step = [&](Ball& b, std::vector<Vec2>* hits) { chipmunk.step(b, hits); };
+        peer("chipmunk-7", start, step, false);
+        if (walls_sweep) peer("chipmunk-disc-7", discs, step, true);
+    }
+}
+
+/// The targets' peers column: each peer's row at ours's point, its time and ratio to ours, its failures.
+std::string peers_column(const std::vector<Row>& rows, const Row& ours,
+                         std::initializer_list<std::pair<const char*, const char*>> peers) {
+    std::string out;
+    for (const auto& [method, name] : peers)
+        for (const Row& p : rows)
+            if (p.sweep == ours.sweep && p.walls == ours.walls && p.balls == ours.balls && p.method == method) {
+                out += fmt::format("{}{} {:.0f} ns ({:.1f}×), {} tunnels", out.empty() ? "" : "; ", name,
+                                   p.ns_per_ball_frame, p.ns_per_ball_frame / ours.ns_per_ball_frame, p.tunnels);
+                if (p.penetrations >= 0) out += fmt::format(", {} penetrations", p.penetrations);
+            }
+    return out;
 }
 
 /// The maze targets: robust+grid at most limit ns per ball-frame in the walls sweep's maze of about `walls` walls
@@ -337,10 +416,7 @@ bench::Verdict maze_target(const std::vector<Row>& rows, std::string label, doub
             v.value = r.ns_per_ball_frame;
             v.robust = fmt::format("{:.0f} ns per ball-frame ({} walls, {} balls), {} tunnels", r.ns_per_ball_frame,
                                    r.walls, r.balls, r.tunnels);
-            for (const Row& p : rows)
-                if (at(p, "box2d-2.4.1"))
-                    v.peers = fmt::format("Box2D 2.4.1 {:.0f} ns ({:.1f}×), {} tunnels", p.ns_per_ball_frame,
-                                          p.ns_per_ball_frame / r.ns_per_ball_frame, p.tunnels);
+            v.peers = peers_column(rows, r, {{"box2d-2.4.1", "Box2D 2.4.1"}, {"chipmunk-7", "Chipmunk 7"}});
         }
     return v;
 }
@@ -361,7 +437,9 @@ bench::Verdict disc_target(const std::vector<Row>& rows, std::string label, doub
                     v.robust = fmt::format("{:.0f} ns per ball-frame, points {:.0f} ns: {:.2f}× ({} walls, {} balls, R = "
                                            "{}), {} failed checks",
                                            d.ns_per_ball_frame, p.ns_per_ball_frame, v.value, d.walls, d.balls,
-                                           scale::k_disc_radius, d.tunnels);
+                                           scale::k_disc_radius, d.tunnels + d.penetrations);
+                    v.peers = peers_column(rows, d, {{"box2d-disc-2.4.1", "Box2D 2.4.1 discs"},
+                                                     {"chipmunk-disc-7", "Chipmunk 7 discs"}});
                 }
     return v;
 }
@@ -392,7 +470,9 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
     const unsigned max_threads = threads == 0 ? hw : threads;
     fmt::print("ricochet bench scale{}: robust kernel, maze of unit cells, balls at 0.05-0.5 cells/frame; one thread "
                "unless stated; {} hardware threads{}\n",
-               size_flag(size), hw, scale::box2d_available() ? "" : "; Box2D not found, its column skipped");
+               size_flag(size), hw,
+               std::string(scale::box2d_available() ? "" : "; Box2D not found, its columns skipped") +
+                   (scale::chipmunk_available() ? "" : "; Chipmunk not found, its columns skipped"));
     std::vector<Row> rows;
     for (std::size_t w : cfg.wall_sizes) measure(cfg, "walls", lattice_for(w), cfg.sweep_balls, rows);
     for (std::size_t b : cfg.ball_sizes) measure(cfg, "balls", lattice_for(cfg.maze_walls), b, rows);
@@ -444,15 +524,16 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
     {
         bench::ResultFile csv(csv_path);
         csv.print("sweep,method,walls,balls,threads,ms_per_frame,ns_per_ball_frame,cpu_ns_per_ball_frame,"
-                  "hits_per_ball_frame,tunnels,checked_ball_frames\n");
+                  "hits_per_ball_frame,tunnels,checked_ball_frames,penetrations\n");
         for (const Row& r : rows)
-            csv.print("{},{},{},{},{},{},{},{},{},{},{}\n", r.sweep, r.method, r.walls, r.balls, r.threads, r.ms_per_frame,
-                      r.ns_per_ball_frame, r.cpu_ns_per_ball_frame, r.hits_per_ball_frame, r.tunnels,
-                      r.checked_ball_frames);
+            csv.print("{},{},{},{},{},{},{},{},{},{},{},{}\n", r.sweep, r.method, r.walls, r.balls, r.threads,
+                      r.ms_per_frame, r.ns_per_ball_frame, r.cpu_ns_per_ball_frame, r.hits_per_ball_frame, r.tunnels,
+                      r.checked_ball_frames, r.penetrations);
         csv.close();
     }
-    const std::vector<std::string> methods{"robust+grid", "robust+bvh", "robust-brute", "box2d-2.4.1",
-                                           "robust-disc+grid"};
+    const std::vector<std::string> methods{"robust+grid",      "robust+bvh",       "robust-brute",
+                                           "box2d-2.4.1",      "chipmunk-7",       "robust-disc+grid",
+                                           "box2d-disc-2.4.1", "chipmunk-disc-7"};
     {
         bench::ResultFile dat(out_dir + "/scale.dat");
         for (const char* sweep : {"walls", "balls"})

@@ -1,7 +1,7 @@
 // `ricochet bench scale`: per-frame cost as walls and balls grow, brute force against the broad
-// phase (grid and BVH), side by side with the way a Box2D 2.4.1 user would do it (walls in a
-// b2DynamicTree, one RayCast per ball per leg), with each method's tunnelling count; discs of a tenth of a
-// cell against the same balls as points in the walls sweep; CSV and chart.
+// phase (grid and BVH), side by side with the way Box2D 2.4.1 and Chipmunk 7 users would do it (box2d_peer.hpp,
+// chipmunk_peer.hpp), with each method's tunnelling count; discs of a tenth of a cell against the same balls as
+// points in the walls sweep, the peers' discs beside them with their penetrations; CSV and chart.
 #pragma once
 
 #include <cstddef>

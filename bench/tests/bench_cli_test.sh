@@ -77,8 +77,14 @@ case "$case" in
                    grep -q '^threads,robust+grid,[0-9]*,1000,2,' "$csv" || fail "no 2-thread row"
                    bad=$(grep '^[a-z]*,robust+grid,' "$csv" | awk -F, '$10 > 0' | head -n 1)
                    [ -z "$bad" ] || fail "robust tunnelled: $bad"
-                   grep -q '^walls,robust+grid,[0-9]*,100,1,[^,]*,[^,]*,[^,]*,[^,]*,0,500$' "$csv" ||
+                   grep -q '^walls,robust+grid,[0-9]*,100,1,[^,]*,[^,]*,[^,]*,[^,]*,0,500,-1$' "$csv" ||
                      fail "the walls sweep checked not 100 balls x 5 frames with 0 tunnels"
+                   grep -q '^walls,robust-disc+grid,[0-9]*,100,1,[^,]*,[^,]*,[^,]*,[^,]*,0,500,0$' "$csv" ||
+                     fail "the robust discs checked not 100 balls x 5 frames with 0 tunnels and 0 penetrations"
+                   if grep -q '^walls,box2d-2.4.1,' "$csv"; then
+                     grep -q '^walls,box2d-disc-2.4.1,[0-9]*,100,1,[^,]*,[^,]*,[^,]*,[^,]*,[0-9]*,500,[0-9]*$' "$csv" ||
+                       fail "Box2D's discs not checked over 100 balls x 5 frames"
+                   fi
                    # The scale targets: no maze of 10^4 walls or more in --smoke, so those are not measured; the
                    # thread sweep ran on 2 threads, so its row has a verdict (which one is the machine's business).
                    md=$dir/res/scale_targets.md
