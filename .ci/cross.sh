@@ -24,10 +24,12 @@
 # multiarch dev packages; libssl-dev, for the fuzz campaign's SHA-1, is unpacked aside and linked
 # statically, see openssl_sysroot; emscripten, nodejs and the header-only libraries for wasm32); a leg
 # whose packages cannot be installed fails with a message, never skips. Leg builds are -O2 (CROSS_OPT),
-# where aarch64 and s390x gcc would contract into FMA. The wasm32 leg builds `ricochet` without the fuzz
-# campaign (no child processes under node) and without plug-in kernels (no dlopen): `ricochet run` and
-# `replay --hashes`, the commands compared, are whole; its fuzz targets run with their standalone driver, and
-# it has no property suite (no RapidCheck or GoogleTest for emscripten in Debian).
+# where aarch64 and s390x gcc would contract into FMA, and unity builds (each target's files compiled in
+# batches: under half the time of a build file by file; the reference compiles file by file). The wasm32
+# leg builds `ricochet` without the fuzz campaign (no child processes under node) and without plug-in
+# kernels (no dlopen): `ricochet run` and `replay --hashes`, the commands compared, are whole; its fuzz
+# targets run with their standalone driver, and it has no property suite (no RapidCheck or GoogleTest for
+# emscripten in Debian).
 # Environment: JOBS (default 2), CROSS_PREFIX (leg build folders, default build-cross-),
 # DET_PREFIX (the native reference is ${DET_PREFIX}gcc-O0, configured exactly as .ci/determinism.sh
 # does, so that the two scripts share it; default build-det-), CROSS_OPT (leg flags, default -O2).
@@ -45,7 +47,7 @@ for a in "$@"; do
   case "$a" in
     --control) control=1 ;;
     i386|aarch64|s390x|wasm32) legs+=("$a") ;;
-    -h|--help) sed -n '2,28p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,/^set /{/^set /!s/^# \{0,1\}//p}' "$0"; exit 0 ;;
     *) echo "cross.sh: unknown leg '$a' (legs: i386 aarch64 s390x wasm32, or --control)" >&2; exit 2 ;;
   esac
 done
@@ -59,7 +61,11 @@ updated=0
 apt_update() {
   [ $updated = 1 ] && return 0
   # Tried again while a mirror is mid-sync; after that the install (or download) decides, with the lists apt has.
-  bash cli/apt-update.sh || say "apt-get update failed; installing from the package lists apt has"
+  # A mirror still mid-sync for the next leg's update is not waited for a second time.
+  if ! APT_UPDATE_TRIES=${apt_tries:-3} bash cli/apt-update.sh; then
+    say "apt-get update failed; installing from the package lists apt has"
+    apt_tries=1
+  fi
   updated=1
 }
 missing() {  # the packages among "$@" that are not installed
@@ -112,7 +118,10 @@ leg_info() {
 # them in step (bookworm-security has no s390x; a host not upgraded has an older one). Unpacking the
 # target's package aside needs no version match and changes nothing on the host.
 openssl_sysroot() {
-  ssl_root=$PWD/${prefix}openssl-$deb
+  case $prefix in
+    /*) ssl_root=${prefix}openssl-$deb ;;
+    *) ssl_root=$PWD/${prefix}openssl-$deb ;;
+  esac
   [ -f "$ssl_root/usr/lib/$multi/libcrypto.a" ] && return 0
   apt_update || return 1
   rm -rf "$ssl_root"; mkdir -p "$ssl_root/deb"
@@ -305,7 +314,7 @@ leg() {
   t1=$(now)
   if [ ! -f "$dir/CMakeCache.txt" ]; then
     if ! cmake -S . -B "$dir" -G Ninja -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/toolchains/$name.cmake" \
-         -DCMAKE_BUILD_TYPE=None "${target_args[@]}" \
+         -DCMAKE_BUILD_TYPE=None -DCMAKE_UNITY_BUILD=ON "${target_args[@]}" \
          -DRICOCHET_TESTS=OFF -DRICOCHET_BENCH=OFF -DRICOCHET_FUZZ=OFF "$@" >"$out/$name.configure.log" 2>&1; then
       cat "$out/$name.configure.log"; rm -rf "$dir"
       echo "FAIL $name: configure failed"; return 1

@@ -4,15 +4,15 @@
 # unexpected size ... Mirror sync in progress?") for a few minutes. One such answer must not fail a build.
 #
 #   cli/apt-update.sh      exit 0 once `apt-get update` succeeds; exit 1, with apt's last error, after
-#                          APT_UPDATE_TRIES tries (default 4), waiting 20 s, 40 s, 60 s... between them
+#                          APT_UPDATE_TRIES tries (default 3), waiting 15 s, then 30 s... between them
 #
 # On exit 1 apt keeps the lists it had and the ones it did fetch ("ignored, or old ones used instead"): the
 # callers (cli/dev.sh, .ci/cross.sh) go on to install and fail only where the install itself fails.
-# Environment: APT_UPDATE_TRIES, APT_UPDATE_WAIT (seconds, the first wait; default 20), APT_GET (default
+# Environment: APT_UPDATE_TRIES, APT_UPDATE_WAIT (seconds, the first wait; default 15), APT_GET (default
 # apt-get: the tests put a stand-in there).
 set -uo pipefail
-tries=${APT_UPDATE_TRIES:-4}
-wait_s=${APT_UPDATE_WAIT:-20}
+tries=${APT_UPDATE_TRIES:-3}
+wait_s=${APT_UPDATE_WAIT:-15}
 apt_get=${APT_GET:-apt-get}
 err=$(mktemp)
 trap 'rm -f "$err"' EXIT

@@ -88,7 +88,9 @@ fi
 if [ ! -f "$build/CMakeCache.txt" ]; then
   CC=clang-14 CXX=clang++-14 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
 fi
+build_t0=$SECONDS
 cmake --build "$build" -j "$jobs"
+echo "dev.sh: build took $((SECONDS - build_t0)) s" >&2
 
 case "$job" in
   check) exec "$build/cli/ricochet" check ;;
