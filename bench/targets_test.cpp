@@ -36,7 +36,7 @@ TEST(Targets, TheBoundIsMetAndTheNextDoublePastItMissed) {
         row("batch", "uniform-pairs", "robust-batch", std::nextafter(1.5, 2.0), 0.04),
     };
     const std::vector<Verdict> vs = bench_targets(rows);
-    ASSERT_EQ(vs.size(), 10u);
+    ASSERT_EQ(vs.size(), 14u);
     EXPECT_EQ(verdict_word(named(vs, "sweep, uniform")), "met");
     EXPECT_EQ(verdict_word(named(vs, "sweep, end on the wall")), "**missed**");
     EXPECT_EQ(verdict_word(named(vs, "closed box, turned")), "met");
@@ -49,6 +49,24 @@ TEST(Targets, TheBoundIsMetAndTheNextDoublePastItMissed) {
     EXPECT_EQ(verdict_word(named(vs, "closed box")), "not measured");
     EXPECT_FALSE(met(named(vs, "closed box")));
     EXPECT_EQ(verdict_word(named(vs, "static point/circle, boundary-heavy")), "not measured");
+}
+
+TEST(Targets, DiscRowsAreJudgedFromTheDiscTable) {
+    const std::vector<Row> discs{
+        row("disc", "disc-uniform", "robust", 130.0, 2.0),
+        row("disc", "disc-grazing", "robust", 400.0, std::nextafter(4.0, 5.0)),
+        row("disc", "disc-cap", "robust", 300.0, 3.5),
+        row("disc", "disc-cap", "box2d", 700.0, 7.12),
+    };
+    // The disc workloads are read from the disc rows only: the same rows among the point rows judge nothing.
+    EXPECT_EQ(verdict_word(named(bench_targets(discs), "discs, uniform")), "not measured");
+    const std::vector<Verdict> vs = bench_targets(std::vector<Row>{}, discs);
+    EXPECT_EQ(verdict_word(named(vs, "discs, uniform")), "met");
+    EXPECT_EQ(named(vs, "discs, uniform").ratio, "2.00×");
+    EXPECT_EQ(verdict_word(named(vs, "discs, grazing")), "**missed**");
+    EXPECT_EQ(verdict_word(named(vs, "discs, caps")), "met");
+    EXPECT_EQ(named(vs, "discs, caps").peers, "Box2D 2.4.1 7.12×");
+    EXPECT_EQ(verdict_word(named(vs, "discs among bumpers")), "not measured");
 }
 
 TEST(Targets, ASpeedUpIsMetFromBelowItsBound) {
@@ -79,7 +97,7 @@ TEST(Targets, TheMarkdownHasAHeaderAndALinePerTarget) {
     const std::vector<Verdict> vs = bench_targets(std::vector<Row>{row("sweep", "uniform", "robust", 20.0, 1.3)});
     const std::string md = targets_markdown(vs);
     EXPECT_EQ(md.rfind("| workload | robust | ÷ lecture-double | target | verdict | peers in the same run |\n", 0), 0u);
-    EXPECT_EQ(std::count(md.begin(), md.end(), '\n'), 12);
+    EXPECT_EQ(std::count(md.begin(), md.end(), '\n'), 16);
     EXPECT_NE(md.find("| sweep, uniform | 20.0 ns | 1.30× | ≤ 1.2× | **missed** | – |\n"), std::string::npos);
     EXPECT_NE(md.find("| closed box | – | – | ≤ 1.5× | not measured | – |\n"), std::string::npos);
 }

@@ -584,7 +584,7 @@ int run_bench(const Options& opt) {
                " from exact's; ghosts = hits on a leg sliding past a joint at its radius; inside = printed contact points\n"
                " closer than R (R + r) to an obstacle, exactly; depth = the deepest, R - distance, absolute and over R)\n");
     // The speed targets on this run's own rows: the README's table "Where each speed target stands".
-    report_targets(bench_targets(rows),
+    report_targets(bench_targets(rows, disc_rows),
                    opt.smoke ? "speed targets (--smoke: sizes too small to measure; a check of the table only)"
                              : "speed targets: robust against lecture-double in this run",
                    opt.out_dir + "/targets.md");

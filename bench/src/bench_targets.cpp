@@ -57,7 +57,7 @@ Verdict batch_target(std::span<const Row> rows, std::string label, std::string_v
 
 }  // namespace
 
-std::vector<Verdict> bench_targets(std::span<const Row> rows) {
+std::vector<Verdict> bench_targets(std::span<const Row> rows, std::span<const Row> disc_rows) {
     return {
         ratio_target(rows, "sweep, uniform", "uniform", 1.2, ""),
         ratio_target(rows, "sweep, end on the wall", "end-on-wall", 1.5, ""),
@@ -69,6 +69,10 @@ std::vector<Verdict> bench_targets(std::span<const Row> rows) {
         ratio_target(rows, "closed box, far (1e6)", "box-far-1e6", 1.5, " per ball-frame"),
         batch_target(rows, "batch, uniform pairs", "uniform-pairs", 1.5),
         batch_target(rows, "batch, end-on-wall pairs", "end-on-wall-pairs", 10),
+        ratio_target(disc_rows, "discs, uniform", "disc-uniform", 2, ""),
+        ratio_target(disc_rows, "discs, grazing", "disc-grazing", 4, ""),
+        ratio_target(disc_rows, "discs, caps", "disc-cap", 4, ""),
+        ratio_target(disc_rows, "discs among bumpers", "bumper", 4, ""),
     };
 }
 

@@ -96,8 +96,9 @@ case "$case" in
                    "$bench" bench --smoke --no-chart --out "$dir/res" >"$dir/out" 2>"$dir/err" || fail "exit $?"
                    md=$dir/res/targets.md
                    [ -s "$md" ] || fail "no targets.md"
-                   [ "$(grep -c '^| [a-z]' "$md")" = 11 ] || fail "not a header and 10 targets in targets.md"
-                   [ "$(grep -c ' | \(met\|\*\*missed\*\*\) | ' "$md")" = 10 ] || fail "not 10 verdicts in targets.md"
+                   [ "$(grep -c '^| [a-z]' "$md")" = 15 ] || fail "not a header and 14 targets in targets.md"
+                   [ "$(grep -c ' | \(met\|\*\*missed\*\*\) | ' "$md")" = 14 ] || fail "not 14 verdicts in targets.md"
+                   grep -q '^| discs, uniform | [0-9.]* ns | [0-9.]*× | ≤ 2× | ' "$md" || fail "no disc row with robust's ratio"
                    grep -q '^| closed box, turned | [0-9.]* ns per ball-frame, 0 tunnels | [0-9.]*× | ≤ 1.5× | ' "$md" ||
                      fail "no closed-box row with robust's time, 0 tunnels and its ratio"
                    grep -qF "$(sed -n 4p "$md")" "$dir/out" || fail "the table is not printed too" ;;
