@@ -113,6 +113,28 @@ void pin_rapidcheck_seed() {
     (void)pinned;
 }
 
+/// RICOCHET_SHRINK_TRIES, read once: after a property's first failure, how many shrink candidates it judges at
+/// most (RapidCheck has no such bound: each candidate of a big-number case can take seconds, and a failure with
+/// many candidates can shrink for minutes). Unset: no bound. Not a whole number: exit 2 with an error.
+std::optional<long> shrink_tries_limit() {
+    static const std::optional<long> limit = []() -> std::optional<long> {
+        const char* env = std::getenv("RICOCHET_SHRINK_TRIES");
+        if (env == nullptr) return std::nullopt;
+        const std::string_view text(env);
+        long n = 0;
+        const bool digits = !text.empty() && text.size() <= 9 &&
+                            std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+        if (!digits) {
+            fmt::print(stderr, "RICOCHET_SHRINK_TRIES: error: '{}' is not a count of tries (a whole number, 0 to "
+                               "999999999)\n", text);
+            std::exit(2);
+        }
+        for (const char c : text) n = 10 * n + (c - '0');
+        return n;
+    }();
+    return limit;
+}
+
 /// A RapidCheck listener that reports nothing: the harness reports every result itself.
 class SilentListener final : public rc::detail::TestListener {
 public:
@@ -134,9 +156,12 @@ std::string reproduce_command(KernelId k, const rc::detail::TestParams& params) 
     std::error_code ec;
     const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
     const char* dir = std::getenv("RICOCHET_REPLAY_DIR");
-    return fmt::format("RICOCHET_KERNEL={}{} RC_PARAMS=\"seed={} max_success={}{}\" {} --gtest_filter='{}.{}'",
+    // The shrink bound too: a bounded run saves the case it stopped at, which an unbounded one shrinks further.
+    const std::optional<long> tries = shrink_tries_limit();
+    return fmt::format("RICOCHET_KERNEL={}{}{} RC_PARAMS=\"seed={} max_success={}{}\" {} --gtest_filter='{}.{}'",
                        kernel_spec(k),
                        dir != nullptr && *dir != '\0' ? fmt::format(" RICOCHET_REPLAY_DIR={}", dir) : std::string(),
+                       tries ? fmt::format(" RICOCHET_SHRINK_TRIES={}", *tries) : std::string(),
                        params.seed, params.maxSuccess, params.disableShrinking ? " noshrink=1" : "",
                        ec ? std::string("ricochet_properties") : self.string(),
                        test != nullptr ? test->test_suite_name() : "*", test != nullptr ? test->name() : "*");
@@ -217,10 +242,11 @@ int replay_saved(const Property& p, KernelId k) {
 /// what the statement's check does not need (balls, walls, shapes, frames) and simplifies the numbers.
 constexpr std::uint64_t k_reduce_tries = 2'000;
 
-/// Saves the minimal failing case, reduced (reduce.hpp), as a failure log (make_failure_log) when the shared
+/// Saves the minimal failing case (the one shrinking stopped at, if not shrunk_fully), reduced (reduce.hpp), as a failure log (make_failure_log) when the shared
 /// checker sees the failure (what it cannot see is not saved: replay could not reproduce it); returns a
 /// report for the test's failure message.
-std::string save_failure(const Property& p, KernelId k, std::uint64_t seed, const Scene& found, const Failure& f) {
+std::string save_failure(const Property& p, KernelId k, std::uint64_t seed, const Scene& found, const Failure& f,
+                         bool shrunk_fully) {
     Scene scene = found;
     scene.kernel = k;
     scene.checks = {f.check};
@@ -247,7 +273,8 @@ std::string save_failure(const Property& p, KernelId k, std::uint64_t seed, cons
     const auto saved = save_scene_log_once(save_dir(k), p.name, std::string_view(log.text()), &error);
     if (!saved) return fmt::format("could not save the case: {}", error);
     g_saved_logs.push_back(saved->path.string());
-    std::string report = fmt::format("minimal case, reduced from {} to {} entities and {} to {} frames in {} tries, {} {}",
+    std::string report = fmt::format("{}, reduced from {} to {} entities and {} to {} frames in {} tries, {} {}",
+                                     shrunk_fully ? "minimal case" : "the case shrinking stopped at",
                                      reduced->before.entities(), reduced->after.entities(), reduced->before.frames,
                                      reduced->after.frames, reduced->tries, saved->is_new ? "saved as" : "already saved as",
                                      saved->path.string());
@@ -364,6 +391,10 @@ void run_property(const Property& p, KernelId k) {
         Failure failure;
     };
     std::optional<Found> last;  // the latest failing case: after shrinking, the minimal one
+    std::optional<Scene> last_generated;  // last's scene as generated (the case RapidCheck holds)
+    const std::optional<long> shrink_limit = shrink_tries_limit();
+    long shrink_tries = 0;        // shrink candidates judged since the first failure
+    bool shrink_stopped = false;  // a candidate was passed unjudged: the bound was reached
     std::map<std::string, long> tally;  // label -> cases carrying it
     long cases = 0;
     // The generated scene names the kernel it runs under, so that RapidCheck's counterexample is the log of the
@@ -374,6 +405,18 @@ void run_property(const Property& p, KernelId k) {
     });
     const auto property = [&] {
         Scene s = *gen;
+        if (last && shrink_limit) {
+            // Shrinking. Past the bound every candidate passes unjudged but the case RapidCheck holds (it runs
+            // that one again at the end), so the shrinker stops at the smallest failure found so far.
+            if (!(s == *last_generated)) {
+                if (shrink_tries >= *shrink_limit) {
+                    shrink_stopped = true;
+                    return;
+                }
+                ++shrink_tries;
+            }
+        }
+        const Scene generated = s;
         stage_case(p, k, s, params.seed);
         std::set<std::string> labels;
         g_case_tags = &labels;
@@ -384,6 +427,7 @@ void run_property(const Property& p, KernelId k) {
         if (f) {
             const std::string message = fmt::format("{}: {}", check_name(f->check), f->message);
             last = Found{std::move(s), std::move(*f)};
+            last_generated = generated;
             RC_FAIL(message);
         }
     };
@@ -410,8 +454,12 @@ void run_property(const Property& p, KernelId k) {
     if (result.is<rc::detail::FailureResult>()) {
         const auto* bad = &result.get<rc::detail::FailureResult>();
         g_total_cases += bad->numSuccess;
-        const std::string saved =
-            last ? save_failure(p, k, params.seed, last->scene, last->failure) : "no failing case was recorded";
+        std::string saved = last ? save_failure(p, k, params.seed, last->scene, last->failure, !shrink_stopped)
+                                 : "no failing case was recorded";
+        if (shrink_stopped)
+            saved += fmt::format("; shrinking stopped after {} tries (RICOCHET_SHRINK_TRIES={}): the case is the "
+                                 "smallest failure found by then",
+                                 shrink_tries, *shrink_limit);
         ADD_FAILURE() << fmt::format("{} [{}] fails after {} cases ({:.2f} s, seed {}); {}\n{}\nreproduce: {}\n", p.name,
                                      kernel_name(k), bad->numSuccess, seconds, params.seed, saved, ss.str(),
                                      reproduce_command(k, params));

@@ -21,7 +21,11 @@
 #   10 s for the robust suite on a quiet core), fuzz: `ricochet fuzz --kernel robust --runs $MUT_FUZZ_RUNS
 #   --seed $MUT_SEED` (default 30 000 inputs per target: about the 60 s campaign the issue names, all four
 #   targets on 2 cores at the ~1 000 inputs/s measured under ASan; a fixed count, not a clock, so a verdict
-#   never depends on the machine's load) with a fresh cache per mutant (seeded from fuzz/corpus/).
+#   never depends on the machine's load) with a fresh cache per mutant (seeded from fuzz/corpus/), every fuzz
+#   target the clang build defines (its RICOCHET_FUZZ_TARGETS); RICOCHET_SHRINK_TRIES=$MUT_SHRINK_TRIES (default
+#   200) bounds each failing property's shrinking by a count (a timeout of 1800 s guards against a hang only).
+# Seconds to bug: from the start of the property suite to the moment the reproducing log was written (for a
+# fuzz catch: the suite's time plus the campaign's until then, the clang build left out).
 # Exit status: 0 after a complete run (the score is a measurement), 2 on a broken setup (a patch that does
 # not apply, a build that fails, a reference build that fails its own logs).
 set -uo pipefail
@@ -35,6 +39,7 @@ do_fuzz=1
 do_unit=1
 seed=${MUT_SEED:-1}
 cases=${MUT_CASES:-150}
+shrink_tries=${MUT_SHRINK_TRIES:-200}
 jobs=${MUT_JOBS:-2}
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -43,7 +48,7 @@ while [ $# -gt 0 ]; do
     --fuzz-runs) fuzz_runs=$2; shift 2 ;;
     --no-fuzz) do_fuzz=0; shift ;;
     --no-unit) do_unit=0; shift ;;
-    -h|--help) sed -n '2,26p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,/^set /{/^set /!s/^# \{0,1\}//p}' "$0"; exit 0 ;;
     *) echo "run.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
@@ -82,7 +87,14 @@ build_clang() {
     CC=clang-14 CXX=clang++-14 cmake -S "$tree" -B "$out/clang" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DRICOCHET_FUZZ=ON -DRICOCHET_BENCH=OFF -DRICOCHET_TESTS=OFF > "$out/clang-configure.log" 2>&1 || return 1
   fi
-  ninja -C "$out/clang" -j"$jobs" ricochet fuzz_parser fuzz_static fuzz_sweep fuzz_scene > "$1" 2>&1
+  # Every fuzz target the build defines (its cache's RICOCHET_FUZZ_TARGETS), so the campaign runs them all:
+  # a target left unbuilt would be skipped by the campaign without a word.
+  local targets
+  targets=$(sed -n 's/^RICOCHET_FUZZ_TARGETS:INTERNAL=//p' "$out/clang/CMakeCache.txt" | tr ';' ' ')
+  [ -n "$targets" ] || { echo "run.sh: the clang build names no fuzz targets" > "$1"; return 1; }
+  fuzz_targets=$targets
+  # shellcheck disable=SC2046
+  ninja -C "$out/clang" -j"$jobs" ricochet $(for t in $targets; do printf 'fuzz_%s ' "$t"; done) > "$1" 2>&1
 }
 
 # The first saved log under $1 that fails replay on the mutant and passes on the unmutated build; prints
@@ -151,7 +163,7 @@ fi
 rm -rf "$out/ref-props"; mkdir -p "$out/ref-props"
 ps=$(now)
 RICOCHET_KERNEL=robust RICOCHET_REPLAY_DIR="$out/ref-props" RC_PARAMS="seed=$seed max_success=$cases" \
-  timeout 300 "$out/gcc/properties/ricochet_properties" > "$out/ref-props.txt" 2>&1
+  RICOCHET_SHRINK_TRIES=$shrink_tries timeout 1800 "$out/gcc/properties/ricochet_properties" > "$out/ref-props.txt" 2>&1
 echo "   unmutated property suite: exit $? in $(( $(now) - ps )) s (RC_PARAMS=\"seed=$seed max_success=$cases\")"
 
 patches=()
@@ -198,18 +210,22 @@ for p in "${patches[@]}"; do
   ps=$(now)
   mkdir -p "$work/props"
   RICOCHET_KERNEL=robust RICOCHET_REPLAY_DIR="$work/props" RC_PARAMS="seed=$seed max_success=$cases" \
-    timeout 300 "$out/gcc/properties/ricochet_properties" > "$work/props.txt" 2>&1
+    RICOCHET_SHRINK_TRIES=$shrink_tries timeout 1800 "$out/gcc/properties/ricochet_properties" > "$work/props.txt" 2>&1
   prc=$?
+  pe=$(now)
+  [ "$prc" = 124 ] && echo "   properties: stopped by the 1800 s guard (a hang, not shrinking: that is bounded)"
   failed_props=$(grep -Eo '^\[  FAILED  \] Kernels/[A-Za-z]+\.[A-Za-z]+' "$work/props.txt" | sed 's/.*\.//' | sort -u | tr '\n' ' ')
   echo "   properties: exit $prc in $(( $(now) - ps )) s; failed: ${failed_props:-none}"
   hit=$(reproduced_log "$work/props" "$work/props-verdicts.txt")
+  to_bug="-"
   if [ -n "$hit" ]; then
     caught="property:$(basename "$hit" | sed 's/-[0-9a-f]*\.scene$//')"
     log=${hit#"$out/"}
+    to_bug=$(( $(stat -c %Y "$hit") - ps ))
   elif [ "$do_fuzz" = 1 ]; then
     fs=$(now)
     build_clang "$work/clang-build.log" || die "$name: the clang build fails ($work/clang-build.log)"
-    echo "   clang build $(( $(now) - fs )) s; fuzzing $fuzz_runs inputs per target"
+    echo "   clang build $(( $(now) - fs )) s; fuzzing $fuzz_runs inputs per target: $fuzz_targets"
     fs=$(now)
     "$out/clang/cli/ricochet" fuzz --kernel robust --runs "$fuzz_runs" --seed "$seed" \
       --cache-dir "$work/fuzz-cache" --replay-dir "$work/fuzz" > "$work/fuzz.txt" 2>&1
@@ -218,13 +234,14 @@ for p in "${patches[@]}"; do
     hit=$(reproduced_log "$work/fuzz" "$work/fuzz-verdicts.txt")
     if [ -n "$hit" ]; then
       caught="fuzz:$(basename "$hit" | sed 's/^fuzz-//; s/-[0-9a-f]*\.scene$//')"
-      log=${hit#"$out/"}
     else
       hit=$(reproduced_parser_input "$work/fuzz-cache" "$work/parser-verdicts.txt")
-      if [ -n "$hit" ]; then
-        caught="fuzz:parser"
-        log=${hit#"$out/"}
-      fi
+      [ -n "$hit" ] && caught="fuzz:parser"
+    fi
+    if [ -n "$hit" ]; then
+      log=${hit#"$out/"}
+      # The property suite's time, then the campaign's until the log was written (the clang build not counted).
+      to_bug=$(( pe - ps + $(stat -c %Y "$hit") - fs ))
     fi
   fi
   # Reported but not caught: a harness failure whose saved log does not reproduce it.
@@ -233,8 +250,10 @@ for p in "${patches[@]}"; do
   [ "$caught" = "-" ] && [ "${frc:-0}" = 1 ] && note="${note:+$note; }fuzz failed but no log reproduces"
   secs=$(( $(now) - start ))
   grep -v "^$name	" "$results" > "$results.new"; mv "$results.new" "$results"
-  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "$caught" "$secs" "$log" "$corpus" "${unit% }" "$note" >> "$results"
-  echo "   => ${caught/#-/SURVIVED} ($secs s)${note:+; $note}"
+  # Seconds to bug last: a results.tsv of an older run (seven columns) still reads.
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "$caught" "$secs" "$log" "$corpus" "${unit% }" "$note" "$to_bug" \
+    >> "$results"
+  echo "   => ${caught/#-/SURVIVED} ($secs s; a reproducing log after $to_bug s)${note:+; $note}"
   unset frc
 done
 
@@ -242,10 +261,10 @@ done
 sync_tree
 
 echo
-echo "| mutant | caught by | seconds | log | corpus logs failing | promise_test | note |"
-echo "| --- | --- | ---: | --- | ---: | --- | --- |"
-sort "$results" | while IFS=$'\t' read -r name caught secs log corpus unit note; do
-  echo "| $name | $caught | $secs | $log | $corpus | $unit | $note |"
+echo "| mutant | caught by | seconds to bug | seconds | log | corpus logs failing | promise_test | note |"
+echo "| --- | --- | ---: | ---: | --- | ---: | --- | --- |"
+sort "$results" | while IFS=$'\t' read -r name caught secs log corpus unit note to_bug; do
+  echo "| $name | $caught | ${to_bug:--} | $secs | $log | $corpus | $unit | $note |"
 done
 total=$(wc -l < "$results")
 killed=$(awk -F'\t' '$2 != "-"' "$results" | wc -l)
