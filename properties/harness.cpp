@@ -242,9 +242,9 @@ int replay_saved(const Property& p, KernelId k) {
 /// what the statement's check does not need (balls, walls, shapes, frames) and simplifies the numbers.
 constexpr std::uint64_t k_reduce_tries = 2'000;
 
-/// Saves the minimal failing case (the one shrinking stopped at, if not shrunk_fully), reduced (reduce.hpp), as a failure log (make_failure_log) when the shared
-/// checker sees the failure (what it cannot see is not saved: replay could not reproduce it); returns a
-/// report for the test's failure message.
+/// Saves the minimal failing case (the one shrinking stopped at, if not shrunk_fully), reduced (reduce.hpp), as a
+/// failure log (make_failure_log) when the shared checker sees the failure (what it cannot see is not saved: replay
+/// could not reproduce it); returns a report for the test's failure message.
 std::string save_failure(const Property& p, KernelId k, std::uint64_t seed, const Scene& found, const Failure& f,
                          bool shrunk_fully) {
     Scene scene = found;
@@ -416,7 +416,8 @@ void run_property(const Property& p, KernelId k) {
                 ++shrink_tries;
             }
         }
-        const Scene generated = s;
+        std::optional<Scene> generated;  // kept only where shrinking is bounded
+        if (shrink_limit) generated = s;
         stage_case(p, k, s, params.seed);
         std::set<std::string> labels;
         g_case_tags = &labels;
@@ -427,7 +428,7 @@ void run_property(const Property& p, KernelId k) {
         if (f) {
             const std::string message = fmt::format("{}: {}", check_name(f->check), f->message);
             last = Found{std::move(s), std::move(*f)};
-            last_generated = generated;
+            last_generated = std::move(generated);
             RC_FAIL(message);
         }
     };
