@@ -13,6 +13,7 @@ ricochet=$2
 root=$(mktemp -d "${TMPDIR:-/tmp}/ricochet-disc-reproduce.XXXXXX") || exit 1
 trap 'rm -rf "$root"' EXIT
 die() { echo "disc_failures_reproduce: FAIL: $*"; exit 1; }
+. "$(dirname "$0")/log_reproduces.sh"
 total_logs=0
 for kernel in lecture-float lecture-double; do
   dir=$root/$kernel
@@ -27,15 +28,7 @@ for kernel in lecture-float lecture-double; do
     grep -lq "^from property $p seed 1\$" "$dir"/*.scene 2>/dev/null || die "$kernel: $p failed and saved no log"
   done
   for log in "$dir"/*.scene; do
-    found=$(sed -n 's/^found \([a-z-]*\) \([0-9]*\) \([0-9]*\)$/\1 \2 \3/p' "$log")
-    [ -n "$found" ] || die "$log has no found line"
-    grep -q '^expect failure ' "$log" || die "$log does not expect its failure"
-    "$ricochet" replay "$log" >"$dir/replay.out" 2>&1 || { cat "$log" "$dir/replay.out"; die "replay fails $log"; }
-    grep -v '^expect failure' "$log" >"$dir/bare.scene"
-    "$ricochet" replay "$dir/bare.scene" >"$dir/replay.out" 2>&1 && { cat "$log"; die "replay passes $log without expect failure"; }
-    set -- $found
-    grep -q "$1 broke at frame $2 ball $3:" "$dir/replay.out" ||
-      { cat "$log" "$dir/replay.out"; die "replay does not fail $log at $1, frame $2, ball $3"; }
+    log_reproduces "$ricochet" "$log" "$dir" || die "$kernel: a saved log does not reproduce"
     total_logs=$((total_logs + 1))
   done
   echo "ok   $kernel: $(echo $failed | wc -w) properties failed, each saved a log; every log reproduces:" $failed

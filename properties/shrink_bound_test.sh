@@ -10,6 +10,7 @@ ricochet=$2
 dir=$(mktemp -d "${TMPDIR:-/tmp}/ricochet-shrink-bound.XXXXXX") || exit 1
 trap 'rm -rf "$dir"' EXIT
 die() { echo "shrink_bound: FAIL: $*"; exit 1; }
+. "$(dirname "$0")/log_reproduces.sh"
 
 RICOCHET_SHRINK_TRIES=x "$props" --gtest_filter='*Discs.DiscEveryCheck/*' >"$dir/bad.out" 2>&1
 rc=$?
@@ -23,12 +24,5 @@ grep -q 'shrinking stopped after 0 tries (RICOCHET_SHRINK_TRIES=0)' "$dir/props.
 grep -q '^reproduce: .*RICOCHET_SHRINK_TRIES=0 ' "$dir/props.out" || die "the reproduce command lacks the bound"
 set -- "$dir"/*.scene
 [ $# = 1 ] && [ -f "$1" ] || die "not one saved log: $*"
-log=$1
-found=$(sed -n 's/^found \([a-z-]*\) \([0-9]*\) \([0-9]*\)$/\1 \2 \3/p' "$log")
-[ -n "$found" ] || die "$log has no found line"
-"$ricochet" replay "$log" >"$dir/replay.out" 2>&1 || { cat "$log" "$dir/replay.out"; die "replay fails $log"; }
-grep -v '^expect failure' "$log" >"$dir/bare.scene"
-"$ricochet" replay "$dir/bare.scene" >"$dir/replay.out" 2>&1 && die "replay passes $log without expect failure"
-set -- $found
-grep -q "$1 broke at frame $2 ball $3:" "$dir/replay.out" || { cat "$dir/replay.out"; die "not reproduced at $found"; }
+log_reproduces "$ricochet" "$1" "$dir" || die "the saved log does not reproduce"
 echo "shrink_bound: OK: stopped at 0 tries, the saved log reproduces $found"
