@@ -117,6 +117,8 @@ b2Sweep straight(b2Vec2 c0, b2Vec2 c) {
 void Box2dPeer::step_disc(FloatBall& ball, float r, std::vector<Vec2>* hits) const {
     b2CircleShape circle;
     circle.m_radius = r;
+    b2DistanceProxy disc;  // the circle as both queries see it, made once
+    disc.Set(&circle, 0);
     const b2Sweep edge_at_rest = straight(b2Vec2_zero, b2Vec2_zero);
     const b2Transform identity(b2Vec2_zero, b2Rot(0.0f));
     b2Vec2 p(ball.x, ball.y), v(ball.vx, ball.vy);
@@ -137,9 +139,11 @@ void Box2dPeer::step_disc(FloatBall& ball, float r, std::vector<Vec2>* hits) con
         b2Vec2 normal(0.0f, 0.0f);
         bool found = false;
         for (std::uintptr_t i : candidates) {
+            b2DistanceProxy edge;
+            edge.Set(&impl_->edges[i], 0);
             b2TOIInput in;
-            in.proxyA.Set(&circle, 0);
-            in.proxyB.Set(&impl_->edges[i], 0);
+            in.proxyA = disc;
+            in.proxyB = edge;
             in.sweepA = straight(p, end);
             in.sweepB = edge_at_rest;
             in.tMax = first;
@@ -150,8 +154,8 @@ void Box2dPeer::step_disc(FloatBall& ball, float r, std::vector<Vec2>* hits) con
             if (out.state != b2TOIOutput::e_touching || out.t >= first) continue;
             // The normal there: from the edge's nearest point to the centre.
             b2DistanceInput d;
-            d.proxyA.Set(&circle, 0);
-            d.proxyB.Set(&impl_->edges[i], 0);
+            d.proxyA = disc;
+            d.proxyB = edge;
             d.transformA = b2Transform(p + out.t * (end - p), b2Rot(0.0f));
             d.transformB = identity;
             d.useRadii = false;
