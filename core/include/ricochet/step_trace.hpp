@@ -34,7 +34,8 @@ struct TracedLeg {
     /// The walls the kernel skipped without a decision because of its own rule (lecture: the wall just
     /// bounced off), or none.
     std::optional<std::uint32_t> skipped;
-    /// The kernel's t_i of the hit it took: the fraction of this leg at which it put the crossing (0 without one).
+    /// The kernel's t_i of the hit (or bump) it took: the fraction of this leg at which it put the crossing or the
+    /// contact (0 without one).
     double hit_t = 0.0;
     /// The velocity the ball moved with on this leg (the leg is the rest of the frame at this velocity); the
     /// next leg's, or the frame's end state's, is the one it left a hit with.

@@ -201,11 +201,10 @@ FrameStatus disc::step_frame(Ball& ball, const Obstacles& obstacles, std::vector
         const disc::Constructions::Point at =
             first.contact.at_start ? disc::Constructions::Point{0.0, q} : make.contact_point(leg, first.obstacle, first.contact);
         const double t = at.t;
-        if (traced != nullptr && !first.bumper) {
-            traced->hit = first.index;
+        if (traced != nullptr) {
+            (first.bumper ? traced->bumped : traced->hit) = first.index;
             traced->hit_t = t;
         }
-        if (traced != nullptr && first.bumper) traced->bumped = first.index;
         const Vec2 x = walk_back(q, at.x, R, obstacles, scratch);
         now += t * rest;
         hits.push_back({first.index, now, x, first.bumper});

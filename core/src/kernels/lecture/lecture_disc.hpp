@@ -140,11 +140,10 @@ FrameStatus step_lecture_disc(Ball& ball, const Obstacles& obstacles, std::vecto
             pos = pos + d;
             break;
         }
-        if (traced != nullptr && !best_bumper) {
-            traced->hit = best;
+        if (traced != nullptr) {
+            (best_bumper ? traced->bumped : traced->hit) = best;
             traced->hit_t = static_cast<double>(best_t);
         }
-        if (traced != nullptr && best_bumper) traced->bumped = best;
         if (bounce == k_max_bounces) {
             status = FrameStatus::bounce_limit;
             break;
