@@ -42,13 +42,18 @@ Scene moved(const Scene& s, Vec2 t) {
     return out;
 }
 
-/// The frame's decisions that an exact translation keeps: every overlap, and each ball's contacts, hit walls and
-/// bumped bumpers (the first only, or all for the exact kernel, whose hit points are not rounded before the next
-/// decision).
+/// The frame's decisions that an exact translation keeps: the overlaps of every ball that met nothing in the frame
+/// (its state is Bs + v, which the offset moves exactly; after a contact the state is a rounded construction, which
+/// an offset may round differently), and each ball's contacts, hit walls and bumped bumpers (the first only, or all
+/// for the exact kernel, whose hit points are not rounded before the next decision).
 std::vector<std::string> decisions(std::span<const Event> events, bool all_hits, std::size_t balls) {
     std::vector<std::string> out;
     std::vector<int> seen(balls, 0);
+    std::vector<bool> met(balls, false);
+    for (const Event& e : events)
+        if (e.kind == Event::Kind::hit || e.kind == Event::Kind::bump) met[e.ball] = true;
     for (const Event& e : events) {
+        if (e.kind == Event::Kind::overlap && met[e.ball]) continue;
         if (e.kind == Event::Kind::overlap)
             out.push_back(fmt::format("overlap ball {} {} {}", e.ball, e.shape == Event::Shape::circle ? "circle" : "rect",
                                       e.index));
