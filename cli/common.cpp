@@ -51,7 +51,7 @@ Scene load_scene_or_exit(const std::string& path) {
 }
 
 void check_supported_or_exit(const std::string& log, const Scene& scene, KernelId k, std::span<const Check> checks) {
-    if (const auto why = refusal(scene, k, checks)) {
+    if (const auto why = refusal(scene, k)) {
         fmt::print(stderr, "{}: error: {}\n", log, *why);
         throw Exit{2};
     }
@@ -208,9 +208,9 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             ++s.failed;
             continue;
         }
-        // A kernel that cannot step the log's discs or bumpers, or a check with no meaning for them: bad input.
+        // A kernel that cannot step the log's discs or bumpers: bad input.
         const KernelId k = kernel.value_or(scene.kernel);
-        if (const auto why = refusal(scene, k, scene.checks)) {
+        if (const auto why = refusal(scene, k)) {
             ++done;
             progress.clear();
             const std::string error = fmt::format("{}: error: {}", log.string(), *why);

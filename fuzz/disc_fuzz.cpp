@@ -3,13 +3,11 @@
 // ordinary or huge, placed anywhere or exactly at their radius from a wall's line, an end point or a bumper) and
 // stepped for up to 32 frames by the kernel under test.
 //
-// Why a target of its own rather than radii in `scene`: a scene with a disc or a bumper may be asked only the
-// checks defined for discs (check.hpp, defined_for_discs), while `scene` asserts every check on every input.
-// Mixing the two would make what an input of `scene` is asked depend on what it decodes to, and would change
-// what every committed `scene` input decodes to; here every input is a disc scene asked the same checks, with
-// a corpus and a dictionary of its own, and `scene` keeps its meaning.
-// Oracle: the shared checker (run_checked) with exactly the checks defined for discs, as `ricochet replay` runs
-// them on the saved log, so every failure replays.
+// Why a target of its own rather than radii in `scene`: radii in `scene` would change what every committed `scene`
+// input decodes to, and a kernel that steps point balls only (a peer, a plug-in) could no longer run `scene`; here
+// every input is a disc scene, with a corpus and a dictionary of its own, and `scene` keeps its meaning.
+// Oracle: the shared checker (run_checked) with every check, as `ricochet replay` runs them on the saved log, so
+// every failure replays.
 //
 // A kernel that steps point balls only cannot be fuzzed here: the target says so and exits with status 2 on its
 // start (the campaign refuses `--target disc` for such a kernel before starting). A kernel that steps discs
@@ -167,15 +165,10 @@ Scene decode(const std::uint8_t* data, std::size_t size, bool bumpers) {
     return s;
 }
 
-/// The checks this target claims: every check defined for discs and bumpers (defined_for_discs), as replay runs
-/// them on the saved log.
+/// The checks this target claims: every check (each is defined for discs and bumpers), as replay runs them on the
+/// saved log.
 const std::vector<Check>& disc_checks() {
-    static const std::vector<Check> checks = [] {
-        std::vector<Check> out;
-        for (const Check c : k_all_checks)
-            if (defined_for_discs(c)) out.push_back(c);
-        return out;
-    }();
+    static const std::vector<Check> checks(k_all_checks.begin(), k_all_checks.end());
     return checks;
 }
 

@@ -30,8 +30,7 @@ std::optional<std::string> disc_refusal(KernelId k, bool bumpers) {
     probe.balls = {{{0.5, 1}, {0, -1}, 0.25}};
     if (bumpers) probe.bumpers = {{{3, 3}, 1}};
     probe.frames = 1;
-    const Check c = Check::no_tunnel;
-    return refusal(probe, k, std::span<const Check>(&c, 1));
+    return refusal(probe, k);
 }
 
 /// Skips the current test, with the kernel's refusal as the reason, unless kernel k steps discs (and bumpers).
@@ -319,7 +318,7 @@ TEST_P(Discs, DiscNoEscapeClosedPolygon) {
     RICOCHET_SKIP_UNLESS_DISCS(GetParam(), false);
     const bool bumpers = !disc_refusal(GetParam(), true);
     run_property({"DiscNoEscapeClosedPolygon", Check::no_escape, gen::disc_polygon_scene(true, 16, bumpers),
-                  checked({Check::no_escape, Check::no_tunnel, Check::penetration, Check::speed}, disc_tags), 1000},
+                  checked({Check::no_escape, Check::no_tunnel, Check::penetration, Check::speed, Check::accuracy}, disc_tags), 1000},
                  GetParam());
 }
 
@@ -327,7 +326,7 @@ TEST_P(Discs, DiscNoEscapeClosedPolygon) {
 TEST_P(Discs, DiscNoEntryClosedPolygon) {
     RICOCHET_SKIP_UNLESS_DISCS(GetParam(), false);
     run_property({"DiscNoEntryClosedPolygon", Check::no_escape, gen::disc_polygon_scene(false, 16, false),
-                  checked({Check::no_escape, Check::no_tunnel, Check::penetration, Check::speed}, disc_tags), 300},
+                  checked({Check::no_escape, Check::no_tunnel, Check::penetration, Check::speed, Check::accuracy}, disc_tags), 300},
                  GetParam());
 }
 
@@ -335,7 +334,7 @@ TEST_P(Discs, DiscNoEntryClosedPolygon) {
 TEST_P(Discs, DiscNoTunnelChains) {
     RICOCHET_SKIP_UNLESS_DISCS(GetParam(), false);
     run_property({"DiscNoTunnelChains", Check::no_tunnel, gen::chain_scene(8),
-                  checked({Check::no_tunnel, Check::penetration, Check::speed}, disc_tags), 2000},
+                  checked({Check::no_tunnel, Check::penetration, Check::speed, Check::accuracy}, disc_tags), 2000},
                  GetParam());
 }
 
@@ -369,11 +368,12 @@ TEST_P(Discs, BumperHeadOn) {
 TEST_P(Discs, BumperNoTunnel) {
     RICOCHET_SKIP_UNLESS_DISCS(GetParam(), true);
     run_property({"BumperNoTunnel", Check::penetration, gen::bumper_scene(8, true),
-                  checked({Check::no_escape, Check::no_tunnel, Check::penetration, Check::speed}, disc_tags), 1000},
+                  checked({Check::no_escape, Check::no_tunnel, Check::penetration, Check::speed, Check::accuracy}, disc_tags), 1000},
                  GetParam());
 }
 
-/// The checks read for discs: every contact decision and first contact is the exact one (oracle); a scene mirrored,
+/// The checks read for discs: every contact decision and first contact is the exact one (oracle), its time, point and
+/// bounce within their bounds of the exact ones (accuracy); a scene mirrored,
 /// turned, with its balls reversed or its walls walked the other way runs as the image of the run (symmetry, swap);
 /// moved by an exact offset it meets the same obstacles first (translation); a disc that starts touching an
 /// obstacle and moves closer meets it at once (boundary); a disc bounced off a face stays on its side until its
@@ -405,11 +405,21 @@ TEST_P(Discs, DiscEveryCheck) {
                   rc::gen::weightedOneOf<Scene>({{2, gen::touching_scene(4)}, {1, gen::disc_scene(4, bumpers)}}),
                   [bumpers](KernelId k, const Scene& s) -> std::optional<Failure> {
                       if (!bumpers && !s.bumpers.empty()) return std::nullopt;  // a kernel of discs among walls
-                      return checked({Check::oracle, Check::boundary, Check::bounce_side, Check::symmetry,
-                                      Check::swap, Check::translation},
+                      return checked({Check::oracle, Check::accuracy, Check::boundary, Check::bounce_side,
+                                      Check::symmetry, Check::swap, Check::translation},
                                      touch_tags)(k, s);
                   },
                   400},
+                 GetParam());
+}
+
+/// A disc's contact time and printed contact point within k_disc_accuracy_ulps of the exact contact, its bounce within
+/// the speed bound of the exact reflection about the normal at the printed point, each leg the rest of the frame
+/// (accuracy): discs among walls and bumpers, at every scale the generator draws.
+TEST_P(Discs, DiscAccuracy) {
+    RICOCHET_SKIP_UNLESS_DISCS(GetParam(), false);
+    run_property({"DiscAccuracy", Check::accuracy, gen::disc_scene(6, !disc_refusal(GetParam(), true)),
+                  checked({Check::accuracy}, disc_tags), 600},
                  GetParam());
 }
 

@@ -255,9 +255,8 @@ std::string save_failure(const Property& p, KernelId k, std::uint64_t seed, cons
     scene.expect_states.clear();
     scene.expect_failure.reset();
     scene.found.reset();
-    // A check the scene leaves undefined (a property of discs with no check of its own to name, such as their
-    // symmetry) cannot be replayed: the case is shown, not saved.
-    if (const auto why = refusal(scene, k, scene.checks))
+    // A scene the kernel cannot step cannot be replayed: the case is shown, not saved.
+    if (const auto why = refusal(scene, k))
         return fmt::format("NOT saved: replay cannot check this case ({}); the case:\n{}", *why, write_scene_log(scene));
     // A plug-in that crashes while the case is reduced keeps the case as it was shrunk.
     stage_case(p, k, scene, seed);

@@ -1,5 +1,5 @@
 // Prints, for every log given, under each of the four kernels, with the log's own checks and then with all the
-// checks defined for the scene (all fifteen; those defined_for_discs in a scene with a disc or a bumper): the run
+// checks (all seventeen, each defined for every scene): the run
 // hash, the frames run and the first failure's or the step error's message (whose numbers come from the exact
 // oracle, truth.cpp), or the kernel's refusal of the scene, one record per run. Built against the core on each big-number backend
 // (bignum_corpus_test.sh compares the two outputs byte for byte):
@@ -28,9 +28,7 @@ int main(int argc, char** argv) {
         const Scene& scene = std::get<Scene>(parsed);
         CheckOptions quiet;
         quiet.keep_events = false;
-        std::vector<Check> defined;
-        for (const Check c : k_all_checks)
-            if (!has_discs_or_bumpers(scene) || defined_for_discs(c)) defined.push_back(c);
+        const std::vector<Check> defined(k_all_checks.begin(), k_all_checks.end());
         for (const KernelId k : k_all_kernels) {
             for (const bool all : {false, true}) {
                 const std::span<const Check> checks = all ? std::span<const Check>(defined) : scene.checks;

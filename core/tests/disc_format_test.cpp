@@ -95,29 +95,12 @@ TEST(DiscFormat, BadRadiiNameTheirPlace) {
     EXPECT_EQ(parse_ok("ricochet 1\nball 0 0 1 1 0x1p256\nbumper 0 0 0x1p256\n").balls[0].r, 0x1p256);
 }
 
-TEST(DiscFormat, OnlyChecksDefinedForDiscsMayBeListed) {
+TEST(DiscFormat, EveryCheckMayBeListedForDiscsAndBumpers) {
     for (Check c : k_all_checks) {
-        const std::string disc = fmt::format("ricochet 1\ncheck {}\nball 0 0 1 1 0.5\n", c);
-        const std::string bumper = fmt::format("ricochet 1\nbumper 0 0 1\ncheck {}\n", c);
-        const std::string point = fmt::format("ricochet 1\ncheck {}\nball 0 0 1 1 0\n", c);
-        EXPECT_EQ(diag(point), "parsed");
-        if (defined_for_discs(c)) {
-            EXPECT_EQ(diag(disc), "parsed") << check_name(c);
-            EXPECT_EQ(diag(bumper), "parsed") << check_name(c);
-        } else {
-            EXPECT_TRUE(diag(disc).starts_with(fmt::format(
-                "t.scene:2:7: error: check '{}' is not defined for discs and bumpers yet (the ball on line 3 has a "
-                "radius); the checks defined for them: ",
-                c)))
-                << diag(disc);
-            EXPECT_TRUE(diag(bumper).starts_with(fmt::format(
-                "t.scene:3:7: error: check '{}' is not defined for discs and bumpers yet (line 2 has a bumper)", c)))
-                << diag(bumper);
-        }
+        EXPECT_EQ(diag(fmt::format("ricochet 1\ncheck {}\nball 0 0 1 1 0.5\n", c)), "parsed") << check_name(c);
+        EXPECT_EQ(diag(fmt::format("ricochet 1\nbumper 0 0 1\ncheck {}\n", c)), "parsed") << check_name(c);
+        EXPECT_EQ(diag(fmt::format("ricochet 1\ncheck {}\nball 0 0 1 1 0\n", c)), "parsed") << check_name(c);
     }
-    // The whole-log checks of the expect lines come first.
-    EXPECT_EQ(diag("ricochet 1\ncheck accuracy\nbumper 0 0 1\nexpect state 0 0 0 0 0 0\n"),
-              "t.scene:4:16: error: expect state for ball 0 but the log has 0 balls");
 }
 
 TEST(DiscFormat, BumpPrintsAndHashesAsDocumented) {
@@ -144,7 +127,7 @@ TEST(DiscFormat, EveryBuiltInKernelStepsThem) {
         EXPECT_EQ(unsupported_scene(k, bumper.balls, 1), std::nullopt);
         EXPECT_NO_THROW(World(disc, k));
         EXPECT_NO_THROW(World(bumper, k));
-        EXPECT_EQ(refusal(disc, k, {}), std::nullopt);
+        EXPECT_EQ(refusal(disc, k), std::nullopt);
         // The disc meets the wall's face (centre at x = 1.5) and bounces back; the point ball meets the bumper.
         Ball b = disc.balls[1];
         BallMemory m;
@@ -197,7 +180,7 @@ TEST(DiscFormat, AKernelThatCannotStepThemRefusesTheScene) {
     EXPECT_THROW(World(disc, k), UnsupportedScene);
     EXPECT_THROW(World(bumper, k), UnsupportedScene);
     EXPECT_THROW(run_checked(disc, k, 1, {}), UnsupportedScene);
-    EXPECT_EQ(refusal(disc, k, {}), unsupported_scene(k, disc.balls, 0));
+    EXPECT_EQ(refusal(disc, k), unsupported_scene(k, disc.balls, 0));
     Ball b = disc.balls[1];
     BallMemory m;
     std::vector<HitEvent> hits;
@@ -206,11 +189,12 @@ TEST(DiscFormat, AKernelThatCannotStepThemRefusesTheScene) {
     EXPECT_TRUE(hits.empty());
 }
 
-TEST(DiscFormat, RunCheckedRefusesAnUndefinedCheckInsteadOfSkippingIt) {
-    const Scene disc = parse_ok("ricochet 1\nframes 1\nball 0 0 1 1 0.5\n");
-    const Check accuracy[] = {Check::accuracy};
-    EXPECT_EQ(refusal(disc, KernelId::robust, accuracy), "check 'accuracy' is not defined for discs and bumpers yet");
-    EXPECT_THROW(run_checked(disc, KernelId::robust, 1, accuracy), UnsupportedScene);
+TEST(DiscFormat, RunCheckedRunsEveryCheckOnADisc) {
+    const Scene disc = parse_ok("ricochet 1\nframes 2\nwall 1 -1 1 1\nball 0 0 1 0 0.5\nbumper -1 0 0.25\n");
+    EXPECT_EQ(refusal(disc, KernelId::robust), std::nullopt);
+    const CheckedRun run = run_checked(disc, KernelId::robust, 2, k_all_checks);
+    EXPECT_FALSE(run.failure) << run.failure->str();
+    EXPECT_EQ(run.frames_run, 2);
 }
 
 }  // namespace

@@ -27,12 +27,8 @@ int main(int argc, char** argv) {
     const ricochet::ReplayResult replayed = ricochet::replay_scene(scene);
     fmt::print("replay: {}: {}\n", replayed.passed ? "passed" : "FAILED", replayed.message);
 
-    // Every check the scene allows (a disc or bumper scene: those defined for discs), under the log's kernel.
-    std::vector<ricochet::Check> checks;
-    const bool discs = !scene.bumpers.empty() || std::any_of(scene.balls.begin(), scene.balls.end(),
-                                                             [](const ricochet::Ball& b) { return b.r > 0; });
-    for (const ricochet::Check c : ricochet::k_all_checks)
-        if (!discs || ricochet::defined_for_discs(c)) checks.push_back(c);
+    // Every check, under the log's kernel.
+    const std::vector<ricochet::Check> checks(ricochet::k_all_checks.begin(), ricochet::k_all_checks.end());
     try {
         const ricochet::CheckedRun run = ricochet::run_checked(scene, scene.kernel, scene.frames, checks);
         if (run.error)

@@ -24,11 +24,6 @@ constexpr std::array<std::string_view, 17> k_checks = {
     "broad-phase", "round-trip",  "no-escape",  "bounce-side", "accuracy",    "event-order", "penetration",
     "ghost-bounce", "plan"};
 
-/// The checks "Checks" defines for a log with discs or bumpers: every check but `accuracy`.
-constexpr std::array<std::string_view, 16> k_disc_checks = {
-    "no-tunnel",   "symmetry",   "boundary",  "speed",       "deterministic", "oracle",      "swap",        "translation",
-    "broad-phase", "round-trip", "no-escape", "bounce-side", "event-order",   "penetration", "ghost-bounce", "plan"};
-
 template <std::size_t N>
 bool one_of(const std::array<std::string_view, N>& names, std::string_view s) {
     return std::find(names.begin(), names.end(), s) != names.end();
@@ -140,9 +135,7 @@ private:
             // "Discs and bumpers": X Y VX VY and an optional radius R ≥ 0; R > 0 makes the ball a disc.
             if (t.size() == 6) {
                 numbers(t, 5);
-                const double r = number(t[5]);
-                if (r < 0.0) reject("negative radius");
-                if (r > 0.0 && first_solid_ == 0) first_solid_ = line_;
+                if (number(t[5]) < 0.0) reject("negative radius");
             } else {
                 numbers(t, 4);
             }
@@ -155,7 +148,6 @@ private:
             entity(bumpers_, "bumpers");
             numbers(t, 3);
             if (number(t[3]) < 0.0) reject("negative radius");
-            if (first_solid_ == 0) first_solid_ = line_;
         } else if (d == "rect") {
             entity(rects_, "rects");
             numbers(t, 4);
@@ -226,11 +218,6 @@ private:
             if (!one_of_listed(failure_->check)) throw Rejection{failure_->line, "expect failure: the check is not listed"};
             if (failure_->frame > frames_) throw Rejection{failure_->line, "expect failure: after the last frame"};
         }
-        // "Discs and bumpers", "Checks": with a disc or a bumper, only the checks defined for them may be listed.
-        if (first_solid_ != 0)
-            for (std::size_t i = 0; i < checks_.size(); ++i)
-                if (!one_of(k_disc_checks, checks_[i]))
-                    throw Rejection{check_lines_[i], "a check not defined for discs and bumpers"};
     }
 
     int line_ = 0;
@@ -238,7 +225,6 @@ private:
          found_seen_ = false;
     std::int64_t frames_ = 0;
     std::size_t walls_ = 0, balls_ = 0, circles_ = 0, rects_ = 0, bumpers_ = 0, froms_ = 0, states_seen_ = 0;
-    int first_solid_ = 0;  // the line of the first disc or bumper, 0 if none
     std::vector<std::string_view> checks_;
     std::vector<int> check_lines_;
     std::vector<Reference> states_;

@@ -19,8 +19,6 @@ h='ricochet 1'
 # set by CTest from the build: peers/).
 kernels='lecture-float, lecture-double, robust, exact'
 for k in ${RICOCHET_PEER_KERNELS:-}; do kernels="$kernels, $k"; done
-# The checks defined for discs and bumpers (check.hpp, defined_for_discs), as the refusal lists them.
-disc_checks='no-tunnel, symmetry, boundary, speed, deterministic, oracle, swap, translation, broad-phase, round-trip, no-escape, bounce-side, event-order, penetration, ghost-bounce, plan'
 case "$kind" in
   unknown-directive) printf '%s\nwal 0 0 1 1\n' "$h" >"$f"; want='2:1: error: unknown directive '\''wal'\''' ;;
   missing-token)     printf '%s\nwall 0 0 1\n' "$h" >"$f"; want='2:11: error: '\''wall'\'' needs X0 Y0 X1 Y1: missing Y1' ;;
@@ -35,8 +33,6 @@ case "$kind" in
   ball-radius-inf)   printf '%s\nball 0 0 1 1 inf\n' "$h" >"$f"; want='2:14: error: R inf is outside the accepted range (finite, magnitude at most 2^256)' ;;
   ball-radius-out-of-range) printf '%s\nball 0 0 1 1 1e78\n' "$h" >"$f"; want='2:14: error: R 1e78 is outside the accepted range (finite, magnitude at most 2^256)' ;;
   bumper-negative-radius) printf '%s\nbumper 0 0 -1\n' "$h" >"$f"; want='2:12: error: negative radius -1' ;;
-  disc-undefined-check) printf '%s\ncheck accuracy\nball 0 0 1 1 0.5\n' "$h" >"$f"; want="2:7: error: check 'accuracy' is not defined for discs and bumpers yet (the ball on line 3 has a radius); the checks defined for them: $disc_checks" ;;
-  bumper-undefined-check) printf '%s\nbumper 0 0 1\ncheck event-order\ncheck accuracy\n' "$h" >"$f"; want="4:7: error: check 'accuracy' is not defined for discs and bumpers yet (line 2 has a bumper); the checks defined for them: $disc_checks" ;;
   bumper-missing-token) printf '%s\nbumper 0 0\n' "$h" >"$f"; want='2:11: error: '\''bumper'\'' needs X Y R: missing R' ;;
   left-gt-right)     printf '%s\nrect 2 0 1 1\n' "$h" >"$f"; want='2:6: error: left 2 is greater than right 1' ;;
   bottom-gt-top)     printf '%s\nrect 0 2 1 1\n' "$h" >"$f"; want='2:8: error: bottom 2 is greater than top 1' ;;

@@ -39,9 +39,5 @@ inline constexpr std::array<Check, 17> k_all_checks = {
 std::string_view check_name(Check c);
 /// The check called name, or nothing.
 std::optional<Check> parse_check(std::string_view name);
-/// True if check c is defined for a scene with discs (balls of radius > 0) or bumpers (checks.hpp says how it
-/// reads there). A log that asks for another check in such a scene is refused at its `check` line, and
-/// run_checked refuses to run it (UnsupportedScene, world.hpp): a check is never skipped in silence.
-bool defined_for_discs(Check c);
 
 }  // namespace ricochet

@@ -75,9 +75,8 @@ struct Obstacles {
     double bumper_reach = 0.0;  ///< the largest bumper radius (with bumper_index)
 };
 
-/// A scene a kernel cannot step (a disc or a bumper for a kernel that steps point balls among walls only), or
-/// a check a scene leaves undefined (check.hpp, defined_for_discs): World and run_checked refuse it with this,
-/// before stepping anything. The only exception the core throws on a well-formed scene.
+/// A scene a kernel cannot step (a disc or a bumper for a kernel that steps point balls among walls only): World
+/// and run_checked refuse it with this, before stepping anything. The only exception the core throws on a well-formed scene.
 class UnsupportedScene : public std::invalid_argument {
 public:
     using std::invalid_argument::invalid_argument;

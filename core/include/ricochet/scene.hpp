@@ -37,8 +37,8 @@ struct Scene {
     friend bool operator==(const Scene&, const Scene&) = default;  ///< by value (same_bits compares bits)
 };
 
-/// True if the scene has a disc (a ball of radius > 0) or a bumper: the checks defined_for_discs leaves
-/// out (check.hpp) are refused for it.
+/// True if the scene has a disc (a ball of radius > 0) or a bumper: some checks read differently for it
+/// (checks.hpp, "Discs and bumpers").
 inline bool has_discs_or_bumpers(const Scene& scene) {
     if (!scene.bumpers.empty()) return true;
     for (const Ball& b : scene.balls)

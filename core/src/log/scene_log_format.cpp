@@ -355,30 +355,6 @@ private:
         if (expect_lines_ == ExpectLines::checked) validate_expect_states();
         validate_found();
         if (expect_lines_ == ExpectLines::checked) validate_expect_failure();
-        validate_checks_for_discs();
-    }
-
-    /// A check not yet defined for discs and bumpers, in a log that has either, is refused at its `check`
-    /// line (the first such line), naming the disc or bumper that makes it undefined.
-    void validate_checks_for_discs() {
-        if (!first_disc_ && !first_bumper_) return;
-        for (std::size_t i = 0; i < scene_.checks.size(); ++i) {
-            if (defined_for_discs(scene_.checks[i])) continue;
-            const std::string why =
-                first_disc_ ? fmt::format("the ball on line {} has a radius", first_disc_->line)
-                            : fmt::format("line {} has a bumper", first_bumper_->line);
-            throw ParseError{check_places_[i].line, check_places_[i].col_a,
-                             fmt::format("check '{}' is not defined for discs and bumpers yet ({}); the checks "
-                                         "defined for them: {}",
-                                         scene_.checks[i], why, disc_check_names())};
-        }
-    }
-
-    static std::string disc_check_names() {
-        std::string names;
-        for (Check k : k_all_checks)
-            if (defined_for_discs(k)) names += fmt::format("{}{}", names.empty() ? "" : ", ", check_name(k));
-        return names;
     }
 
     void validate_expect_states() {

@@ -82,8 +82,9 @@
 //   translation    For each offset t of a fixed list ((1, −2), (1024, 4096), (−3·2^30, 2^31), (2^40, −5·2^40),
 //                  (0.5, 0.25)) that moves every coordinate of the scene and every ball's Bs and Be = Bs + v
 //                  without rounding (and (Bs + t) + v = Be + t), the moved scene stepped in lockstep prints
-//                  the same overlaps and, per ball, the same first hit wall (the exact kernel: every hit wall)
-//                  at frames 0 and 1; and at every frame, for each printed state p, v that t moves exactly,
+//                  the same overlaps (at frame 1 those of the balls that met nothing in it: a state after a
+//                  contact is a rounded construction) and, per ball, the same first hit wall (the exact kernel:
+//                  every hit wall) at frames 0 and 1; and at every frame, for each printed state p, v that t moves exactly,
 //                  classify, the sweep's Miss, point_in_circle and point_in_rect are unchanged by moving p and
 //                  the scene by t. In a scene with a disc or a bumper, bumpers move too, a bump counts as a
 //                  contact (per ball, the first hit wall or bumped bumper, every kernel: the exact kernel rounds
@@ -134,6 +135,18 @@
 //                  lecture-float does not (2^−24 rounding). The exact kernel's legs are rational, so it has
 //                  none to check (its B_i is its exact crossing, rounded once); nor has a plug-in's frame step
 //                  (plugin.h), which shows no legs.
+//                  A ball the disc frame steps (a disc, or any ball among bumpers) is judged per contact, with the
+//                  bound k_disc_accuracy_ulps·ε·M (M also counts R and a bumper's radius): for each leg that took
+//                  a printed hit or bump on the leg's exact first contact, entered at t* = (A − √C)/D, if the
+//                  contact is well-conditioned (a start in reach; a face at |n·d| ≥ |e|∞·|d|∞ / 4; a cap or bumper
+//                  at 16·Δ ≥ (d·d)·ρ²; |d|∞, |e|∞, ρ ≥ 2^−400), |t_i − t*|·|d|∞ and the printed point's distance
+//                  to a + t*·d in each coordinate are within the bound (the point not judged where the printed
+//                  piece a → B_i comes within ρ + 2·bound of another obstacle: the walk back may go further);
+//                  and where no other obstacle is met at the same time, with N = B_i − X the outward normal at
+//                  the printed point (X the segment's point nearest it, or the bumper's centre) and v·N ≤
+//                  −|v|∞·|N|∞ / 4, the velocity it leaves with is within 2·(b·|v| + a) of v − 2(v·N)N/(N·N) per
+//                  component (truth::disc_accuracy, truth::disc_bounce_accuracy). The rest of the frame as above,
+//                  a bump counting as a hit.
 //   event-order    Every frame's events come in the order docs/scene-log.md gives: per ball in index order its
 //                  hits and bumps (none at frame 0), then its state, then every overlap, ball-major, circles before
 //                  rects, each by index and once; each event carries its frame's number and names a ball,
@@ -156,13 +169,11 @@
 //                  run's other options) prints the checked run's events bit for bit: the path a scene's plan picks
 //                  (wall_plan.hpp) changes the time a decision takes, never its answer.
 //
-// Discs and bumpers: in a scene with a disc or a bumper only the checks defined_for_discs (check.hpp) names are
-// defined: no-tunnel, speed, no-escape (each as written above, read for the disc's centre: its printed path, its
-// velocity; m counts the bounces off bumpers and the corner reflections too), deterministic, broad-phase,
-// round-trip, event-order (a bump names a bumper of the scene and no shape), penetration, ghost-bounce, plan, and
-// symmetry, swap, translation, boundary, bounce-side and oracle as read for discs above. accuracy is not defined
-// for them yet (the bound on a disc's contact time, contact point and bounce is not written). run_checked refuses
-// an undefined check (UnsupportedScene), the reader rejects its `check` line.
+// Discs and bumpers: every check is defined in a scene with a disc or a bumper: no-tunnel, speed, no-escape (each
+// as written above, read for the disc's centre: its printed path, its velocity; m counts the bounces off bumpers
+// and the corner reflections too), deterministic, broad-phase, round-trip, event-order (a bump names a bumper of
+// the scene and no shape), penetration, ghost-bounce, plan, and symmetry, swap, translation, boundary, bounce-side,
+// oracle and accuracy as read for discs above.
 //
 // speed, oracle and accuracy read the frame's StepTrace: each ball is stepped again from its state and memory before
 // the frame with a trace (the same wall index); that step must end in the run's state bit for bit, else
@@ -198,6 +209,13 @@ SpeedBound speed_bound(KernelId kernel);
 /// largest coordinate of the leg and the wall): robust's construction errs by at most 130 (derivation in
 /// core/tests/promise_test.cpp), so 256 leaves a factor of 2.
 inline constexpr double k_hit_accuracy_ulps = 256.0;
+
+/// The same bound for a disc's contact (t_i and the printed contact point), in units of ε·M (M the largest magnitude
+/// of the leg's ends, R, and the obstacle's coordinates and radius). Robust takes a contact's t_i from doubles only
+/// where its running error bound is at most 2^−40 (robust_disc.cpp), else a finer construction: along a leg with
+/// |d|∞ ≤ 2M that is 2^14·ε·M; B_i = q + t_i·d adds a few ε·M, and the walk back that keeps the piece clear moves
+/// the point back along the leg by at most about as much again (it doubles its step); 2^16 leaves a factor of 2.
+inline constexpr double k_disc_accuracy_ulps = 65536.0;
 
 /// Where a path broke: the printed piece from → to and the wall it went through (no-tunnel).
 struct FailurePiece {
@@ -247,13 +265,12 @@ struct CheckOptions {
     WorldOptions world{};
 };
 
-/// Why run_checked refuses scene under kernel with checks (the kernel cannot step its discs or bumpers, or a
-/// check is not defined for them), or nothing: what it throws as UnsupportedScene, for a caller to ask first.
-std::optional<std::string> refusal(const Scene& scene, KernelId kernel, std::span<const Check> checks);
+/// Why run_checked refuses scene under kernel (the kernel cannot step its discs or bumpers), or nothing: what it
+/// throws as UnsupportedScene, for a caller to ask first.
+std::optional<std::string> refusal(const Scene& scene, KernelId kernel);
 
 /// Runs frames 0..frames of scene under kernel, asserting checks on every frame. Throws UnsupportedScene
-/// (kernel.hpp) before stepping if the kernel cannot step the scene or a check is not defined for it
-/// (defined_for_discs, check.hpp). After the first failure
+/// (kernel.hpp) before stepping if the kernel cannot step the scene. After the first failure
 /// the remaining checks are skipped but the run goes on (the hash covers the whole run) unless
 /// options.stop_after ends it. The run's World
 /// and the checks' own worlds step with options.world (by default as `ricochet run` does), except

@@ -149,6 +149,41 @@ HitAccuracy bounce_accuracy(Vec2 v, const Wall& w, Vec2 v_out, double rel, doubl
 /// unchanged by the next reflection, an isometry; |w| ≤ 2|v| along the way). error: max |v_out − R| / |v|.
 HitAccuracy corner_accuracy(Vec2 v, const Wall& hit, int hit_from, std::span<const Wall> others,
                             std::span<const int> others_from, Vec2 v_out, double rel, double abs);
+/// What a kernel took as a disc leg's first contact (from its trace and the frame's events): the obstacle, the leg
+/// fraction t_i it put the contact at and the printed contact point p.
+struct DiscTaken {
+    bool bumper = false;      ///< a bumper, else a wall
+    std::uint32_t index = 0;  ///< its index among the scene's walls or bumpers
+    double t = 0.0;
+    Vec2 p;
+};
+/// How close a disc's contact is to the exact one (the `accuracy` check for discs, checks.hpp).
+struct DiscAccuracy {
+    /// The obstacle taken is the leg's exact first contact (else that is `oracle`'s failure, and nothing here is
+    /// measured).
+    bool taken_first = false;
+    /// Another obstacle is met at the same exact time (the corner rule's case).
+    bool tied = false;
+    /// |t_i − t*|·|d|∞ against ulps·ε·M, t* the exact entry time (A − √C)/D, ε = 2^−53, M the largest magnitude of
+    /// the coordinates of a and b, R, and the obstacle's coordinates (and radius). conditioned: a contact at the
+    /// leg's start (t* = 0, exactly); a face entered at a sine of at least 1/4 (|n·d| ≥ |e|∞·|d|∞/4); a cap or a
+    /// bumper entered at a cosine to its normal of at least 1/4 (16·Δ ≥ (d·d)·ρ²); and |d|∞, |e|∞, ρ ≥ 2^−400.
+    HitAccuracy time;
+    /// |p − X*| per coordinate against ulps·ε·M, X* = a + t*·d, all exactly. conditioned as time, and unless the
+    /// printed piece a → p comes within ρ + 2·ulps·ε·M of another obstacle (ρ = R, or R + r for a bumper): the walk
+    /// back that keeps every printed piece clear (frame.cpp) may take the point further than rounding there.
+    HitAccuracy point;
+};
+/// A disc's contact taken on the leg a → b (radius R ≥ 0) against the exact first contact, with the bound
+/// ulps·ε·M. skip_wall, skip_bumper: as for disc_first_contact.
+DiscAccuracy disc_accuracy(Vec2 a, Vec2 b, double R, std::span<const Wall> walls, std::span<const Bumper> bumpers,
+                           long skip_wall, long skip_bumper, const DiscTaken& taken, double ulps);
+/// The bounce at the printed contact point x of a disc moving v off wall w or bumper u (one of them set) that leaves
+/// with v_out, against the exact reflection about the outward normal at x, N = x − X (X the segment's point
+/// nearest x, or the bumper's centre): as bounce_accuracy with n = N, conditioned where v goes into the obstacle at
+/// x clearly, v·N ≤ −|v|∞·|N|∞/4 (not where x lies on the segment or at the centre: no normal; nor where a point
+/// rounded past a small cap has v leaving it already).
+HitAccuracy disc_bounce_accuracy(Vec2 v, Vec2 x, const Wall* w, const Bumper* u, Vec2 v_out, double rel, double abs);
 /// The end `to` of a leg that starts at `from` and spends the rest of the frame moving v, after hits at the
 /// leg fractions ts (kernel.hpp: after a bounce at B_i the rest of the frame is the leg from B_i to
 /// B_i + (1 − t_i)·v′), against from + R·v with R = Π(1 − t_k), exactly. Always conditioned; within when

@@ -1,12 +1,13 @@
 // accuracy: every well-conditioned hit's t_i and B_i lie within k_hit_accuracy_ulps·ε·M of the exact
 // crossing of the leg the kernel swept, a well-conditioned bounce off a lone wall leaves within the speed
 // bound of the exact reflection, and each leg is the rest of the frame from where the last one ended
-// (checks.hpp).
+// (checks.hpp). A ball stepped as a disc has its contacts judged by accuracy_discs.cpp.
 #include <fmt/format.h>
 
 #include <cmath>
 #include <vector>
 
+#include "checks/accuracy_discs.hpp"
 #include "checks/frame_check.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/truth.hpp"
@@ -20,23 +21,31 @@ class Accuracy final : public FrameCheck {
 public:
     bool needs_traces() const override { return true; }
 
-    Accuracy(const Scene& scene, KernelId kernel) : scene_(scene), bound_(speed_bound(kernel)) {}
+    Accuracy(const Scene& scene, KernelId kernel)
+        : scene_(scene), bound_(speed_bound(kernel)), discs_(scene, bound_) {}
 
     std::optional<CheckFailure> frame(const Frame& f) override {
         if (f.index == 0) return std::nullopt;
-        for (std::uint32_t i = 0; i < f.traces.size(); ++i)
-            if (auto bad = ball(f, i)) return bad;
+        for (std::uint32_t i = 0; i < f.traces.size(); ++i) {
+            // The exact kernel's point legs are rational (not traced): its B_i is the exact crossing, rounded once;
+            // a plug-in's frame step shows no legs.
+            if (!f.traces[i].legs_traced) continue;
+            std::vector<const Event*> contacts;
+            for (const Event& e : f.events)
+                if ((e.kind == Event::Kind::hit || e.kind == Event::Kind::bump) && e.ball == i) contacts.push_back(&e);
+            if (auto bad = stepped_as_disc(i) ? discs_.contacts(f, i, contacts) : ball(f, i, contacts)) return bad;
+            if (auto bad = rest_of_frame(f, i, contacts)) return bad;
+        }
         return std::nullopt;
     }
 
 private:
-    std::optional<CheckFailure> ball(const Frame& f, std::uint32_t i) const {
+    /// A disc, or any ball among bumpers: the disc frame steps it (kernel.hpp, step_ball with obstacles).
+    bool stepped_as_disc(std::uint32_t i) const { return is_disc(scene_.balls[i]) || !scene_.bumpers.empty(); }
+
+    /// A point ball among walls: its hits (no bumps: the scene has no bumpers).
+    std::optional<CheckFailure> ball(const Frame& f, std::uint32_t i, const std::vector<const Event*>& hits) const {
         const StepTrace& trace = f.traces[i];
-        // The exact kernel's legs are rational (not traced): its B_i is the exact crossing, rounded once.
-        if (!trace.legs_traced) return std::nullopt;
-        std::vector<const Event*> hits;
-        for (const Event& e : f.events)
-            if (e.kind == Event::Kind::hit && e.ball == i) hits.push_back(&e);
         // The k-th leg that took a hit printed the k-th hit (a hit found at the bounce limit is not taken;
         // oracle checks the order, so a leg whose wall differs from its event's ends the comparison).
         std::size_t k = 0;
@@ -92,13 +101,14 @@ private:
                                            "exact reflection v - 2(v·n)n/(n·n) (bound 2·{:.4g}·|v| + 2·{:.4g})",
                                            l, hit.index, leg.vel, v_out, rb.error, bound_.rel, bound_.abs));
         }
-        return rest_of_frame(f, i, hits);
+        return std::nullopt;
     }
 
-    /// kernel.hpp's legs: the first runs from Bs to Bs + v; after a hit at B_i the next runs from the printed
-    /// B_i for the rest of the frame, (1 − t_i)·v′ (R = Π(1 − t_k) after several); a reflection off a contact
-    /// wall starts the next leg where this one started, with the same R.
-    std::optional<CheckFailure> rest_of_frame(const Frame& f, std::uint32_t i, const std::vector<const Event*>& hits) const {
+    /// kernel.hpp's legs: the first runs from Bs to Bs + v; after a hit (or a bump) at B_i the next runs from the
+    /// printed B_i for the rest of the frame, (1 − t_i)·v′ (R = Π(1 − t_k) after several); a reflection off a
+    /// contact wall starts the next leg where this one started, with the same R.
+    std::optional<CheckFailure> rest_of_frame(const Frame& f, std::uint32_t i,
+                                              const std::vector<const Event*>& contacts) const {
         const StepTrace& trace = f.traces[i];
         std::vector<double> ts;
         Vec2 start = f.before[i].pos;
@@ -121,11 +131,12 @@ private:
                                            l, leg.from, leg.to, leg.vel, ts.size(), r.error, leg.from,
                                            2 * ts.size() + 3));
             if (leg.blocked) continue;
-            // A hit taken (it printed the k-th hit): the next leg starts at its printed B_i. (k < hits.size()
-            // and the leg's wall is hits[k]'s for every kernel the tests run: a kernel that hits without printing
-            // it, or prints another wall, fails `oracle` and `event-order`; here the walk just stops.)
-            if (!leg.hit || k >= hits.size() || hits[k]->index != *leg.hit) break;
-            start = hits[k++]->pos;
+            // A contact taken (it printed the k-th hit or bump): the next leg starts at its printed B_i. (k <
+            // contacts.size() and the leg's obstacle is contacts[k]'s for every kernel the tests run: a kernel that
+            // meets an obstacle without printing it, or prints another, fails `oracle` and `event-order`; here the
+            // walk just stops.)
+            if (k >= contacts.size() || !printed_as(*contacts[k], leg)) break;
+            start = contacts[k++]->pos;
             ts.push_back(leg.hit_t);
         }
         return std::nullopt;
@@ -162,6 +173,12 @@ private:
         return std::nullopt;
     }
 
+    /// The event printed the contact the leg took: a hit on its wall, or a bump on its bumper.
+    static bool printed_as(const Event& e, const TracedLeg& leg) {
+        if (leg.hit) return e.kind == Event::Kind::hit && e.index == *leg.hit;
+        return leg.bumped && e.kind == Event::Kind::bump && e.index == *leg.bumped;
+    }
+
     /// The ball's velocity at the end of the frame, as its state event printed it.
     static Vec2 end_velocity(const Frame& f, std::uint32_t i) {
         for (const Event& e : f.events)
@@ -178,6 +195,7 @@ private:
 
     const Scene& scene_;
     SpeedBound bound_;
+    DiscAccuracy discs_;
 };
 
 }  // namespace

@@ -106,8 +106,14 @@ bool speed_within(Vec2 v, Vec2 w, int m, double b, double a) {
 
 namespace {
 
-/// p − X for the point X of the closed segment a → b nearest to p: X = a + u·(b − a) with u the projection
-/// (p − a)·e/(e·e) clamped to [0, 1] (u = 0 for a segment of no length), all in rationals.
+/// |p − X|², X as in from_segment.
+Rational distance2_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+    const auto [dx, dy] = from_segment(p, a, b);
+    return dx * dx + dy * dy;
+}
+
+}  // namespace
+
 std::pair<Rational, Rational> from_segment(Vec2 p, Vec2 a, Vec2 b) {
     const Rational ex = Q(b.x) - Q(a.x), ey = Q(b.y) - Q(a.y);
     const Rational px = Q(p.x) - Q(a.x), py = Q(p.y) - Q(a.y);
@@ -120,14 +126,6 @@ std::pair<Rational, Rational> from_segment(Vec2 p, Vec2 a, Vec2 b) {
     }
     return {px - u * ex, py - u * ey};
 }
-
-/// |p − X|², X as in from_segment.
-Rational distance2_to_segment(Vec2 p, Vec2 a, Vec2 b) {
-    const auto [dx, dy] = from_segment(p, a, b);
-    return dx * dx + dy * dy;
-}
-
-}  // namespace
 
 bool clear_of_wall(Vec2 a, Vec2 b, const Wall& w, double R) {
     if (R == 0.0 || boxes_apart(a, b, w.p0, w.p1, R)) return true;
@@ -254,11 +252,9 @@ HitAccuracy hit_time_accuracy(Vec2 a, Vec2 b, const Wall& w, double t, double ul
     return judge(Rational(abs(Q(t) - c.s) * c.d_inf), c.unit, ulps);
 }
 
-HitAccuracy bounce_accuracy(Vec2 v, const Wall& w, Vec2 v_out, double rel, double abs_bound) {
+HitAccuracy reflection_accuracy(Vec2 v, const Rational& nx, const Rational& ny, Vec2 v_out, double rel,
+                                double abs_bound) {
     HitAccuracy r;
-    const Rational ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
-    // n = (e_y, −e_x), the outward normal, and v·n.
-    const Rational nx = ey, ny = -ex;
     const Rational vn = Q(v.x) * nx + Q(v.y) * ny, nn = nx * nx + ny * ny;
     const auto qabs = [](const Rational& q) { return Rational(abs(q)); };
     const Rational n_inf = std::max(qabs(nx), qabs(ny)), v_inf = std::max(qabs(Q(v.x)), qabs(Q(v.y)));
@@ -274,6 +270,12 @@ HitAccuracy bounce_accuracy(Vec2 v, const Wall& w, Vec2 v_out, double rel, doubl
     r.within = sgn(over) <= 0 || over * over <= 4 * Q(rel) * Q(rel) * vv;
     r.error = sgn(vv) == 0 ? 0.0 : bignum::to_double(err) / std::sqrt(bignum::to_double(vv));
     return r;
+}
+
+HitAccuracy bounce_accuracy(Vec2 v, const Wall& w, Vec2 v_out, double rel, double abs_bound) {
+    // n = (e_y, −e_x), the outward normal.
+    const Rational ex = Q(w.p1.x) - Q(w.p0.x), ey = Q(w.p1.y) - Q(w.p0.y);
+    return reflection_accuracy(v, ey, -ex, v_out, rel, abs_bound);
 }
 
 HitAccuracy corner_accuracy(Vec2 v, const Wall& hit, int hit_from, std::span<const Wall> others,

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <algorithm>
+#include <utility>
 
 #include "base/bignum.hpp"
+#include "ricochet/truth.hpp"
 #include "ricochet/vec2.hpp"
 
 namespace ricochet::truth {
@@ -23,5 +25,14 @@ inline bool boxes_apart(Vec2 a, Vec2 b, Vec2 c, Vec2 d, double reach) {
     return std::min(c.x, d.x) - std::max(a.x, b.x) > limit || std::min(a.x, b.x) - std::max(c.x, d.x) > limit ||
            std::min(c.y, d.y) - std::max(a.y, b.y) > limit || std::min(a.y, b.y) - std::max(c.y, d.y) > limit;
 }
+
+/// p − X for the point X of the closed segment a → b nearest to p: X = a + u·(b − a) with u the projection
+/// (p − a)·e/(e·e) clamped to [0, 1] (u = 0 for a segment of no length), all in rationals.
+std::pair<Rational, Rational> from_segment(Vec2 p, Vec2 a, Vec2 b);
+
+/// v_out against the exact reflection of v about the normal n = (nx, ny) (not unit), as bounce_accuracy
+/// states it for a wall's n.
+HitAccuracy reflection_accuracy(Vec2 v, const Rational& nx, const Rational& ny, Vec2 v_out, double rel,
+                                double abs_bound);
 
 }  // namespace ricochet::truth

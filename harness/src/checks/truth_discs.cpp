@@ -4,7 +4,10 @@
 // cannot hide itself here.
 #include "ricochet/truth.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
+#include <tuple>
 
 #include "checks/truth_detail.hpp"
 
@@ -46,6 +49,7 @@ struct Met {
     Root t;
     Part part = Part::face;
     bool at_start = false;
+    Rational rho2 = 0;  ///< a cap's or a bumper's ρ² (the circle entered)
 };
 
 const Root k_zero{Rational(0), Rational(0), Rational(1)};
@@ -114,7 +118,7 @@ std::optional<Met> wall_contact(Vec2 a, Vec2 b, double R, const Wall& w) {
     for (const Part cap : {Part::cap0, Part::cap1}) {
         if (cap == Part::cap1 && sgn(ee) == 0) break;
         const Vec2 P = cap == Part::cap0 ? w.p0 : w.p1;
-        if (const auto r = circle_entry(dx, dy, ax - Q(P.x), ay - Q(P.y), R2)) keep_earliest(best, {*r, cap, false});
+        if (const auto r = circle_entry(dx, dy, ax - Q(P.x), ay - Q(P.y), R2)) keep_earliest(best, {*r, cap, false, R2});
     }
     return best;
 }
@@ -128,9 +132,44 @@ std::optional<Met> bumper_contact(Vec2 a, Vec2 b, double R, const Bumper& u) {
     const Rational dist2 = fx * fx + fy * fy;
     // At the centre: no normal. Not moving closer: never closer.
     if (sgn(dist2) == 0 || sgn(dx * fx + dy * fy) >= 0) return std::nullopt;
-    if (sgn(dist2 - rho2) <= 0) return Met{k_zero, Part::circle, true};
-    if (const auto r = circle_entry(dx, dy, fx, fy, rho2)) return Met{*r, Part::circle, false};
+    if (sgn(dist2 - rho2) <= 0) return Met{k_zero, Part::circle, true, rho2};
+    if (const auto r = circle_entry(dx, dy, fx, fy, rho2)) return Met{*r, Part::circle, false, rho2};
     return std::nullopt;
+}
+
+/// The exact first contact of a leg, its entry time, and whether another obstacle is met at that same time.
+struct First {
+    DiscContact contact;
+    std::optional<Met> met;
+    bool tied = false;
+};
+
+First first_met(Vec2 a, Vec2 b, double R, std::span<const Wall> walls, std::span<const Bumper> bumpers,
+                long skip_wall, long skip_bumper) {
+    First out;
+    const auto take = [&](const std::optional<Met>& m, DiscContact::Obstacle o, std::size_t i) {
+        if (!m) return;
+        // Strictly earlier only: a tie keeps the lower wall, then walls before bumpers.
+        const int order = out.met ? compare(m->t, out.met->t) : -1;
+        if (order == 0) out.tied = true;
+        if (order >= 0) return;
+        out.met = m;
+        out.tied = false;
+        out.contact = {o, static_cast<std::uint32_t>(i), m->part, m->at_start};
+    };
+    for (std::size_t i = 0; i < walls.size(); ++i)
+        if (static_cast<long>(i) != skip_wall) take(wall_contact(a, b, R, walls[i]), DiscContact::Obstacle::wall, i);
+    for (std::size_t k = 0; k < bumpers.size(); ++k)
+        if (static_cast<long>(k) != skip_bumper)
+            take(bumper_contact(a, b, R, bumpers[k]), DiscContact::Obstacle::bumper, k);
+    return out;
+}
+
+Rational qabs(const Rational& q) { return abs(q); }
+
+/// |x + y·√u| ≤ k (k ≥ 0), exactly.
+bool within(const Rational& x, const Rational& y, const Rational& u, const Rational& k) {
+    return sign2(x - k, y, u) <= 0 && sign2(x + k, y, u) >= 0;
 }
 
 }  // namespace
@@ -139,20 +178,87 @@ bool disc_meets_wall(Vec2 a, Vec2 b, double R, const Wall& w) { return wall_cont
 
 DiscContact disc_first_contact(Vec2 a, Vec2 b, double R, std::span<const Wall> walls, std::span<const Bumper> bumpers,
                                long skip_wall, long skip_bumper) {
-    DiscContact out;
-    std::optional<Root> best;
-    const auto take = [&](const std::optional<Met>& m, DiscContact::Obstacle o, std::size_t i) {
-        // Strictly earlier only: a tie keeps the lower wall, then walls before bumpers.
-        if (!m || (best && compare(m->t, *best) >= 0)) return;
-        best = m->t;
-        out = {o, static_cast<std::uint32_t>(i), m->part, m->at_start};
-    };
-    for (std::size_t i = 0; i < walls.size(); ++i)
-        if (static_cast<long>(i) != skip_wall) take(wall_contact(a, b, R, walls[i]), DiscContact::Obstacle::wall, i);
-    for (std::size_t k = 0; k < bumpers.size(); ++k)
-        if (static_cast<long>(k) != skip_bumper)
-            take(bumper_contact(a, b, R, bumpers[k]), DiscContact::Obstacle::bumper, k);
+    return first_met(a, b, R, walls, bumpers, skip_wall, skip_bumper).contact;
+}
+
+DiscAccuracy disc_accuracy(Vec2 a, Vec2 b, double R, std::span<const Wall> walls, std::span<const Bumper> bumpers,
+                           long skip_wall, long skip_bumper, const DiscTaken& taken, double ulps) {
+    DiscAccuracy out;
+    const First first = first_met(a, b, R, walls, bumpers, skip_wall, skip_bumper);
+    const DiscContact::Obstacle kind = taken.bumper ? DiscContact::Obstacle::bumper : DiscContact::Obstacle::wall;
+    // Another first contact, or none: oracle's failure, with no exact contact on this obstacle to measure against.
+    if (!first.met || first.contact.obstacle != kind || first.contact.index != taken.index) return out;
+    out.taken_first = true;
+    out.tied = first.tied;
+    const Met& m = *first.met;
+    const Rational ax = Q(a.x), ay = Q(a.y), dx = Q(b.x) - ax, dy = Q(b.y) - ay;
+    const Rational d_inf = std::max(qabs(dx), qabs(dy)), tiny = bignum::pow2(-400);
+    // M: the largest magnitude of the numbers the contact is built from.
+    double M = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y), R});
+    const Wall* w = taken.bumper ? nullptr : &walls[taken.index];
+    const Bumper* u = taken.bumper ? &bumpers[taken.index] : nullptr;
+    if (w != nullptr) M = std::max({M, std::fabs(w->p0.x), std::fabs(w->p0.y), std::fabs(w->p1.x), std::fabs(w->p1.y)});
+    else M = std::max({M, std::fabs(u->c.x), std::fabs(u->c.y), u->r});
+    // Conditioned: a contact at the start (t = 0 and X = a, exactly); a face entered at an angle whose sine is at
+    // least 1/4 (|n·d| ≥ |e|∞·|d|∞/4, as a point's crossing; D = |n·d| there); a circle (cap, bumper) entered at an
+    // angle whose cosine to the normal is at least 1/4 (at the entry d·(X − P) = −√Δ, so √Δ ≥ |d|·ρ/4, squared:
+    // 16·Δ ≥ (d·d)·ρ²; C = Δ and D = d·d there). No product of the construction underflows: |d|∞, |e|∞, ρ ≥ 2^−400.
+    bool conditioned = true;
+    if (!m.at_start) {
+        if (m.part == Part::face) {
+            const Rational e_inf = std::max(qabs(Q(w->p1.x) - Q(w->p0.x)), qabs(Q(w->p1.y) - Q(w->p0.y)));
+            conditioned = d_inf >= tiny && e_inf >= tiny && 4 * m.t.D >= e_inf * d_inf;
+        } else {
+            conditioned = d_inf >= tiny && m.rho2 >= tiny * tiny && 16 * m.t.C >= m.t.D * m.rho2;
+        }
+    }
+    if (!conditioned) return out;
+    const Rational unit = Q(M) * bignum::pow2(-53), bound = Q(ulps) * unit;
+    // t* = (A − √C)/D, D > 0. |t − t*|·|d|∞ ≤ bound  ⇔  |t·D − A + √C| ≤ bound·D/|d|∞.
+    const Rational& A = m.t.A;
+    const Rational& C = m.t.C;
+    const Rational& D = m.t.D;
+    const double t_star = bignum::to_double(Rational(A / D)) - std::sqrt(bignum::to_double(Rational(C / (D * D))));
+    out.time.conditioned = true;
+    out.time.within = within(Q(taken.t) * D - A, Rational(1), C, Rational(bound * D / d_inf));
+    out.time.error = std::fabs(taken.t - t_star) * bignum::to_double(Rational(d_inf / unit));
+    // X* = a + t*·d; per coordinate |p − a − t*·d| ≤ bound  ⇔  |(p − a)·D − A·d + d·√C| ≤ bound·D.
+    const Rational px = Q(taken.p.x) - ax, py = Q(taken.p.y) - ay, k = bound * D;
+    out.point.within = within(px * D - A * dx, dx, C, k) && within(py * D - A * dy, dy, C, k);
+    out.point.error = std::max(std::fabs(taken.p.x - (a.x + t_star * bignum::to_double(dx))),
+                               std::fabs(taken.p.y - (a.y + t_star * bignum::to_double(dy)))) /
+                      bignum::to_double(unit);
+    // The printed point is walked back until the piece a → p keeps the disc clear of every obstacle: one whose reach
+    // the piece comes within 2·bound of (the one just bounced off, one grazed, one met at the same time) may send it
+    // further than rounding does, and the point is then not judged. Reach widened by 2·bound, rounded up.
+    const double margin = 2.0 * ulps * M * 0x1p-53;
+    const double reach = std::nextafter(R + margin, HUGE_VAL);
+    bool crowded = false;
+    for (std::size_t i = 0; i < walls.size() && !crowded; ++i)
+        crowded = (taken.bumper || i != taken.index) && !clear_of_wall(a, taken.p, walls[i], reach);
+    for (std::size_t i = 0; i < bumpers.size() && !crowded; ++i)
+        crowded = (!taken.bumper || i != taken.index) &&
+                  !clear_of_circle(a, taken.p, bumpers[i].c, reach, bumpers[i].r);
+    out.point.conditioned = !crowded;
     return out;
+}
+
+HitAccuracy disc_bounce_accuracy(Vec2 v, Vec2 x, const Wall* w, const Bumper* u, Vec2 v_out, double rel,
+                                 double abs_bound) {
+    // The outward normal at x: x − X, X the segment's point nearest x (on the face: parallel to n), or the centre.
+    Rational nx, ny;
+    if (w != nullptr) {
+        std::tie(nx, ny) = from_segment(x, w->p0, w->p1);
+    } else {
+        nx = Q(x.x) - Q(u->c.x);
+        ny = Q(x.y) - Q(u->c.y);
+    }
+    // Judged where v goes into the obstacle at x clearly, v·N ≤ −|v|∞·|N|∞/4: a printed point rounded or walked
+    // back past a small cap may have v leaving it there already (the frame then goes straight back, kernel.hpp).
+    const Rational vn = Q(v.x) * nx + Q(v.y) * ny;
+    const Rational n_inf = std::max(qabs(nx), qabs(ny)), v_inf = std::max(qabs(Q(v.x)), qabs(Q(v.y)));
+    if (!(-4 * vn >= n_inf * v_inf) || sgn(vn) == 0) return {};
+    return reflection_accuracy(v, nx, ny, v_out, rel, abs_bound);
 }
 
 bool disc_in_circle(Vec2 p, double R, const Circle& c) {
