@@ -79,6 +79,23 @@ case "$case" in
                      has err "ricochet fuzz: error: cannot write in the cache folder $dir/cache: File too large"
                      lacks err "not a libFuzzer binary"
                      [ -z "$(ls -A "$dir/cache/runs")" ] || fail "its own folder is left: $(ls -A "$dir/cache/runs")" ;;
+  rates-own-time)    # The closing table's exec/s is each worker's runs over its own running time, not the campaign's. Two
+                     # fake targets print 1000 runs each; sweep (started first) ends only after static's process is gone
+                     # (reaped: a zombie still answers kill -0), so sweep ran strictly longer, whatever the load. Over the
+                     # campaign's time both showed the same rate.
+                     stats='printf "#1000\tDONE   cov: 1 ft: 1 corp: 1/1b exec/s: 0 rss: 1Mb\nstat::number_of_executed_units: 1000\n"'
+                     fake static 'case "$1" in -help=1) echo "Usage: fake"; exit 0 ;; esac
+echo $$ >"'"$dir"'/static.pid"; '"$stats"
+                     fake sweep 'case "$1" in -help=1) echo "Usage: fake"; exit 0 ;; esac
+until [ -s "'"$dir"'/static.pid" ]; do sleep 0.05; done
+while kill -0 "$(cat "'"$dir"'/static.pid")" 2>/dev/null; do sleep 0.05; done; '"$stats"
+                     cd "$proj"; run 0 fuzz --json --target sweep static --runs 1000 --seed 1 --no-merge --cache-dir "$dir/cache" --bin-dir "$dir/bin"
+                     json_is out '[(t["target"], t["workers"], t["runs"]) for t in d["targets"]] == [("sweep", 1, 1000), ("static", 1, 1000)]'
+                     json_is out 'd["targets"][1]["exec_per_s_per_worker"] > d["targets"][0]["exec_per_s_per_worker"] > 0'
+                     # One worker each: its rate in all is its rate; the campaign's is theirs summed; each worker ran
+                     # within the campaign's fuzzing time.
+                     json_is out 'all(t["exec_per_s"] == t["exec_per_s_per_worker"] and t["runs"] / t["exec_per_s"] <= d["seconds"] for t in d["targets"])'
+                     json_is out 'abs(d["exec_per_s"] - sum(t["exec_per_s"] for t in d["targets"])) <= 1e-9 * d["exec_per_s"]' ;;
   stop-keeps-failures) # Stopped after a worker saved a failure artifact, before the tail: the table and the JSON say the
                      # failure, it waits in pending/, and the next campaign on the cache converts it.
                      need_fuzzer disc

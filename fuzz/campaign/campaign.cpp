@@ -13,6 +13,7 @@
 #include "failure.hpp"
 #include "fixed_addresses.hpp"
 #include "plan.hpp"
+#include "rates.hpp"
 #include "ricochet_app/json.hpp"
 #include "ricochet_app/json_stdout.hpp"
 #include "ricochet_app/stop_signal.hpp"
@@ -85,12 +86,16 @@ std::string json_summary(const Plan& plan, const CampaignOptions& opt, double wa
     json.member("jobs", plan.jobs).member("seconds", fuzzed).member("wall_seconds", wall);
     json.member("replay_dir", plan.replay_dir.string()).member("cache_dir", plan.cache.string());
     int new_failures = 0, known = 0;
+    double in_all = 0;
+    for (const TargetRun& r : plan.runs) in_all += exec_per_s_in_all(r.tallies);
+    json.member("exec_per_s", in_all);
     json.key("targets").begin_array();
     for (const TargetRun& r : plan.runs) {
         new_failures += r.new_failures;
         known += r.known_failures;
         json.begin_object().member("target", r.target).member("workers", r.workers).member("runs", r.runs_done);
-        json.member("exec_per_s_per_worker", static_cast<double>(r.runs_done) / std::max(r.seconds, 1e-9) / r.workers);
+        // Each worker's runs over its own running time (rates.hpp), never over the campaign's.
+        json.member("exec_per_s_per_worker", exec_per_s_per_worker(r.tallies)).member("exec_per_s", exec_per_s_in_all(r.tallies));
         json.member("cov", r.cov).member("corpus", r.corpus_size);
         json.member("new_failures", r.new_failures).member("known_failures", r.known_failures);
         json.member("pending_failures", r.pending_failures).member("merge", r.merge);
@@ -175,7 +180,7 @@ int run_campaign(const CampaignOptions& opt) {
     bool any_new = false;
     for (const TargetRun& r : plan->runs) {
         fmt::print("{:<8} {:>10} {:>9} {:>6} {:>7} {:>13} {:>6} {:>8}\n", r.target, r.runs_done,
-                   human(static_cast<double>(r.runs_done) / std::max(r.seconds, 1e-9) / r.workers), r.cov, r.corpus_size,
+                   human(exec_per_s_per_worker(r.tallies)), r.cov, r.corpus_size,
                    r.new_failures, r.known_failures, r.pending_failures);
         any_new = any_new || r.new_failures > 0 || r.pending_failures > 0;
     }

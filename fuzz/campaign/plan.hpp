@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "budget.hpp"
+#include "rates.hpp"
 #include "ricochet_fuzz/campaign.hpp"
 
 namespace ricochet::fuzz {
@@ -70,7 +71,7 @@ struct TargetRun {
     std::vector<std::size_t> log_read;           ///< per worker, bytes of its log already read
     int restarts = 0;                            ///< workers restarted after a failure
     int quick_crashes = 0;                       ///< workers that failed within a second of starting
-    double seconds = 0.0;                        ///< seconds the workers fuzzed
+    std::vector<WorkerTally> tallies;            ///< per worker, its runs and its processes' running time (rates.hpp)
     int new_failures = 0;                        ///< failures saved (or kept) as new
     int known_failures = 0;                      ///< failures whose log was already saved
     int pending_failures = 0;                    ///< failure artifacts in pending/ at the end, for the next campaign

@@ -20,6 +20,7 @@
 #include "cache.hpp"
 #include "fuzz_common.hpp"
 #include "process.hpp"
+#include "rates.hpp"
 #include "ricochet_app/stop_signal.hpp"
 
 namespace ricochet::fuzz {
@@ -32,21 +33,12 @@ namespace fs = std::filesystem;
 constexpr double k_overrun_grace_s = 1;
 /// Most restarts of one target's workers in a campaign.
 constexpr int k_max_restarts = 50;
+/// How often the loop looks at its workers. A worker's running time ends when the loop finds it ended (waitpid),
+/// so this is how closely the table's exec/s times it: 50 ms is 5 % of a worker that ran for a second.
+constexpr std::chrono::milliseconds k_poll_every{50};
 /// Failures within a second of starting after which a target's workers are not restarted: a corpus
 /// input that fails stops every run at start-up.
 constexpr int k_max_quick_crashes = 5;
-
-/// The number after key in line (e.g. "cov: "), if there is one.
-std::optional<std::uint64_t> number_after(const std::string& line, std::string_view key) {
-    const auto at = line.find(key);
-    if (at == std::string::npos) return std::nullopt;
-    std::size_t i = at + key.size();
-    while (i < line.size() && line[i] == ' ') ++i;
-    std::uint64_t v = 0;
-    bool any = false;
-    while (i < line.size() && line[i] >= '0' && line[i] <= '9') v = v * 10 + static_cast<std::uint64_t>(line[i++] - '0'), any = true;
-    return any ? std::optional(v) : std::nullopt;
-}
 
 /// Reads what worker w wrote since last time: coverage, corpus size, exec/s.
 void poll_log(TargetRun& r, std::size_t w) {
@@ -64,24 +56,6 @@ void poll_log(TargetRun& r, std::size_t w) {
         if (auto e = number_after(line, "exec/s: ")) r.exec_s = *e;
     }
     r.log_read[w] += static_cast<std::size_t>(consumed);
-}
-
-/// Runs over every process of worker w: the sum of each process's count (read from the worker's whole log, the
-/// processes one after another): its final `stat::number_of_executed_units`, else its last "#N". One log per
-/// worker: the lines of workers sharing one would interleave, and a count of one taken for another's restart.
-std::uint64_t count_runs(const TargetRun& r, std::size_t w) {
-    std::uint64_t runs = 0, last = 0;
-    std::istringstream in(read_all(r.logs_of[w]));
-    for (std::string line; std::getline(in, line);) {
-        if (line.size() > 1 && line[0] == '#' && line[1] >= '0' && line[1] <= '9') {
-            const std::uint64_t n = number_after(line, "#").value_or(0);
-            // A new process starts counting again from 1.
-            if (n < last) runs += last;
-            last = n;
-        }
-        if (auto n = number_after(line, "stat::number_of_executed_units: ")) runs += *n, last = 0;
-    }
-    return runs + last;
 }
 
 /// The worker output's last line that says why it stopped: a failure line of the target, a sanitizer's or
@@ -155,6 +129,7 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
         r.pids.assign(n, -1);
         r.started.assign(n, Clock::now());
         r.ended.assign(n, false);
+        r.tallies.assign(n, WorkerTally{});
         r.log_read.assign(n, 0);
         r.logs_of.clear();
         for (std::size_t w = 0; w < n; ++w) r.logs_of.push_back(r.work / fmt::format("worker-{}.log", w));
@@ -209,6 +184,8 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
                     continue;
                 }
                 r.pids[w] = -1;
+                // Its own running time, for its own rate: a fast target's workers end long before a slow one's.
+                r.tallies[w].seconds += std::chrono::duration<double>(Clock::now() - r.started[w]).count();
                 poll_log(r, w);
                 const bool clean = WIFEXITED(status) && WEXITSTATUS(status) == 0;
                 if (!clean && std::chrono::duration<double>(Clock::now() - r.started[w]).count() < 1) ++r.quick_crashes;
@@ -258,13 +235,17 @@ double run_workers(Plan& plan, const CampaignOptions& opt) {
             }
             std::fflush(stdout);
         }
-        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        std::this_thread::sleep_for(k_poll_every);
     }
     const double fuzzed = elapsed() - started_at;
     for (TargetRun& r : plan.runs) {
         r.runs_done = 0;
-        for (std::size_t w = 0; w < r.logs_of.size(); ++w) r.runs_done += count_runs(r, w);
-        r.seconds = fuzzed;
+        // One log per worker: the lines of workers sharing one would interleave, and a count of one taken for
+        // another's restart.
+        for (std::size_t w = 0; w < r.logs_of.size(); ++w) {
+            r.tallies[w].runs = runs_in_log(read_all(r.logs_of[w]));
+            r.runs_done += r.tallies[w].runs;
+        }
         r.corpus_size = count_files(r.corpus);
     }
     return fuzzed;

@@ -11,7 +11,7 @@ namespace ricochet::fuzz {
 
 /// Runs every worker of plan until its runs, or in a campaign by time the budget's share of fuzzing, are spent
 /// (a worker still there a second later gets SIGTERM, and SIGKILL at the deadline), printing progress on stdout;
-/// then fills in each run's runs_done, seconds and corpus_size. Returns the seconds the workers fuzzed.
+/// then fills in each run's tallies (each worker's runs and running time), runs_done and corpus_size. Returns the seconds the workers fuzzed.
 double run_workers(Plan& plan, const CampaignOptions& options);
 
 /// x with a k, M or G suffix and one decimal (below 1000: a whole number), as progress lines print counts.
