@@ -2,7 +2,8 @@
 // fails on a piece that comes too close, ghost-bounce on a hit only a tangent could make, boundary on a touching
 // disc that moves closer without a contact, bounce-side on a disc back across a face it bounced off; and the
 // images (symmetry, swap, translation) and the oracle on mutant kernels that prefer a direction, a wall's
-// direction or a place, step another radius or miss the bumpers.
+// direction or a place, step another radius or miss the bumpers; accuracy on mutant kernels whose contact time,
+// contact point or bounce is off.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -277,7 +278,73 @@ FrameStatus no_bumpers(Ball& ball, BallMemory& memory, const Obstacles& o, std::
     walls_only.bumper_index = nullptr;
     return mutant::robust().step_disc(ball, memory, walls_only, hits, scratch);
 }
+/// Scales the traced t_i of every contact by 1 + k_t_error (the printed run is robust's): a contact time off.
+double k_t_error = 0.0;
+FrameStatus t_off(Ball& ball, BallMemory& memory, const Obstacles& o, std::vector<HitEvent>& hits,
+                  StepScratch& scratch) {
+    const FrameStatus st = mutant::robust().step_disc(ball, memory, o, hits, scratch);
+    if (scratch.trace != nullptr)
+        for (TracedLeg& leg : scratch.trace->legs)
+            if (leg.hit || leg.bumped) leg.hit_t *= 1.0 + k_t_error;
+    return st;
+}
+/// Prints each contact point 2^−30 further along x than robust put it: a contact point off, its time right.
+FrameStatus point_off(Ball& ball, BallMemory& memory, const Obstacles& o, std::vector<HitEvent>& hits,
+                      StepScratch& scratch) {
+    const std::size_t before = hits.size();
+    const FrameStatus st = mutant::robust().step_disc(ball, memory, o, hits, scratch);
+    for (std::size_t i = before; i < hits.size(); ++i) hits[i].point.x += 0x1p-30;
+    return st;
+}
+/// Leaves a frame of one contact with v′ turned by about 2^−20 radians: a bounce about another normal (as the
+/// check sees it where the contact ends the frame; after it, the next leg's velocity is the one judged).
+FrameStatus bounce_off(Ball& ball, BallMemory& memory, const Obstacles& o, std::vector<HitEvent>& hits,
+                       StepScratch& scratch) {
+    const std::size_t before = hits.size();
+    const FrameStatus st = mutant::robust().step_disc(ball, memory, o, hits, scratch);
+    if (hits.size() == before + 1) ball.vel = {ball.vel.x - 0x1p-20 * ball.vel.y, ball.vel.y + 0x1p-20 * ball.vel.x};
+    return st;
+}
 }  // namespace bugs
+
+TEST(DiscChecks, AccuracyCatchesAContactOffInTimePointOrBounce) {
+    // Each contact at t = 1, the frame's end, so that no leg follows it (a traced t_i off would also break the
+    // rest of the frame) and the end state's velocity is the one the ball left the contact with: ball 0, R = 0.5,
+    // reaches wall 0's face (x = 1.5) with its centre at (1, 0.25); ball 1, R = 0.25, the bumper of radius 0.75 at
+    // (10, 0) head-on, its centre at (9, 0).
+    Scene s = mutant::scene({{{1.5, -2}, {1.5, 2}}}, {{{0, 0}, {1, 0.25}, 0.5}, {{8, 0}, {1, 0}, 0.25}});
+    s.bumpers = {{{10, 0}, 0.75}};
+    s.frames = 1;
+    EXPECT_FALSE(mutant::first_failure(s, 1, {Check::accuracy}, KernelId::robust));
+    EXPECT_FALSE(mutant::first_failure(s, 1, {Check::accuracy}, KernelId::exact));
+    {
+        // Within the bound (2^16·2^−53·M, M = 2 for ball 0, along a leg of |d|∞ = 1): t_i off by 2^−40.
+        mutant::Mutation m;
+        m.ops.step_disc = bugs::t_off;
+        bugs::k_t_error = 0x1p-40;
+        EXPECT_FALSE(mutant::first_failure(s, 1, {Check::accuracy}));
+        // Past it: 2^−34.
+        bugs::k_t_error = 0x1p-34;
+        mutant::expect_failure(mutant::first_failure(s, 1, {Check::accuracy}), Check::accuracy, 1, 0,
+                               "meets wall 0 at t_i = 1.00000000");
+    }
+    {
+        mutant::Mutation m;
+        m.ops.step_disc = bugs::point_off;
+        mutant::expect_failure(mutant::first_failure(s, 1, {Check::accuracy}), Check::accuracy, 1, 0,
+                               "eps*M from the exact contact point");
+    }
+    {
+        mutant::Mutation m;
+        m.ops.step_disc = bugs::bounce_off;
+        mutant::expect_failure(mutant::first_failure(s, 1, {Check::accuracy}), Check::accuracy, 1, 0,
+                               "meets wall 0 at (1, 0.25) moving (1, 0.25)");
+        Scene bumper_only = s;
+        bumper_only.balls.erase(bumper_only.balls.begin());
+        mutant::expect_failure(mutant::first_failure(bumper_only, 1, {Check::accuracy}), Check::accuracy, 1, 0,
+                               "meets bumper 0 at (9, 0) moving (1, 0)");
+    }
+}
 
 TEST(DiscChecks, OracleCatchesAKernelThatDecidesForAnotherDiscOrMissesABumper) {
     // A disc of radius 1 coming down from (5, 2.5) to (5, 0.75), within R of the floor (a disc of radius 1/2 would
