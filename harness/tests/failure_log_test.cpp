@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "mutant_kernel.hpp"
 #include "ricochet/failure_log.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/replay.hpp"
@@ -120,6 +121,42 @@ TEST(FailureLog, ExpectStatesAreCappedAsRecordCapsThem) {
         make_failure_log(scene, KernelId::robust, "p", CheckFailure{Check::boundary, 0, 0, "x", std::nullopt, std::nullopt});
     EXPECT_TRUE(at0.scene.expect_states.empty());
     EXPECT_EQ(at0.scene.frames, 0);
+}
+
+/// A bug that acts frames before a check sees it: robust's step, then the ball sinks by 2^−20 in y every frame.
+FrameStatus sinking(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
+                    StepScratch& scratch, const WallIndex* index) {
+    const FrameStatus st = mutant::robust().step_ball(ball, memory, walls, hits, scratch, index);
+    ball.pos.y -= 0x1p-20;
+    return st;
+}
+
+TEST(FailureLog, ABugThatActsBeforeItIsSeenFailsItsLogAndTheFixedKernelPassesIt) {
+    // A ball moving along +x at y = 5.5·2^−20 over the wall y = 0, x in [5, 8]. The sinking kernel moves it down
+    // every frame, unseen (no check but no-tunnel is asked), until frame 6's piece (5, 0.5·2^−20) → (6, −0.5·2^−20)
+    // goes through the wall. Its saved log pins frames 1–5 as the bug ran them.
+    const Scene s = parse_ok("ricochet 1\nframes 8\nwall 5 0 8 0\nball 0 0x1.6p-18 1 0\ncheck no-tunnel\n");
+    mutant::Mutation m;
+    m.ops.step_ball = sinking;
+    const CheckedRun bad = run_checked(s, mutant::id(), s.frames, s.checks);
+    ASSERT_TRUE(bad.failure);
+    EXPECT_EQ(bad.failure->frame, 6);
+    const FailureLog log = make_failure_log(s, mutant::id(), "property P seed 1", *bad.failure);
+    ASSERT_FALSE(log.scene.expect_states.empty());
+    ASSERT_TRUE(log.reproduces());
+    // On the kernel that saved it, replay fails it at its found check and frame.
+    ReplayResult r = replay_scene(log.scene);
+    EXPECT_FALSE(r.passed);
+    EXPECT_NE(r.message.find("invariant no-tunnel broke at frame 6 ball 0"), std::string::npos) << r.message;
+    // Fixed (robust, which does not sink): every check holds; the states before the failure diverge from frame 1,
+    // a note, not a verdict.
+    r = replay_scene(log.scene, KernelId::robust);
+    EXPECT_TRUE(r.passed) << r.message;
+    EXPECT_NE(r.message.find("a note: first diverging frame 1: ball 0"), std::string::npos) << r.message;
+    // A log with an expect hash is a recorded regression log: its states are verdicts.
+    Scene recorded = log.scene;
+    recorded.expect_hash = r.run.hash;
+    EXPECT_FALSE(replay_scene(recorded, KernelId::robust).passed);
 }
 
 TEST(FailureLog, ReplaySaysWhenTheRunDiffersFromFound) {
