@@ -198,6 +198,6 @@ extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** /*argv*/) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace ricochet::fuzz;
-    check_scene("disc", decode(data, size, kernel_steps_bumpers()), disc_checks());
+    check_scene("disc", decode(data, size, kernel_steps_bumpers()), disc_checks(), {data, size});
     return 0;
 }

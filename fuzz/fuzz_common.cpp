@@ -1,5 +1,7 @@
 #include "fuzz_common.hpp"
 
+#include "check_tiers.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -209,11 +211,13 @@ void stage_plugin_case(std::string_view target, const Scene& scene, std::span<co
     stage_plugin_input({fmt::format("running fuzz target {}", target), write_scene_log(log), out});
 }
 
-void check_scene(std::string_view target, const Scene& scene, std::span<const Check> checks) {
+void check_scene(std::string_view target, const Scene& scene, std::span<const Check> checks,
+                 std::span<const std::uint8_t> input) {
     CheckOptions options;
     options.keep_events = false;
-    stage_plugin_case(target, scene, checks);
-    const CheckedRun run = run_checked(scene, kernel_under_test(), scene.frames, checks, options);
+    const std::vector<Check> asked = checks_for(input, checks);
+    stage_plugin_case(target, scene, asked);
+    const CheckedRun run = run_checked(scene, kernel_under_test(), scene.frames, asked, options);
     if (run.failure) fail(target, scene, *run.failure);
 }
 

@@ -82,9 +82,10 @@ private:
 /// Keeps x in the accepted range: out-of-range or non-finite values become 0.
 double clamp_to_range(double x);
 
-/// Runs scene under the kernel under test with checks (run_checked, no events kept) and, on the first
-/// failure, calls fail: a target's whole oracle.
-void check_scene(std::string_view target, const Scene& scene, std::span<const Check> checks);
+/// Runs scene (decoded from input) under the kernel under test with checks_for(input, checks) (run_checked, no
+/// events kept) and, on the first failure, calls fail: a target's whole oracle.
+void check_scene(std::string_view target, const Scene& scene, std::span<const Check> checks,
+                 std::span<const std::uint8_t> input);
 
 /// Reports failure (of scene under the kernel under test) for target on stderr, writes the failure log
 /// (make_failure_log, `from fuzz TARGET SHA1`, the note as a comment) to $RICOCHET_FUZZ_SCENE_OUT if set,

@@ -58,6 +58,6 @@ constexpr std::span<const Check> k_checks = k_all_checks;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace ricochet::fuzz;
-    check_scene("scene", decode(data, size), k_checks);
+    check_scene("scene", decode(data, size), k_checks, {data, size});
     return 0;
 }

@@ -52,6 +52,6 @@ constexpr std::span<const Check> k_checks = k_all_checks;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace ricochet::fuzz;
-    check_scene("static", to_scene(decode(data, size)), k_checks);
+    check_scene("static", to_scene(decode(data, size)), k_checks, {data, size});
     return 0;
 }
