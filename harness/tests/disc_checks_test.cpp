@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "checks/frame_check.hpp"
@@ -307,6 +308,14 @@ FrameStatus bounce_off(Ball& ball, BallMemory& memory, const Obstacles& o, std::
 }
 }  // namespace bugs
 
+/// With the disc step replaced by bug, check c fails first at frame 1 for ball, its message containing text.
+void expect_caught(const Scene& s, decltype(KernelOps::step_disc) bug, Check c, std::uint32_t ball,
+                   std::string_view text) {
+    mutant::Mutation m;
+    m.ops.step_disc = bug;
+    mutant::expect_failure(mutant::first_failure(s, 1, {c}), c, 1, ball, text);
+}
+
 TEST(DiscChecks, AccuracyCatchesAContactOffInTimePointOrBounce) {
     // Each contact at t = 1, the frame's end, so that no leg follows it (a traced t_i off would also break the
     // rest of the frame) and the end state's velocity is the one the ball left the contact with: ball 0, R = 0.5,
@@ -328,22 +337,11 @@ TEST(DiscChecks, AccuracyCatchesAContactOffInTimePointOrBounce) {
         mutant::expect_failure(mutant::first_failure(s, 1, {Check::accuracy}), Check::accuracy, 1, 0,
                                "meets wall 0 at t_i = 1.00000000");
     }
-    {
-        mutant::Mutation m;
-        m.ops.step_disc = bugs::point_off;
-        mutant::expect_failure(mutant::first_failure(s, 1, {Check::accuracy}), Check::accuracy, 1, 0,
-                               "eps*M from the exact contact point");
-    }
-    {
-        mutant::Mutation m;
-        m.ops.step_disc = bugs::bounce_off;
-        mutant::expect_failure(mutant::first_failure(s, 1, {Check::accuracy}), Check::accuracy, 1, 0,
-                               "meets wall 0 at (1, 0.25) moving (1, 0.25)");
-        Scene bumper_only = s;
-        bumper_only.balls.erase(bumper_only.balls.begin());
-        mutant::expect_failure(mutant::first_failure(bumper_only, 1, {Check::accuracy}), Check::accuracy, 1, 0,
-                               "meets bumper 0 at (9, 0) moving (1, 0)");
-    }
+    expect_caught(s, bugs::point_off, Check::accuracy, 0, "eps*M from the exact contact point");
+    expect_caught(s, bugs::bounce_off, Check::accuracy, 0, "meets wall 0 at (1, 0.25) moving (1, 0.25)");
+    Scene bumper_only = s;
+    bumper_only.balls.erase(bumper_only.balls.begin());
+    expect_caught(bumper_only, bugs::bounce_off, Check::accuracy, 0, "meets bumper 0 at (9, 0) moving (1, 0)");
 }
 
 TEST(DiscChecks, OracleCatchesAKernelThatDecidesForAnotherDiscOrMissesABumper) {
@@ -354,18 +352,8 @@ TEST(DiscChecks, OracleCatchesAKernelThatDecidesForAnotherDiscOrMissesABumper) {
     s.frames = 1;
     EXPECT_FALSE(mutant::first_failure(s, 1, {Check::oracle}, KernelId::robust));
     EXPECT_FALSE(mutant::first_failure(s, 1, {Check::oracle}, KernelId::exact));
-    {
-        mutant::Mutation m;
-        m.ops.step_disc = bugs::half_radius;
-        mutant::expect_failure(mutant::first_failure(s, 1, {Check::oracle}), Check::oracle, 1, 0,
-                               "against wall 0: the kernel says no contact, exactly a contact");
-    }
-    {
-        mutant::Mutation m;
-        m.ops.step_disc = bugs::no_bumpers;
-        mutant::expect_failure(mutant::first_failure(s, 1, {Check::oracle}), Check::oracle, 1, 1,
-                               "the kernel meets nothing first, exactly bumper 0 (its rim)");
-    }
+    expect_caught(s, bugs::half_radius, Check::oracle, 0, "against wall 0: the kernel says no contact, exactly a contact");
+    expect_caught(s, bugs::no_bumpers, Check::oracle, 1, "the kernel meets nothing first, exactly bumper 0 (its rim)");
 }
 
 TEST(DiscChecks, ImagesCatchAKernelThatPrefersADirectionAWallsDirectionOrAPlace) {
