@@ -33,16 +33,13 @@ public:
             std::vector<const Event*> contacts;
             for (const Event& e : f.events)
                 if ((e.kind == Event::Kind::hit || e.kind == Event::Kind::bump) && e.ball == i) contacts.push_back(&e);
-            if (auto bad = stepped_as_disc(i) ? discs_.contacts(f, i, contacts) : ball(f, i, contacts)) return bad;
+            if (auto bad = stepped_as_disc(scene_, i) ? discs_.contacts(f, i, contacts) : ball(f, i, contacts)) return bad;
             if (auto bad = rest_of_frame(f, i, contacts)) return bad;
         }
         return std::nullopt;
     }
 
 private:
-    /// A disc, or any ball among bumpers: the disc frame steps it (kernel.hpp, step_ball with obstacles).
-    bool stepped_as_disc(std::uint32_t i) const { return is_disc(scene_.balls[i]) || !scene_.bumpers.empty(); }
-
     /// A point ball among walls: its hits (no bumps: the scene has no bumpers).
     std::optional<CheckFailure> ball(const Frame& f, std::uint32_t i, const std::vector<const Event*>& hits) const {
         const StepTrace& trace = f.traces[i];
@@ -87,8 +84,7 @@ private:
                                fmt::format("leg {} ({} -> {}) hits wall {} at {}, {:.4g} eps*M from the exact "
                                            "crossing (bound {})",
                                            l, leg.from, leg.to, hit.index, hit.pos, r.error, k_hit_accuracy_ulps));
-            // v′: the velocity the ball left the hit with (the next leg's, else the frame's end state's).
-            const Vec2 v_out = l + 1 < trace.legs.size() ? trace.legs[l + 1].vel : end_velocity(f, i);
+            const Vec2 v_out = velocity_after(f, i, l);
             if (!lone_wall(hit.pos, hit.index)) {
                 if (auto bad = corner(f, i, l, leg, hit, v_out)) return bad;
                 continue;
@@ -177,13 +173,6 @@ private:
     static bool printed_as(const Event& e, const TracedLeg& leg) {
         if (leg.hit) return e.kind == Event::Kind::hit && e.index == *leg.hit;
         return leg.bumped && e.kind == Event::Kind::bump && e.index == *leg.bumped;
-    }
-
-    /// The ball's velocity at the end of the frame, as its state event printed it.
-    static Vec2 end_velocity(const Frame& f, std::uint32_t i) {
-        for (const Event& e : f.events)
-            if (e.kind == Event::Kind::state && e.ball == i) return e.vel;
-        return {};  // not reached: every ball prints a state every frame (world.hpp)
     }
 
     /// p lies on no wall's closed segment but wall w's (exactly).

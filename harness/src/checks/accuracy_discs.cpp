@@ -41,14 +41,7 @@ std::optional<CheckFailure> DiscAccuracy::contacts(const Frame& f, std::uint32_t
                                     l, leg.from, leg.to, R, what, index, e.pos, r.point.error, k_disc_accuracy_ulps));
         // A corner (another obstacle met at the same time) follows the corner rule, not judged here.
         if (r.tied) continue;
-        // v′: the velocity the ball left the contact with (the next leg's, else the frame's end state's).
-        Vec2 v_out{};
-        if (l + 1 < trace.legs.size()) {
-            v_out = trace.legs[l + 1].vel;
-        } else {
-            for (const Event& s : f.events)
-                if (s.kind == Event::Kind::state && s.ball == i) v_out = s.vel;
-        }
+        const Vec2 v_out = velocity_after(f, i, l);
         const truth::HitAccuracy rb =
             truth::disc_bounce_accuracy(leg.vel, e.pos, bumper ? nullptr : &scene_.walls[index],
                                         bumper ? &scene_.bumpers[index] : nullptr, v_out, bound_.rel, bound_.abs);

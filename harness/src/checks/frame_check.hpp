@@ -65,6 +65,25 @@ inline bool finite_leg(const TracedLeg& leg) {
     return std::isfinite(leg.from.x) && std::isfinite(leg.from.y) && std::isfinite(leg.to.x) && std::isfinite(leg.to.y);
 }
 
+/// A disc, or any ball among bumpers: the disc frame steps it (kernel.hpp, step_ball with obstacles), and the checks
+/// that read its legs read them by the disc rules.
+inline bool stepped_as_disc(const Scene& scene, std::uint32_t ball) {
+    return is_disc(scene.balls[ball]) || !scene.bumpers.empty();
+}
+
+/// The velocity the ball left its last contact of frame f with, where no leg follows it: the frame's end state's.
+inline Vec2 end_velocity(const Frame& f, std::uint32_t ball) {
+    for (const Event& e : f.events)
+        if (e.kind == Event::Kind::state && e.ball == ball) return e.vel;
+    return {};  // not reached: every ball prints a state every frame (world.hpp)
+}
+
+/// The velocity the ball left leg l's contact with: the next leg's, else the frame's end state's.
+inline Vec2 velocity_after(const Frame& f, std::uint32_t ball, std::size_t l) {
+    const StepTrace& trace = f.traces[ball];
+    return l + 1 < trace.legs.size() ? trace.legs[l + 1].vel : end_velocity(f, ball);
+}
+
 /// Compares two frames' events: bit for bit (bits) or by value. Describes the first difference as `who`
 /// giving something else, as a failure of c; nothing if they agree.
 std::optional<CheckFailure> compare_events(Check c, std::int64_t f, std::span<const Event> expected,

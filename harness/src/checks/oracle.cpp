@@ -25,13 +25,11 @@ public:
         if (auto bad = positions(f)) return bad;
         if (f.index == 0) return std::nullopt;
         for (std::uint32_t i = 0; i < f.before.size(); ++i)
-            if (auto bad = stepped_as_disc(i) ? discs_.legs(f, i) : legs(f, i)) return bad;
+            if (auto bad = stepped_as_disc(scene_, i) ? discs_.legs(f, i) : legs(f, i)) return bad;
         return std::nullopt;
     }
 
 private:
-    /// A disc, or any ball among bumpers: the disc frame steps it (kernel.hpp, step_ball with obstacles).
-    bool stepped_as_disc(std::uint32_t i) const { return is_disc(scene_.balls[i]) || !scene_.bumpers.empty(); }
 
     /// Frame 0: every pair of static shapes, in both orders.
     std::optional<CheckFailure> statics() const {
