@@ -169,12 +169,6 @@ private:
         return std::nullopt;
     }
 
-    /// The event printed the contact the leg took: a hit on its wall, or a bump on its bumper.
-    static bool printed_as(const Event& e, const TracedLeg& leg) {
-        if (leg.hit) return e.kind == Event::Kind::hit && e.index == *leg.hit;
-        return leg.bumped && e.kind == Event::Kind::bump && e.index == *leg.bumped;
-    }
-
     /// p lies on no wall's closed segment but wall w's (exactly).
     bool lone_wall(Vec2 p, std::uint32_t w) const {
         for (std::uint32_t j = 0; j < scene_.walls.size(); ++j)

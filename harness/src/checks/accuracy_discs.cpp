@@ -21,9 +21,9 @@ std::optional<CheckFailure> DiscAccuracy::contacts(const Frame& f, std::uint32_t
         const TracedLeg& leg = trace.legs[l];
         if (!leg.hit && !leg.bumped) continue;
         const Event& e = *printed[k++];
+        if (!printed_as(e, leg) || !finite_leg(leg)) break;
         const bool bumper = !leg.hit;
         const std::uint32_t index = bumper ? *leg.bumped : *leg.hit;
-        if ((e.kind == Event::Kind::bump) != bumper || e.index != index || !finite_leg(leg)) break;
         const char* what = bumper ? "bumper" : "wall";
         const truth::DiscAccuracy r = truth::disc_accuracy(
             leg.from, leg.to, R, scene_.walls, scene_.bumpers, leg.skipped ? static_cast<long>(*leg.skipped) : -1,

@@ -71,6 +71,12 @@ inline bool stepped_as_disc(const Scene& scene, std::uint32_t ball) {
     return is_disc(scene.balls[ball]) || !scene.bumpers.empty();
 }
 
+/// The event printed the contact the leg took: a hit on its wall, or a bump on its bumper.
+inline bool printed_as(const Event& e, const TracedLeg& leg) {
+    if (leg.hit) return e.kind == Event::Kind::hit && e.index == *leg.hit;
+    return leg.bumped && e.kind == Event::Kind::bump && e.index == *leg.bumped;
+}
+
 /// The velocity the ball left its last contact of frame f with, where no leg follows it: the frame's end state's.
 inline Vec2 end_velocity(const Frame& f, std::uint32_t ball) {
     for (const Event& e : f.events)
