@@ -126,16 +126,55 @@ case $case in
                     fail "the log was not run under the plug-in"
                   run 0 replay --kernel "plugin:$good" "$dir/seven.scene" "$dir/good.scene"
                   has out "2 passed, 0 failed" ;;
+  saved-failure-fails-until-fixed) # A plug-in's saved failure is a regression: replay fails it (exit 1, at its found
+                  # check, frame and ball) while the bug is there, and passes it once the code is fixed.
+                  need_props
+                  blind=$plugins/test_plugin_no_reason.so
+                  RICOCHET_KERNEL="plugin:$blind" RICOCHET_REPLAY_DIR="$dir/found" RC_PARAMS="seed=1 max_success=200" \
+                    bounded 1 "$props" --gtest_filter='*NoTunnelSingleWall*'
+                  set -- "$dir"/found/*.scene
+                  [ "$#" = 1 ] && [ -f "$1" ] || fail "expected one saved log in $dir/found, found: $*"
+                  log=$1
+                  grep -qx 'kernel test-no-reason' "$log" || fail "the log does not name the plug-in's kernel"
+                  ! grep -q '^expect failure' "$log" || fail "the saved log expects its failure: a bug would keep CI green"
+                  set -- $(sed -n 's/^found \([a-z-]*\) \([0-9]*\) \([0-9]*\)$/\1 \2 \3/p' "$log")
+                  [ "$#" = 3 ] || fail "the log has no found line"
+                  run 1 replay --plugin "$blind" "$log"
+                  has_part out "invariant $1 broke at frame $2 ball $3:"
+                  has_part out "0 passed, 1 failed"
+                  # The property suite, run again on the same folder, fails on the saved log before any new case.
+                  RICOCHET_KERNEL="plugin:$blind" RICOCHET_REPLAY_DIR="$dir/found" RC_PARAMS="seed=2 max_success=1" \
+                    bounded 1 "$props" --gtest_filter='*NoTunnelSingleWall*'
+                  has_part out "$log"
+                  # Fixed: the same log stepped by code without the bug (robust in the plug-in's place) passes.
+                  run 0 replay --plugin "$blind" --kernel robust "$log"
+                  has_part out "1 passed, 0 failed" ;;
+  campaign-known-fails) # A campaign that meets a plug-in's saved failure again exits 1 (a regression still there),
+                  # where a lecture kernel's known failure is its documented weakness seen again (exit 0: fuzz/ tests).
+                  # The same seed and count twice: the second campaign finds the case the first saved.
+                  need_fuzzer sweep
+                  blind=$plugins/test_plugin_no_reason.so
+                  for round in 1 2; do
+                    run 1 fuzz --kernel "plugin:$blind" --target sweep --runs 500 --seed 1 --jobs 1 --no-merge \
+                      --cache-dir "$dir/cache$round" --replay-dir "$dir/replays" --json -- -len_control=0 -max_len=64
+                    cp "$dir/out" "$dir/round$round.json"
+                  done
+                  python3 -c 'import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:3])
+sys.exit(0 if a["new_failures"] >= 1 and b["new_failures"] == 0 and b["known_failures"] >= 1 and b["exit"] == 1 else 1)' \
+                    "$dir/round1.json" "$dir/round2.json" || fail "the second campaign did not fail on the known case"
+                  has_part err "saved failures failing again (regressions until fixed) (exit 1)" ;;
   reduce)         # reduce takes a plug-in as the other commands do: --kernel plugin:PATH, or --plugin for a log naming
                   # its kernel. The blind plug-in (test-no-reason) lets the ball through the wall at x = 7.
                   blind=$plugins/test_plugin_no_reason.so
                   run 0 reduce "$dir/seven.scene" --kernel "plugin:$blind" -o "$dir/small.scene"
                   grep -qx 'kernel test-no-reason' "$dir/small.scene" || fail "the reduced log does not name the plug-in's kernel"
-                  grep -q '^expect failure ' "$dir/small.scene" || fail "the reduced log does not expect its failure"
-                  run 0 replay --plugin "$blind" "$dir/small.scene"
-                  has out "1 passed, 0 failed"
+                  # The user's own code: its failure is a regression, not a documented weakness.
+                  ! grep -q '^expect failure ' "$dir/small.scene" || fail "the reduced log expects its failure"
+                  run 1 replay --plugin "$blind" "$dir/small.scene"
+                  has_part out "invariant no-tunnel broke at frame "
                   run 0 reduce --plugin "$blind" "$dir/small.scene" -o "$dir/again.scene"
-                  run 0 replay --plugin "$blind" "$dir/again.scene"
+                  run 1 replay --plugin "$blind" "$dir/again.scene"
                   wall_log -1001 c.scene; run 3 reduce "$dir/c.scene" --kernel "plugin:$crash"
                   first_line err "$(named test-crash crash) crashed: SIGSEGV in its sweep function, called with bs (0, 0), v (1, 0), wall (-1001, -5) -> (-1001, 5); while reducing $dir/c.scene" ;;
   check)          # check replays a corpus holding a plug-in's log once --plugin loads it.

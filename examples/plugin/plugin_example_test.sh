@@ -3,10 +3,10 @@
 # float ray/segment test in C, naive_float.so) against it with find_package(ricochet), and runs the harness on it:
 #   - the installed `ricochet run --kernel plugin:…` steps a log with it;
 #   - the property suite (RICOCHET_KERNEL=plugin:…, a fixed RapidCheck seed) catches it tunnelling and saves one
-#     log, which the installed `ricochet replay --plugin …` passes (its `expect failure` reproduces) and fails at
-#     the check, frame and ball of its `found` line once `expect failure` is removed;
+#     log, a regression (no `expect failure`), which the installed `ricochet replay --plugin …` fails at the check,
+#     frame and ball of its `found` line, and passes stepped by code without the bug (`--kernel robust`);
 #   - where the fuzz targets are libFuzzer ones, `ricochet fuzz --kernel plugin:… --target sweep` (fixed seed and
-#     run count) finds a failure, and every log it saves reproduces the same way.
+#     run count) finds a failure (exit 1), and every log it saves replays the same way.
 # Writes only under BUILD/plugin-test.
 #   plugin_example_test.sh SETTINGS PROPERTIES FUZZ_BIN_DIR    (SETTINGS: the shell file examples/CMakeLists.txt
 #                                                               generates; PROPERTIES: the property binary)
@@ -38,18 +38,23 @@ echo "== ricochet run --kernel plugin:$lib"
 "$ricochet" run "$source_dir/replays/pinball.scene" --kernel "plugin:$lib" >"$work/run.out" || fail "run exits $?"
 grep -q '^hit ' "$work/run.out" || fail "no hit in the pinball table's run"
 
-# replays_as_found LOG: `ricochet replay --plugin` passes LOG (its expected failure reproduces), and without its
-# `expect failure` line fails it at the check, frame and ball of its `found` line.
+# replays_as_found LOG: LOG is a regression, not a documented weakness (no `expect failure`): `ricochet replay
+# --plugin` fails it (exit 1) at the check, frame and ball of its `found` line while the bug is there, and passes
+# it stepped by code without the bug (robust in the plug-in's place).
 replays_as_found() {
   grep -qx 'kernel naive-float' "$1" || fail "$1 does not name the plug-in's kernel"
   set -- "$1" $(sed -n 's/^found \([a-z-]*\) \([0-9]*\) \([0-9]*\)$/\1 \2 \3/p' "$1")
   [ "$#" = 4 ] || fail "$1 has no found line"
-  grep -qx "expect failure $2 $3" "$1" || fail "$1 does not expect its failure ($2 at frame $3)"
-  "$ricochet" replay --plugin "$lib" "$1" >"$work/replay.out" 2>&1 || { cat "$work/replay.out"; fail "replay fails $1"; }
-  grep -v '^expect failure' "$1" >"$work/bare.scene"
-  if "$ricochet" replay --plugin "$lib" "$work/bare.scene" >"$work/replay.out" 2>&1; then fail "$1 passes without expect failure"; fi
+  ! grep -q '^expect failure' "$1" || fail "$1 expects its failure: the bug would keep CI green"
+  set +e
+  "$ricochet" replay --plugin "$lib" "$1" >"$work/replay.out" 2>&1
+  status=$?
+  set -e
+  [ "$status" = 1 ] || { cat "$work/replay.out"; fail "replay exits $status on $1, expected 1 (the bug is there)"; }
   grep -q "$2 broke at frame $3 ball $4:" "$work/replay.out" || { cat "$work/replay.out"; fail "replay does not fail $2 at frame $3 ball $4"; }
-  echo "$(basename "$1"): $2 at frame $3 ball $4, reproduced"
+  "$ricochet" replay --plugin "$lib" --kernel robust "$1" >"$work/replay.out" 2>&1 ||
+    { cat "$work/replay.out"; fail "$1 fails stepped by robust: it would not pass once the bug is fixed"; }
+  echo "$(basename "$1"): $2 at frame $3 ball $4, reproduced; passes without the bug"
 }
 
 echo "== the property suite, RICOCHET_KERNEL=plugin:$lib"

@@ -177,12 +177,13 @@ int run_campaign(const CampaignOptions& opt) {
     std::filesystem::remove_all(plan->run_dir, ec);
     fmt::print("\n{:<8} {:>10} {:>9} {:>6} {:>7} {:>13} {:>6} {:>8}\n", "target", "runs", "exec/s", "cov", "corpus", "new failures",
                "known", "pending");
-    bool any_new = false;
+    bool any_new = false, any_known = false;
     for (const TargetRun& r : plan->runs) {
         fmt::print("{:<8} {:>10} {:>9} {:>6} {:>7} {:>13} {:>6} {:>8}\n", r.target, r.runs_done,
                    human(exec_per_s_per_worker(r.tallies)), r.cov, r.corpus_size,
                    r.new_failures, r.known_failures, r.pending_failures);
         any_new = any_new || r.new_failures > 0 || r.pending_failures > 0;
+        any_known = any_known || r.known_failures > 0;
     }
     for (const TargetRun& r : plan->runs)
         for (const std::string& stop : r.stops) fmt::print("stopped early: {}\n", stop);
@@ -196,14 +197,19 @@ int run_campaign(const CampaignOptions& opt) {
         fmt::print("left for the next campaign on this cache: {}\n", fmt::join(what, "; "));
     }
     const bool stopped = app::stop_requested();
-    const int code = stopped ? app::stop_exit_code() : any_new ? 1 : 0;
+    // A saved failure met again is a regression still there, for a kernel held to the guarantees; a lecture
+    // baseline's or a peer's is its documented weakness seen again.
+    const bool regressions = any_known && plan->known_fails;
+    const bool failing = any_new || regressions;
+    const int code = stopped ? app::stop_exit_code() : failing ? 1 : 0;
     // The wall time of the whole command, from its start to this line.
     const double wall = budget.elapsed();
-    const std::string verdict = any_new && left.pending > 0 ? "NEW FAILURES (some not converted yet)"
-                                : any_new                   ? "NEW FAILURES"
-                                                            : "no new failures";
+    std::string verdict = any_new && left.pending > 0 ? "NEW FAILURES (some not converted yet)"
+                          : any_new                   ? "NEW FAILURES"
+                                                      : "no new failures";
+    if (regressions) verdict += "; saved failures failing again (regressions until fixed)";
     fmt::print("kernel {}, {:.0f} s ({:.0f} s fuzzing), exec/s per worker; {}{}\n", plan->kernel_name, wall, fuzzed, verdict,
-               stopped ? fmt::format("; stopped by {} (exit {})", app::stop_signal_name(), code) : any_new ? " (exit 1)" : "");
+               stopped ? fmt::format("; stopped by {} (exit {})", app::stop_signal_name(), code) : failing ? " (exit 1)" : "");
     std::fflush(stdout);
     if (json_out.on()) {
         json_out.restore();

@@ -245,6 +245,7 @@ std::optional<Plan> make_plan(const CampaignOptions& opt, const Budget& budget) 
     if (!made) return std::nullopt;
     Plan& plan = *made;
     plan.budget = budget;
+    plan.known_fails = !kernel_ops(kernel).failures_documented;
     std::vector<std::string> targets = opt.targets;
     // The disc target needs a kernel that steps discs: left out of the default set for one that steps point balls
     // only (saying so), refused when named.

@@ -93,6 +93,10 @@ struct Plan {
     std::string kernel_env;            ///< RICOCHET_KERNEL for every worker: the kernel's name, or plugin:ABSOLUTE-PATH
     std::string kernel_name;           ///< the kernel's name (a plug-in's own): its corpus folder in the cache
     std::filesystem::path plugin;      ///< the plug-in's file, if the kernel is one; empty otherwise
+    /// A saved failure met again fails the campaign (exit 1): the kernel is held to the guarantees (robust,
+    /// exact, a plug-in), so its saved failures are regressions until fixed. False for a kernel whose failures
+    /// are documented weaknesses (the lecture baselines, the peers: KernelOps::failures_documented).
+    bool known_fails = true;
     int jobs = 1;                      ///< worker processes in all
     std::vector<TargetRun> runs;       ///< one per target, in the order asked for
     Budget budget;                     ///< the command's clock and, by time, its deadline

@@ -108,10 +108,12 @@ struct KernelOps {
     /// K::k_speed_abs_bound; one that states none is held to robust's (limits.hpp).
     double speed_rel_bound = k_speed_rel_bound;
     double speed_abs_bound = k_speed_abs_bound;
-    /// True for a kernel whose failures are documented weaknesses rather than bugs to fix here: the lecture
-    /// baselines, and code put under the harness from outside (peers, plug-ins). Their failure logs carry
-    /// `expect failure` (failure_log.hpp), so replay passes while the failure reproduces. A kernel type says
-    /// so with K::k_failures_documented = true; the default, false, is for kernels held to the guarantees.
+    /// True for a kernel whose failures are documented weaknesses rather than bugs to fix: the lecture
+    /// baselines and the peers (Box2D, Chipmunk: shown, not fixed, here). Their failure logs carry `expect
+    /// failure` (failure_log.hpp), so replay passes while the failure reproduces, and a campaign that meets a
+    /// saved one again exits 0. A kernel type says so with K::k_failures_documented = true; the default,
+    /// false, is for kernels held to the guarantees: robust, exact and the user's own (plug-ins), whose saved
+    /// failures are regressions that fail until fixed.
     bool failures_documented = false;
 };
 

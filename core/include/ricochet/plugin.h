@@ -8,9 +8,10 @@
  *     ricochet replay --plugin ./libmine.so replays/         its saved failure logs
  *
  * The plug-in's kernel joins ricochet's kernel registry under the name it declares (kernel.hpp,
- * register_kernel): failure logs name that kernel (`kernel NAME`) and, as for the lecture baselines, carry
- * `expect failure` (kernel.hpp, KernelOps::failures_documented), so that replay passes while the failure
- * reproduces and says so once it goes away. A log never loads code: `kernel NAME` only finds a plug-in
+ * register_kernel): failure logs name that kernel (`kernel NAME`). Your code is held to ricochet's
+ * guarantees, so a saved failure is a regression: its log carries no `expect failure` (kernel.hpp,
+ * KernelOps::failures_documented, is false), replay fails it until the bug is fixed, and a campaign that
+ * meets it again exits 1. A log never loads code: `kernel NAME` only finds a plug-in
  * already loaded from the command line (--kernel plugin:PATH, --plugin PATH) or RICOCHET_KERNEL.
  *
  * Conventions: those of every ricochet kernel, stated in core/include/ricochet/kernel.hpp ("Conventions

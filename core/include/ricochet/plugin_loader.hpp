@@ -9,7 +9,9 @@
 // - without a frame step, its frames are stepped by the lecture kernels' loop (naive_frame.hpp) over every
 //   wall of the scene (no broad phase: what the plug-in is asked never depends on the grid), its legs traced
 //   for the checks; with one, a trace says legs_traced = false and the reflections it reports;
-// - its failure logs carry `expect failure` (KernelOps::failures_documented), as the lecture baselines' do;
+// - its failures are the user's bugs, not documented weaknesses (KernelOps::failures_documented is false):
+//   its failure logs carry no `expect failure`, so they fail replay until the bug is fixed, and a campaign
+//   that meets a saved one again exits 1;
 // - every call into it runs under the guard (plugin_guard.hpp): a crash, a hang or an answer plugin.h does
 //   not allow ends the process with a report naming the plug-in and the staged input kept.
 // Loading and registering are not synchronized with stepping: load plug-ins at start-up, before any thread

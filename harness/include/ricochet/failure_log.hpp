@@ -20,7 +20,7 @@ inline constexpr std::uint32_t k_failure_log_balls = 8;
 inline constexpr double k_failure_log_all_frames = 64.0;
 
 /// True for the kernels whose failures are documented weaknesses, not bugs (KernelOps::failures_documented:
-/// lecture-float, lecture-double, and code put under the harness from outside): their failure logs carry
+/// lecture-float, lecture-double and the peers; not a plug-in, the user's own code): their failure logs carry
 /// `expect failure`, so replay passes while they reproduce.
 bool documents_weakness(KernelId kernel);
 

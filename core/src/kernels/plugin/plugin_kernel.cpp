@@ -198,8 +198,9 @@ KernelOps plugin_kernel_ops(std::size_t slot) {
         ops.speed_rel_bound = pl.api.speed_rel_bound;
         ops.speed_abs_bound = pl.api.speed_abs_bound;
     }
-    // Code put under the harness from outside: its failures are documented, not ricochet's to fix.
-    ops.failures_documented = true;
+    // The user's own code, held to ricochet's guarantees: a saved failure is a regression that fails replay
+    // until it is fixed (no `expect failure`), unlike the lecture baselines' and the peers' documented ones.
+    ops.failures_documented = false;
     return ops;
 }
 
