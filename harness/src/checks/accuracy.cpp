@@ -89,6 +89,11 @@ private:
                 if (auto bad = corner(f, i, l, leg, hit, v_out)) return bad;
                 continue;
             }
+            // Judged where v goes into the wall from the side the leg starts on (or the leg starts on its line):
+            // a leg whose rounded end reaches the line while v itself moves away (|v| under an ulp of M, say)
+            // meets it by rounding alone, and the exact reflection of v is no answer there.
+            const int from = truth::side(leg.from, scene_.walls[hit.index]);
+            if (from != 0 && truth::direction_side(leg.vel, scene_.walls[hit.index]) != -from) continue;
             const truth::HitAccuracy rb =
                 truth::bounce_accuracy(leg.vel, scene_.walls[hit.index], v_out, bound_.rel, bound_.abs);
             if (rb.conditioned && !rb.within)
