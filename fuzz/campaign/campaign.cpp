@@ -16,7 +16,9 @@
 #include "rates.hpp"
 #include "ricochet_app/json.hpp"
 #include "ricochet_app/json_stdout.hpp"
+#include "ricochet_app/report.hpp"
 #include "ricochet_app/stop_signal.hpp"
+#include "ricochet/scene_log.hpp"
 #include "workers.hpp"
 
 namespace ricochet::fuzz {
@@ -118,11 +120,38 @@ std::string json_summary(const Plan& plan, const CampaignOptions& opt, double wa
     return json.end_object().str();
 }
 
+/// The campaign as a report's suite: a case per target, failed by its new failures (those the exit status
+/// counts: saved, no log, unsaved, flaky, pending), a finding each.
+app::TestSuite report_suite(const Plan& plan, double fuzzed) {
+    app::TestSuite suite{"fuzz", fuzzed, {}};
+    for (const TargetRun& r : plan.runs) {
+        app::TestCase c{fmt::format("fuzz.{}", plan.kernel_name), r.target, fuzzed, app::TestCase::Outcome::passed, {}, {}};
+        for (const FailureRecord& f : r.failures) {
+            if (!f.counts_as_new()) continue;
+            c.outcome = app::TestCase::Outcome::failed;
+            const auto at = [](const std::optional<std::uint64_t>& n) {
+                return n ? std::optional<std::int64_t>(static_cast<std::int64_t>(*n)) : std::nullopt;
+            };
+            c.findings.push_back({f.check.empty() ? std::string("fuzz") : f.check, at(f.frame), at(f.ball), f.log.string(), {}, {},
+                                  fmt::format("{} ({}; input {})", f.message.empty() ? "not converted yet" : f.message,
+                                              status_name(f.status), f.artifact.string())});
+        }
+        suite.cases.push_back(std::move(c));
+    }
+    return suite;
+}
+
 }  // namespace
 
 int run_campaign(const CampaignOptions& opt) {
     // The command's clock starts here: a campaign by time ends, tail and all, by --time seconds from now.
     const Budget budget(Clock::now(), opt.runs > 0 ? 0.0 : opt.time);
+    // A report that cannot be written is refused before any fuzzing.
+    const app::ReportFiles reports{opt.junit, opt.sarif};
+    if (const std::string problem = app::report_files_problem(reports); !problem.empty()) {
+        fmt::print(stderr, "ricochet: error: {}\n", problem);
+        return 2;
+    }
     // Under --json everything the campaign prints goes to stderr; stdout gets the document at the end.
     app::JsonStdout json_out(opt.json);
     // SIGINT or SIGTERM: the workers are stopped, the failures converted so far are saved, the others wait in
@@ -196,14 +225,24 @@ int run_campaign(const CampaignOptions& opt) {
         fmt::print("left for the next campaign on this cache: {}\n", fmt::join(what, "; "));
     }
     const bool stopped = app::stop_requested();
-    const int code = stopped ? app::stop_exit_code() : any_new ? 1 : 0;
+    int code = stopped ? app::stop_exit_code() : any_new ? 1 : 0;
     // The wall time of the whole command, from its start to this line.
     const double wall = budget.elapsed();
+    // The reports before the summary's last line and the document, so that both say the exit: 2 if one could
+    // not be written.
+    std::string report_error;
+    if (!app::write_reports({"ricochet fuzz", wall, {report_suite(*plan, fuzzed)}, {}, {}}, reports, write_file_atomically,
+                            &report_error)) {
+        fmt::print(stderr, "ricochet: error: {}\n", report_error);
+        if (!stopped) code = 2;
+    }
     const std::string verdict = any_new && left.pending > 0 ? "NEW FAILURES (some not converted yet)"
                                 : any_new                   ? "NEW FAILURES"
                                                             : "no new failures";
     fmt::print("kernel {}, {:.0f} s ({:.0f} s fuzzing), exec/s per worker; {}{}\n", plan->kernel_name, wall, fuzzed, verdict,
-               stopped ? fmt::format("; stopped by {} (exit {})", app::stop_signal_name(), code) : any_new ? " (exit 1)" : "");
+               stopped ? fmt::format("; stopped by {} (exit {})", app::stop_signal_name(), code)
+               : code != 0 ? fmt::format(" (exit {})", code)
+                           : "");
     std::fflush(stdout);
     if (json_out.on()) {
         json_out.restore();
