@@ -132,9 +132,10 @@ app::TestSuite report_suite(const Plan& plan, double fuzzed) {
             const auto at = [](const std::optional<std::uint64_t>& n) {
                 return n ? std::optional<std::int64_t>(static_cast<std::int64_t>(*n)) : std::nullopt;
             };
+            // The target's report line says the check and frame again; only a failure with no check needs it.
+            const std::string what = !f.check.empty() ? "a new failure" : f.message.empty() ? "not converted yet" : f.message;
             c.findings.push_back({f.check.empty() ? std::string("fuzz") : f.check, at(f.frame), at(f.ball), f.log.string(), {}, {},
-                                  fmt::format("{} ({}; input {})", f.message.empty() ? "not converted yet" : f.message,
-                                              status_name(f.status), f.artifact.string())});
+                                  fmt::format("{} ({}); input {}", what, status_name(f.status), f.artifact.string())});
         }
         suite.cases.push_back(std::move(c));
     }
