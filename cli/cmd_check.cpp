@@ -1,8 +1,9 @@
 // `ricochet check`: the whole regression gate. Replays the project's corpus (--replay-dir, else
 // $RICOCHET_REPLAY_DIR, else replays/ of the project folder: ricochet_app/project.hpp), runs the lecture's
 // pinball example, then the property suite if it was built, then a short fuzz campaign if the fuzz targets
-// were built (both saving what they find into that same folder); one summary, non-zero exit if anything
-// failed, 2 if there is no project. SIGINT or SIGTERM stops it between two stages (a stage's replay between
+// were built (both saving what they find into that same folder); one summary (and, asked for, a JUnit report and a
+// SARIF log of every stage: docs/cli-reports.md), non-zero exit if anything failed, 2 if there is no project or a
+// report cannot be written. SIGINT or SIGTERM stops it between two stages (a stage's replay between
 // two logs, a child program gets the signal too): the summary of what ran, exit 128 + the signal.
 #include <sys/wait.h>
 #include <unistd.h>

@@ -1,7 +1,8 @@
-// `ricochet replay [PATH...] [--hashes] [--json] [--junit FILE] [--kernel K] [--max-work N] [--plugin PATH...]`: every log's
-// checks and expect lines; exit 0 all passed (logs for a kernel this build lacks are skipped, and said so), 1 some
-// failed, 2 some path or log could not be read (a missing path, a folder without logs, a malformed log), was over
-// the work bound, or no PATH was given and no project folder was found; 128 + the signal if SIGINT or SIGTERM
+// `ricochet replay [PATH...] [--hashes] [--json] [--junit FILE] [--kernel K] [--max-work N] [--plugin PATH...]`:
+// every log's checks and expect lines; exit 0 all passed (logs for a kernel this build lacks are skipped, and said
+// so), 1 some failed, 2 some path or log could not be read (a missing path, a folder without logs, a malformed log),
+// was over the work bound, no PATH was given and no project folder was found, or the JUnit report (a case per log,
+// docs/cli-reports.md) could not be written; 128 + the signal if SIGINT or SIGTERM
 // stopped it (between two frames of a log or two logs: the summary says how many ran, and where it stopped).
 #include <chrono>
 #include <filesystem>
