@@ -223,8 +223,8 @@ void register_check(CLI::App& app) {
     add_report_options(*sub, opt->reports, "a test case per log replayed, pinball kernel, property and fuzz target", true);
     sub->callback([opt] {
         if (opt->fuzz_time < 0) opt->fuzz_time = env_fuzz_seconds();
-        // Plug-ins before the corpus: their failure logs there name their kernels.
         check_report_files_or_exit(opt->reports);
+        // Plug-ins before the corpus: their failure logs there name their kernels.
         load_plugins_or_exit(opt->plugins);
         const auto project = app::find_project(opt->replay_dir);
         if (!project) {
@@ -269,7 +269,10 @@ void register_check(CLI::App& app) {
             }
             fmt::print("== summary\n");
             for (const auto& s : summary) fmt::print("{}\n", s);
-            fmt::print("{}\n", stopped ? fmt::format("check stopped by {}", app::stop_signal_name()) : failed ? "check FAILED" : "check passed");
+            fmt::print("{}\n", stopped       ? fmt::format("check stopped by {}", app::stop_signal_name())
+                               : code == 2 ? "check FAILED (a report could not be written)"
+                               : failed    ? "check FAILED"
+                                           : "check passed");
             throw Exit{code};
         };
         const auto timed = [](auto&& f) {

@@ -584,7 +584,10 @@ case "$case" in
                      run 2 check --no-properties --fuzz-runs 0 --sarif "$dir"; first_line err "ricochet: error: cannot write $dir: it is a folder"
                      run 2 fuzz --runs 1 --cache-dir "$dir/cache" --junit "$dir/no/f.xml"; first_line err "ricochet: error: cannot write $dir/no/f.xml: no such folder: $dir/no"
                      [ ! -e "$dir/cache" ] || fail "fuzz made its cache"
-                     run 2 replay --junit; first_line err "ricochet: error: --junit: 1 required FILE missing" ;;
+                     run 2 replay --junit; first_line err "ricochet: error: --junit: 1 required FILE missing"
+                     # A write that fails at the end (a full device) says so, and the exit status is 2.
+                     if [ -w /dev/full ]; then run 2 replay --junit /dev/full "$log"
+                       grep -q '^ricochet: error: cannot write /dev/full: .*No space left on device' "$dir/err" || fail "no write error"; fi ;;
   junit-properties)  # The property suite's own JUnit (GoogleTest's --gtest_output=xml), a tiny filtered run.
                      props=$(dirname "$ricochet")/../properties/ricochet_properties
                      [ -x "$props" ] || { echo "skip $case: no property suite in this build"; exit 77; }
@@ -618,11 +621,15 @@ case "$case" in
   stop-replay-json)  mkdir "$dir/many"; sed 's/^frames 10000000$/frames 2000/' "$long" >"$dir/many/a.scene"
                      i=0; while [ $i -lt 300 ]; do ln "$dir/many/a.scene" "$dir/many/l$i.scene"; i=$((i + 1)); done
                      # Under --json the verdict lines go to stderr: wait on a copy of replay's stdout there.
-                     "$ricochet" replay --json "$dir/many" >"$dir/json" 2>"$dir/out" & pid=$!
+                     "$ricochet" replay --json --junit "$dir/many.xml" "$dir/many" >"$dir/json" 2>"$dir/out" & pid=$!
                      while ! grep -q '^ok ' "$dir/out"; do kill -0 "$pid" 2>/dev/null || fail "replay ended early"; sleep 0.02; done
                      kill -INT "$pid"; wait "$pid"; rc=$?; mv "$dir/json" "$dir/out"
                      [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
-                     json_is out 'd["exit"] == 130 and d["stopped"] is True and d["total"] == 301 and 1 <= d["passed"] == len(d["logs"]) < 301' ;;
+                     json_is out 'd["exit"] == 130 and d["stopped"] is True and d["total"] == 301 and 1 <= d["passed"] == len(d["logs"]) < 301'
+                     # The report of a stopped replay is whole: the logs it ran, valid JUnit, and no temporary file left.
+                     junit_valid "$dir/many.xml"
+                     xml_is "$dir/many.xml" 'd.get("tests") == a[0]' "$(python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["logs"]))' "$dir/out")"
+                     [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left" ;;
   stop-check)        mkproj; sed 's/^frames 10000000$/frames 2000/' "$long" >"$proj/replays/a.scene"
                      i=0; while [ $i -lt 300 ]; do ln "$proj/replays/a.scene" "$proj/replays/l$i.scene"; i=$((i + 1)); done
                      cd "$proj"; stop_after_first_line INT check --no-properties --fuzz-runs 0
