@@ -1,6 +1,7 @@
 // The JUnit and SARIF reports (ricochet_app/report.hpp).
 #include "ricochet_app/report.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -122,6 +123,21 @@ void set_counts(pugi::xml_node node, const Counts& c, bool with_skipped) {
 Counts counts_of(pugi::xml_node suite) {
     return {suite.attribute("tests").as_int(), suite.attribute("failures").as_int(), suite.attribute("errors").as_int(),
             suite.attribute("skipped").as_int(), suite.attribute("time").as_double()};
+}
+
+/// The line of a GoogleTest failure message that says what failed: the message is `FILE:LINE`, `Failed`, then
+/// the assertion's own text.
+std::string gtest_summary(std::string_view message) {
+    for (std::size_t at = 0; at < message.size();) {
+        const std::size_t end = std::min(message.find('\n', at), message.size());
+        const std::string_view line = message.substr(at, end - at);
+        at = end + 1;
+        const std::size_t colon = line.rfind(':');
+        const bool file_line = colon != std::string_view::npos && colon + 1 < line.size() &&
+                               line.find_first_not_of("0123456789", colon + 1) == std::string_view::npos;
+        if (!line.empty() && line != "Failed" && !file_line) return std::string(line);
+    }
+    return std::string(message);
 }
 
 /// Writes one case into suite and returns its counts.
@@ -298,9 +314,7 @@ std::vector<TestSuite> read_gtest_xml(const std::string& text) {
                        TestCase::Outcome::passed, {}, {}};
             for (pugi::xml_node failure : test.children("failure")) {
                 c.outcome = TestCase::Outcome::failed;
-                // GoogleTest's message is the assertion's whole text: its first line says what failed.
-                const std::string message = failure.attribute("message").value();
-                c.findings.push_back({"property", {}, {}, {}, {}, {}, message.substr(0, message.find('\n'))});
+                c.findings.push_back({"property", {}, {}, {}, {}, {}, gtest_summary(failure.attribute("message").value())});
             }
             if (c.outcome == TestCase::Outcome::passed &&
                 (test.child("skipped") || std::string_view(test.attribute("result").value()) == "skipped" ||
