@@ -244,8 +244,11 @@ case "$case" in
                      has out "check passed" ;;
   check-fuzz-seed)   # The campaign check ends with: its count and seed, in a cache of its own.
                      mkproj; need_fuzzer scene
-                     cd "$proj"; XDG_CACHE_HOME=$dir/cache run 0 check --no-properties --fuzz-runs 20 --fuzz-seed 3
+                     cd "$proj"; XDG_CACHE_HOME=$dir/cache run 0 check --no-properties --fuzz-runs 20 --fuzz-seed 3 --junit "$dir/c.xml" --sarif "$dir/c.sarif"
                      has out "== fuzz: 20 inputs per target, seed 3"
+                     # The campaign's own report, taken into check's: a case per target.
+                     junit_valid "$dir/c.xml"; sarif_valid "$dir/c.sarif"
+                     xml_is "$dir/c.xml" 'd[-1].get("name") == "fuzz" and "scene" in [c.get("name") for c in d[-1]] and {c.get("classname") for c in d[-1]} == {"fuzz.robust"}' 
                      grep -q '^fuzz        passed (' "$dir/out" || fail "no fuzz passed line"
                      [ -d "$dir/cache/ricochet/fuzz/scene" ] || fail "the campaign did not use \$XDG_CACHE_HOME" ;;
   check-fuzz-time)   run 2 check --fuzz-time soon
