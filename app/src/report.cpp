@@ -96,9 +96,13 @@ Json artifact_location(const std::string& log, const fs::path& project_abs) {
 /// A time as the XSD's SUREFIRE_TIME takes it: digits, a point, three decimals.
 std::string junit_time(double s) { return fmt::format("{:.3f}", s > 0 ? s : 0.0); }
 
-/// Adds name=value to node, as valid UTF-8.
+/// Adds name=value to node, as valid UTF-8 on one line: a line end or tab becomes a space (the XML writer leaves
+/// out control characters, which would run two words into one).
 void attr(pugi::xml_node node, const char* name, std::string_view value) {
-    node.append_attribute(name).set_value(valid_utf8(value).c_str());
+    std::string v = valid_utf8(value);
+    for (char& c : v)
+        if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+    node.append_attribute(name).set_value(v.c_str());
 }
 
 /// The counts a <testsuite> and <testsuites> carry.
