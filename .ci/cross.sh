@@ -262,7 +262,7 @@ trap 'rm -rf "$out"' EXIT
 
 build_reference() {
   ensure cmake ninja-build g++-12 pkg-config libfmt-dev libgmp-dev libxxhash-dev libssl-dev libcli11-dev \
-    librapidcheck-dev libgtest-dev || return 1
+    librapidcheck-dev libgtest-dev nlohmann-json3-dev libpugixml-dev || return 1
   if [ ! -f "$ref_dir/CMakeCache.txt" ]; then
     CC=gcc-12 CXX=g++-12 cmake -S . -B "$ref_dir" -G Ninja -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O0" \
       -DRICOCHET_TESTS=OFF -DRICOCHET_BENCH=OFF -DRICOCHET_FUZZ=OFF >/dev/null || return 1
@@ -283,7 +283,8 @@ leg() {
   local deb gnu multi runner ssl_root t0 t1 t2 t3
   leg_info "$name"
   t0=$(now)
-  local pkgs=(cmake ninja-build pkg-config libcli11-dev) target_args=() targets=()
+  # nlohmann-json is header-only (Architecture: all): the host's package serves every leg.
+  local pkgs=(cmake ninja-build pkg-config libcli11-dev nlohmann-json3-dev) target_args=() targets=()
   case "$name" in
     # qemu-user too: a kernel built without IA32 emulation (a Firecracker VM's, for one) refuses an i386
     # program with "Exec format error", and the leg then runs it under qemu-i386 (see the start check in leg).
@@ -301,7 +302,8 @@ leg() {
     target_args=(-DCMAKE_CXX_FLAGS="$opt" -DRICOCHET_BIGNUM=boost -DRICOCHET_FUZZ_CAMPAIGN=OFF -DRICOCHET_PEERS=OFF)
     targets=(ricochet "${harness_targets[@]}")
   else
-    pkgs+=("libfmt-dev:$deb" "libgmp-dev:$deb" "libxxhash-dev:$deb" "librapidcheck-dev:$deb" "libgtest-dev:$deb")
+    pkgs+=("libfmt-dev:$deb" "libgmp-dev:$deb" "libxxhash-dev:$deb" "librapidcheck-dev:$deb" "libgtest-dev:$deb"
+           "libpugixml-dev:$deb")
     targets=(ricochet "${harness_targets[@]}" ricochet_properties)
     if ! add_arch "$deb" || ! ensure "${pkgs[@]}" || ! openssl_sysroot; then
       echo "FAIL $name: the cross toolchain or the :$deb dev packages could not be installed (see above)"

@@ -1,8 +1,9 @@
 // `ricochet check`: the whole regression gate. Replays the project's corpus (--replay-dir, else
 // $RICOCHET_REPLAY_DIR, else replays/ of the project folder: ricochet_app/project.hpp), runs the lecture's
 // pinball example, then the property suite if it was built, then a short fuzz campaign if the fuzz targets
-// were built (both saving what they find into that same folder); one summary, non-zero exit if anything
-// failed, 2 if there is no project. SIGINT or SIGTERM stops it between two stages (a stage's replay between
+// were built (both saving what they find into that same folder); one summary (and, asked for, a JUnit report and a
+// SARIF log of every stage: docs/cli-reports.md), non-zero exit if anything failed, 2 if there is no project or a
+// report cannot be written. SIGINT or SIGTERM stops it between two stages (a stage's replay between
 // two logs, a child program gets the signal too): the summary of what ran, exit 128 + the signal.
 #include <sys/wait.h>
 #include <unistd.h>
@@ -125,6 +126,58 @@ PropertiesReport read_properties_report(const std::filesystem::path& path) {
     return r;
 }
 
+/// A file of check's own in the temporary folder, for a child to write into; removed at the end of its scope.
+class TempFile {
+public:
+    explicit TempFile(std::string_view stem) {
+        std::error_code ec;
+        path_ = (std::filesystem::temp_directory_path(ec) / fmt::format("ricochet-check-{}.XXXXXX", stem)).string();
+        const int fd = ::mkstemp(path_.data());
+        if (fd >= 0) ::close(fd);
+        else path_.clear();
+    }
+    ~TempFile() {
+        if (!path_.empty()) ::unlink(path_.c_str());
+    }
+    TempFile(const TempFile&) = delete;
+    TempFile& operator=(const TempFile&) = delete;
+    /// Its path; empty if it could not be made.
+    const std::string& path() const { return path_; }
+    /// What the child wrote into it.
+    std::string read() const {
+        std::ifstream in(path_);
+        return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    }
+
+private:
+    std::string path_;
+};
+
+/// The property suite's cases (GoogleTest's XML), each failed one's findings its saved logs: those named after
+/// its property (`NAME-ID.scene`, the suite's failure logs), else the failure GoogleTest reports.
+std::vector<app::TestSuite> property_suites(const std::string& gtest_xml, const std::vector<std::string>& saved_logs) {
+    std::vector<app::TestSuite> suites = app::read_gtest_xml(gtest_xml);
+    for (app::TestSuite& suite : suites)
+        for (app::TestCase& c : suite.cases) {
+            // GoogleTest's name of a parameterised property: NAME/PARAM.
+            const std::string property = c.name.substr(0, c.name.find('/'));
+            std::vector<app::Finding> logs;
+            for (const std::string& log : saved_logs)
+                if (std::filesystem::path(log).filename().string().starts_with(property + "-")) logs.push_back(app::finding_of_log(log));
+            if (c.outcome != app::TestCase::Outcome::failed || logs.empty()) continue;
+            for (app::Finding& f : logs) f.detail = c.findings.front().detail;
+            c.findings = std::move(logs);
+        }
+    return suites;
+}
+
+/// A stage that did not run its cases (skipped, not built, could not start) as a suite of one case.
+app::TestSuite stage_case(std::string_view stage, app::TestCase::Outcome outcome, std::string message) {
+    app::TestCase c{"check", std::string(stage), 0, outcome, message, {}};
+    if (outcome == app::TestCase::Outcome::error) c.findings.push_back({"error", {}, {}, {}, {}, {}, message});
+    return {std::string(stage), 0, {std::move(c)}};
+}
+
 /// A member holding an array of strings.
 void string_array(app::JsonWriter& json, std::string_view name, const std::vector<std::string>& items) {
     json.key(name).begin_array();
@@ -146,6 +199,7 @@ void register_check(CLI::App& app) {
         std::string replay_dir;
         std::vector<std::string> plugins;
         bool json = false;
+        app::ReportFiles reports;
         std::uint64_t max_work = k_default_max_work;
     };
     auto opt = std::make_shared<Options>();
@@ -166,8 +220,10 @@ void register_check(CLI::App& app) {
     sub->add_flag("--json", opt->json,
                   "print one JSON document (docs/cli-json.md, schema ricochet-check/1) on stdout instead of the summary; "
                   "everything else goes to stderr");
+    add_report_options(*sub, opt->reports, "a test case per log replayed, pinball kernel, property and fuzz target", true);
     sub->callback([opt] {
         if (opt->fuzz_time < 0) opt->fuzz_time = env_fuzz_seconds();
+        check_report_files_or_exit(opt->reports);
         // Plug-ins before the corpus: their failure logs there name their kernels.
         load_plugins_or_exit(opt->plugins);
         const auto project = app::find_project(opt->replay_dir);
@@ -182,6 +238,9 @@ void register_check(CLI::App& app) {
         const bool by_time = opt->fuzz_time >= 0;
         std::vector<std::string> summary;
         bool failed = false;
+        const bool reporting = !opt->reports.junit.empty() || !opt->reports.sarif.empty();
+        const auto t_check = std::chrono::steady_clock::now();
+        app::Report report{"ricochet check", 0, {}, {}, {}};
         // Under --json every stage's output, the children's too, goes to stderr; the document is built as
         // the stages run.
         app::JsonStdout json_out(opt->json);
@@ -198,7 +257,11 @@ void register_check(CLI::App& app) {
         const auto finish = [&] {
             json.end_object();
             const bool stopped = app::stop_requested();
-            const int code = stopped ? app::stop_exit_code() : failed ? 1 : 0;
+            int code = stopped ? app::stop_exit_code() : failed ? 1 : 0;
+            // The reports before the document and the summary, so that both say the command's exit: 2 if one
+            // could not be written.
+            report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_check).count();
+            if (!write_reports_or_say(report, opt->reports) && !stopped) code = 2;
             if (json_out.on()) {
                 json_out.restore();
                 write_stdout(json.member("stopped", stopped).member("passed", code == 0).member("exit", code).end_object().str());
@@ -206,7 +269,10 @@ void register_check(CLI::App& app) {
             }
             fmt::print("== summary\n");
             for (const auto& s : summary) fmt::print("{}\n", s);
-            fmt::print("{}\n", stopped ? fmt::format("check stopped by {}", app::stop_signal_name()) : failed ? "check FAILED" : "check passed");
+            fmt::print("{}\n", stopped       ? fmt::format("check stopped by {}", app::stop_signal_name())
+                               : code == 2 ? "check FAILED (a report could not be written)"
+                               : failed    ? "check FAILED"
+                                           : "check passed");
             throw Exit{code};
         };
         const auto timed = [](auto&& f) {
@@ -224,6 +290,7 @@ void register_check(CLI::App& app) {
         // A log for a kernel this build lacks is skipped, never failed: each reason said once, with its count.
         for (const auto& [reason, n] : r.skip_reasons) summary.push_back(fmt::format("            {} skipped: {}", n, reason));
         stage("replay", r.failed > 0 || r.bad_input ? "failed" : "passed").member("seconds", t_replay);
+        report.suites.push_back(replay_suite(r, t_replay));
         write_replay_members(json, r);
         json.end_object();
         if (app::stop_requested()) finish();
@@ -236,11 +303,13 @@ void register_check(CLI::App& app) {
         if (!std::filesystem::exists(pinball, pin_ec)) {
             // A project of its own need not carry the lecture's example.
             summary.push_back(fmt::format("pinball     skipped (no {})", pinball.string()));
+            report.suites.push_back(stage_case("pinball", app::TestCase::Outcome::skipped, fmt::format("no {}", pinball.string())));
             stage("pinball", "skipped").member("message", fmt::format("no {}", pinball.string())).end_object();
         } else if (auto* d = std::get_if<Diagnostic>(&parsed)) {
             fmt::print(stderr, "{}\n", d->str());
             failed = true;
             summary.push_back("pinball     unreadable");
+            report.suites.push_back(stage_case("pinball", app::TestCase::Outcome::error, d->str()));
             stage("pinball", "failed").member("message", d->str()).end_object();
         } else if (const std::string over = work_over_budget(pinball.string(), std::get<Scene>(parsed),
                                                               std::get<Scene>(parsed).frames, opt->max_work);
@@ -249,6 +318,7 @@ void register_check(CLI::App& app) {
             fmt::print(stderr, "ricochet: error: {}\n", over);
             failed = true;
             summary.push_back("pinball     not run (over --max-work)");
+            report.suites.push_back(stage_case("pinball", app::TestCase::Outcome::error, over));
             stage("pinball", "failed").member("message", over).end_object();
         } else {
             const Scene& scene = std::get<Scene>(parsed);
@@ -258,7 +328,9 @@ void register_check(CLI::App& app) {
             json.key("pinball").begin_object().key("kernels").begin_object();
             CheckOptions quiet;
             quiet.keep_events = false;
+            app::TestSuite kernels{"pinball", 0, {}};
             for (KernelId k : k_all_kernels) {
+                const auto t0 = std::chrono::steady_clock::now();
                 const CheckedRun run = run_checked(scene, k, scene.frames, scene.checks, quiet);
                 const bool ok = !run.failure && !run.error;
                 fmt::print("{:15} {}\n", k,
@@ -267,8 +339,24 @@ void register_check(CLI::App& app) {
                 line += fmt::format(" {}={}", k, ok ? "ok" : "broken");
                 json.member(fmt::format("{}", k), ok ? "ok" : "broken");
                 // The lecture kernels are expected to break; the robust and exact kernels may not.
-                if (!ok && (k == KernelId::robust || k == KernelId::exact)) pinball_failed = true;
+                const bool must_hold = k == KernelId::robust || k == KernelId::exact;
+                if (!ok && must_hold) pinball_failed = true;
+                // A case per kernel; the lecture kernels' breaking is what the example shows, not a failure.
+                app::TestCase c{"pinball", fmt::format("{}", k),
+                                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
+                                app::TestCase::Outcome::passed, {}, {}};
+                if (!ok && must_hold) {
+                    c.outcome = app::TestCase::Outcome::failed;
+                    c.findings.push_back({run.failure ? std::string(check_name(run.failure->check)) : std::string("error"),
+                                          run.failure ? std::optional<std::int64_t>(run.failure->frame) : std::nullopt,
+                                          run.failure ? std::optional<std::int64_t>(run.failure->ball) : std::nullopt,
+                                          pinball.string(), {}, {},
+                                          run.failure ? run.failure->message : run.error->message()});
+                }
+                kernels.seconds += c.seconds;
+                kernels.cases.push_back(std::move(c));
             }
+            report.suites.push_back(std::move(kernels));
             failed = failed || pinball_failed;
             summary.push_back(line);
             json.end_object().member("status", pinball_failed ? "failed" : "passed").end_object();
@@ -280,25 +368,33 @@ void register_check(CLI::App& app) {
         const std::string props = RICOCHET_PROPERTIES_EXE;
         if (opt->no_properties) {
             summary.push_back("properties  skipped (--no-properties)");
+            report.suites.push_back(stage_case("properties", app::TestCase::Outcome::skipped, "--no-properties"));
             stage("properties", "skipped").end_object();
         } else if (props.empty() || !std::filesystem::exists(props)) {
             summary.push_back("properties  not built (build target ricochet_properties)");
+            report.suites.push_back(stage_case("properties", app::TestCase::Outcome::skipped, "not built"));
             stage("properties", "not-built").end_object();
         } else {
             fmt::print("== properties {}\n", props);
             int rc = 0;
-            // What failed and what was saved, told by the suite in a file of our own (removed after).
-            std::string report = (std::filesystem::temp_directory_path(abs_ec) / "ricochet-check-properties.XXXXXX").string();
-            const int report_fd = ::mkstemp(report.data());
-            if (report_fd >= 0) ::close(report_fd);
-            else report.clear();
+            // What failed and what was saved, told by the suite in a file of our own (removed after); its cases,
+            // for the reports, in GoogleTest's XML.
+            const TempFile told_file("properties"), gtest_xml("properties-xml");
+            std::vector<std::string> argv = {props};
+            if (reporting && !gtest_xml.path().empty()) argv.push_back("--gtest_output=xml:" + gtest_xml.path());
             // The suite saves its failures into (and first replays the saved logs of) the same corpus.
             const double t = timed([&] {
-                rc = run_program({props}, {fmt::format("{}={}", app::k_replay_dir_env, replays_abs.string()),
-                                            fmt::format("RICOCHET_PROPERTIES_REPORT={}", report)});
+                rc = run_program(argv, {fmt::format("{}={}", app::k_replay_dir_env, replays_abs.string()),
+                                        fmt::format("RICOCHET_PROPERTIES_REPORT={}", told_file.path())});
             });
-            const PropertiesReport told = report.empty() ? PropertiesReport{} : read_properties_report(report);
-            if (!report.empty()) ::unlink(report.c_str());
+            const PropertiesReport told = told_file.path().empty() ? PropertiesReport{} : read_properties_report(told_file.path());
+            if (reporting) {
+                std::vector<app::TestSuite> suites = property_suites(gtest_xml.read(), told.logs);
+                // A suite that ended before writing its XML (a crash): the stage as one case.
+                if (suites.empty() && rc != 0)
+                    suites.push_back(stage_case("properties", app::TestCase::Outcome::error, fmt::format("the suite exited with status {}", rc)));
+                for (app::TestSuite& suite : suites) report.suites.push_back(std::move(suite));
+            }
             failed = failed || rc != 0;
             summary.push_back(fmt::format("properties  {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));
             for (const std::string& f : told.failed) summary.push_back(fmt::format("            failed: {}", f));
@@ -314,9 +410,11 @@ void register_check(CLI::App& app) {
         // 4. A short fuzz campaign through `ricochet fuzz`, if the targets are built.
         if (by_time ? opt->fuzz_time == 0 : opt->fuzz_runs == 0) {
             summary.push_back(by_time ? "fuzz        skipped (--fuzz-time 0)" : "fuzz        skipped (--fuzz-runs 0)");
+            report.suites.push_back(stage_case("fuzz", app::TestCase::Outcome::skipped, by_time ? "--fuzz-time 0" : "--fuzz-runs 0"));
             stage("fuzz", "skipped").end_object();
         } else if (!any_fuzz_target_built()) {
             summary.push_back("fuzz        not built (configure with clang-14 and RICOCHET_FUZZ=ON)");
+            report.suites.push_back(stage_case("fuzz", app::TestCase::Outcome::skipped, "not built"));
             stage("fuzz", "not-built").end_object();
         } else {
             std::vector<std::string> argv = {self_exe(), "fuzz", "--replay-dir", replays_abs.string()};
@@ -327,10 +425,21 @@ void register_check(CLI::App& app) {
                 fmt::print("== fuzz: {} inputs per target, seed {}\n", opt->fuzz_runs, opt->fuzz_seed);
                 argv.insert(argv.end(), {"--runs", std::to_string(opt->fuzz_runs), "--seed", std::to_string(opt->fuzz_seed)});
             }
+            // The campaign's own reports, taken into check's whole.
+            const TempFile junit("fuzz-junit"), sarif("fuzz-sarif");
+            if (reporting && !junit.path().empty() && !sarif.path().empty())
+                argv.insert(argv.end(), {"--junit", junit.path(), "--sarif", sarif.path()});
             int rc = 0;
             // A new failure is a new log in the folder: what is there after the campaign and was not before.
             const std::vector<std::string> before = scene_logs_under(replays_abs);
             const double t = timed([&] { rc = run_program(argv); });
+            if (reporting) {
+                report.junit_parts.push_back(junit.read());
+                report.sarif_parts.push_back(sarif.read());
+                // A campaign that stopped before its summary (bad usage, no binaries) wrote no report.
+                if (report.junit_parts.back().empty() && rc != 0)
+                    report.suites.push_back(stage_case("fuzz", app::TestCase::Outcome::error, fmt::format("ricochet fuzz exited with status {}", rc)));
+            }
             const std::vector<std::string> saved = added(before, scene_logs_under(replays_abs));
             failed = failed || rc != 0;
             summary.push_back(fmt::format("fuzz        {} ({:.1f} s)", rc == 0 ? "passed" : fmt::format("FAILED (exit {})", rc), t));

@@ -18,6 +18,7 @@
 #include "ricochet/scene.hpp"
 #include "ricochet/scene_log.hpp"
 #include "ricochet_app/json.hpp"
+#include "ricochet_app/report.hpp"
 #include "ricochet_app/stop_signal.hpp"
 #include "work_budget.hpp"
 
@@ -103,6 +104,7 @@ struct LogVerdict {
     std::optional<CheckFailure> failure;
     /// Where a parse error is, for an unreadable log: its line and column.
     std::optional<std::pair<int, int>> place;
+    double seconds = 0;  ///< how long it ran (reading it included)
 };
 /// Where a stop (SIGINT, SIGTERM) ended a replay inside a log.
 struct StoppedAt {
@@ -142,5 +144,18 @@ std::string replay_counts(const ReplaySummary& summary, bool with_reasons);
 /// A replay's members of a --json document (docs/cli-json.md): passed, failed, skipped, skip_reasons,
 /// bad_input, stopped, stopped_at, total, errors, logs.
 void write_replay_members(app::JsonWriter& json, const ReplaySummary& summary);
+
+/// Adds `--junit FILE` to command (and `--sarif FILE` where files.sarif is wanted, sarif true): cases says
+/// what a test case is in its report (docs/cli-reports.md).
+void add_report_options(CLI::App& command, app::ReportFiles& files, std::string_view cases, bool sarif);
+/// Refuses, before any work, a report file that cannot be written: "ricochet: error: cannot write FILE: WHY"
+/// on stderr and Exit{2}.
+void check_report_files_or_exit(const app::ReportFiles& files);
+/// Writes the reports asked for (app::write_reports, atomically); false after printing "ricochet: error:
+/// cannot write FILE: WHY" if one could not be (the command then exits 2).
+bool write_reports_or_say(const app::Report& report, const app::ReportFiles& files);
+/// A replay as a report's suite: a case per log (classname its folder, name its path) and per path that gave
+/// no log; a failed log's failure names its check, frame and ball, an unreadable one's error its FILE:LINE:COL.
+app::TestSuite replay_suite(const ReplaySummary& summary, double seconds);
 
 }  // namespace ricochet::cli

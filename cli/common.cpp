@@ -21,9 +21,19 @@
 #include "ricochet/replay.hpp"
 #include "ricochet/scene_log.hpp"
 #include "ricochet_app/json.hpp"
+#include "ricochet_app/report.hpp"
 #include "ricochet_app/stop_signal.hpp"
 
 namespace ricochet::cli {
+
+namespace {
+
+/// Seconds from t0 to now.
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
 
 SceneOrDiagnostic read_scene_or_stdin(const std::string& path, ExpectLines expect_lines) {
     if (path != k_stdin_path) return read_scene_log(path, expect_lines);
@@ -150,7 +160,7 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             logs.emplace_back(p);
         } else {
             fmt::print(stderr, "{}:1:1: error: no such file or folder\n", p);
-            s.logs.push_back({p, "missing", "no such file or folder", std::nullopt, std::nullopt, std::nullopt});
+            s.logs.push_back({p, "missing", "no such file or folder", std::nullopt, std::nullopt, std::nullopt, 0});
             s.bad_input = true;
             ++s.failed;
         }
@@ -163,6 +173,7 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
                    logs.size());
     };
     for (const auto& log : logs) {
+        const auto log_t0 = std::chrono::steady_clock::now();
         // A log boundary: a SIGINT or SIGTERM (the caller holds a StopOnSignal) stops before the next log.
         if (app::stop_requested()) {
             s.stopped = true;
@@ -182,7 +193,7 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             if (unquote != std::string::npos && d->message.starts_with("kernel '") &&
                 absent_kernel_message(std::string_view(d->message).substr(quote + 1, unquote - quote - 1)) == d->message) {
                 if (!hashes_only) write_stdout(fmt::format("skip {}: {}\n", log.string(), d->message));
-                s.logs.push_back({log.string(), "skipped", d->message, std::nullopt, std::nullopt, std::nullopt});
+                s.logs.push_back({log.string(), "skipped", d->message, std::nullopt, std::nullopt, std::nullopt, seconds_since(log_t0)});
                 ++s.skipped;
                 ++s.skip_reasons[d->message];
                 continue;
@@ -192,7 +203,7 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             if (d->message.starts_with("unknown kernel"))
                 fmt::print(stderr, "ricochet: note: a plug-in's kernel is known once the plug-in is loaded: --plugin PATH\n");
             if (!hashes_only) write_stdout(fmt::format("FAIL {}: unreadable log\n", log.string()));
-            s.logs.push_back({log.string(), "unreadable", d->str(), std::nullopt, std::nullopt, std::pair{d->line, d->col}});
+            s.logs.push_back({log.string(), "unreadable", d->str(), std::nullopt, std::nullopt, std::pair{d->line, d->col}, seconds_since(log_t0)});
             s.bad_input = true;
             ++s.failed;
             continue;
@@ -203,7 +214,7 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             progress.clear();
             fmt::print(stderr, "ricochet: error: {}\n", error);
             if (!hashes_only) write_stdout(fmt::format("FAIL {}: not run (over --max-work)\n", log.string()));
-            s.logs.push_back({log.string(), "over-budget", error, std::nullopt, std::nullopt, std::nullopt});
+            s.logs.push_back({log.string(), "over-budget", error, std::nullopt, std::nullopt, std::nullopt, seconds_since(log_t0)});
             s.bad_input = true;
             ++s.failed;
             continue;
@@ -216,7 +227,7 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
             const std::string error = fmt::format("{}: error: {}", log.string(), *why);
             fmt::print(stderr, "{}\n", error);
             if (!hashes_only) write_stdout(fmt::format("FAIL {}: not run (unsupported)\n", log.string()));
-            s.logs.push_back({log.string(), "unsupported", error, std::nullopt, std::nullopt, std::nullopt});
+            s.logs.push_back({log.string(), "unsupported", error, std::nullopt, std::nullopt, std::nullopt, seconds_since(log_t0)});
             s.bad_input = true;
             ++s.failed;
             continue;
@@ -240,7 +251,7 @@ ReplaySummary replay_paths(const std::vector<std::string>& paths, bool hashes_on
         else
             write_stdout(fmt::format("{} {}: {}\n", r.passed ? "ok  " : "FAIL", log.string(), r.message));
         (r.passed ? s.passed : s.failed) += 1;
-        s.logs.push_back({log.string(), r.passed ? "passed" : "failed", r.message, r.run.hash, r.run.failure, std::nullopt});
+        s.logs.push_back({log.string(), r.passed ? "passed" : "failed", r.message, r.run.hash, r.run.failure, std::nullopt, seconds_since(log_t0)});
         // Line by line, so a reader (and a failed write) sees each verdict as it comes.
         std::fflush(stdout);
         check_stdout();
@@ -299,6 +310,68 @@ void write_replay_members(app::JsonWriter& json, const ReplaySummary& s) {
         json.end_object();
     }
     json.end_array();
+}
+
+void add_report_options(CLI::App& command, app::ReportFiles& files, std::string_view cases, bool sarif) {
+    command.add_option("--junit", files.junit,
+                       fmt::format("also write a JUnit XML report to FILE ({}; docs/cli-reports.md), whole or not at all",
+                                   cases))
+        ->type_name("FILE");
+    if (sarif)
+        command.add_option("--sarif", files.sarif,
+                           "also write a SARIF 2.1.0 log to FILE: a result per failure, at its saved log's line "
+                           "(docs/cli-reports.md)")
+            ->type_name("FILE");
+}
+
+void check_report_files_or_exit(const app::ReportFiles& files) {
+    if (const std::string problem = app::report_files_problem(files); !problem.empty()) {
+        fmt::print(stderr, "ricochet: error: {}\n", problem);
+        throw Exit{2};
+    }
+}
+
+bool write_reports_or_say(const app::Report& report, const app::ReportFiles& files) {
+    std::string error;
+    if (app::write_reports(report, files, write_file_atomically, &error)) return true;
+    fmt::print(stderr, "ricochet: error: {}\n", error);
+    return false;
+}
+
+app::TestSuite replay_suite(const ReplaySummary& s, double seconds) {
+    using O = app::TestCase::Outcome;
+    app::TestSuite suite{"replay", seconds, {}};
+    for (const std::string& e : s.errors) suite.cases.push_back({"replay", e, 0, O::error, e, {{"missing", {}, {}, {}, {}, {}, e}}});
+    for (const LogVerdict& v : s.logs) {
+        const std::string folder = std::filesystem::path(v.path).parent_path().generic_string();
+        app::TestCase c{folder.empty() ? "." : folder, v.path, v.seconds, O::passed, {}, {}};
+        // A log that ran: its run's first broken check (none when only an expect line missed), at the log.
+        app::Finding f{v.status, {}, {}, v.status == "missing" ? std::string() : v.path, {}, {}, v.message};
+        if (v.failure) {
+            f.rule = check_name(v.failure->check);
+            f.frame = v.failure->frame;
+            f.ball = v.failure->ball;
+            // The line's text says the check, frame and ball again; the check's own message is the rest.
+            f.detail = v.failure->message;
+        } else if (v.status == "failed") {
+            f.rule = "expect";
+        }
+        if (v.place) f.line = v.place->first, f.column = v.place->second;
+        if (v.status == "failed") {
+            c.outcome = O::failed;
+            c.findings.push_back(std::move(f));
+        } else if (v.status == "skipped") {
+            c.outcome = O::skipped;
+            c.message = v.message;
+        } else if (v.status != "passed") {
+            // Unreadable, missing, over the work bound, unsupported: bad input, as replay's exit status 2 says.
+            c.outcome = O::error;
+            c.message = v.message;
+            c.findings.push_back(std::move(f));
+        }
+        suite.cases.push_back(std::move(c));
+    }
+    return suite;
 }
 
 }  // namespace ricochet::cli

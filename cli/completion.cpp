@@ -84,7 +84,7 @@ Reply value_of(const CLI::Option* opt) {
         r.words = std::move(set);
     } else if (name.ends_with("-dir") || name == "out") {
         r.mode = "dirs";
-    } else if (name == "output") {
+    } else if (name == "output" || name == "junit" || name == "sarif") {
         r.mode = "files";
     }
     return r;

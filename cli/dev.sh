@@ -60,7 +60,8 @@ coverage() {
 # Debian packages, never vendored or downloaded by the build.
 packages=(cmake ninja-build g++ pkg-config clang-14 libclang-rt-14-dev llvm-14 zip
           libfmt-dev librapidcheck-dev libgtest-dev libgmock-dev libgmp-dev libboost-dev libcli11-dev libbenchmark-dev
-          libxxhash-dev libssl-dev libbox2d-dev libchipmunk-dev libcgal-dev gnuplot-nox librsvg2-bin zsh)
+          libxxhash-dev libssl-dev libbox2d-dev libchipmunk-dev libcgal-dev gnuplot-nox librsvg2-bin zsh
+          nlohmann-json3-dev libpugixml-dev libxml2-utils python3-jsonschema)
 if [ "${RICOCHET_NO_APT:-0}" != 1 ]; then
   missing=()
   for p in "${packages[@]}"; do

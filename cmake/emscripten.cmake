@@ -1,10 +1,11 @@
 # ricochet on wasm32 (emscripten, cmake/toolchains/wasm32.cmake), included by the top CMakeLists.txt.
 #
 # Debian packages no library built for emscripten, but what the `ricochet` command needs is header-only or can be:
-# fmt (FMT_HEADER_ONLY), CLI11, xxhash (XXH_INLINE_ALL) and Boost.Multiprecision, the big numbers there (no
-# GMP). They are taken from the host's Debian packages through a folder of links to those headers alone, never
-# /usr/include itself, whose glibc headers would shadow emscripten's libc; the targets are named as
-# find_package and pkg-config name them elsewhere, so the rest of the build does not change.
+# fmt (FMT_HEADER_ONLY), CLI11, xxhash (XXH_INLINE_ALL), nlohmann-json and Boost.Multiprecision, the big numbers
+# there (no GMP); pugixml is not (`--junit` is left out). They are taken from the host's Debian packages through a
+# folder of links to those headers alone, never /usr/include itself, whose glibc headers would shadow emscripten's
+# libc; the targets are named as find_package and pkg-config name them elsewhere, so the rest of the build does not
+# change.
 #
 # Left out, because wasm32 under node has no child processes and no dlopen: libFuzzer and the fuzz campaign
 # (`ricochet fuzz` says it is not in this build; the fuzz targets build with their standalone driver, which runs
@@ -28,10 +29,10 @@ endif()
 set(RICOCHET_HOST_INCLUDE_DIR /usr/include CACHE PATH "Where the host's Debian packages put fmt, CLI11, xxhash and Boost headers")
 set(_headers ${PROJECT_BINARY_DIR}/host-headers)
 file(MAKE_DIRECTORY ${_headers})
-foreach(_entry fmt/format.h CLI/CLI.hpp xxhash.h boost/multiprecision/cpp_int.hpp)
+foreach(_entry fmt/format.h CLI/CLI.hpp xxhash.h boost/multiprecision/cpp_int.hpp nlohmann/json.hpp)
   if(NOT EXISTS ${RICOCHET_HOST_INCLUDE_DIR}/${_entry})
     message(FATAL_ERROR "ricochet on wasm32: ${RICOCHET_HOST_INCLUDE_DIR}/${_entry} not found (Debian packages "
-      "libfmt-dev, libcli11-dev, libxxhash-dev, libboost-dev)")
+      "libfmt-dev, libcli11-dev, libxxhash-dev, libboost-dev, nlohmann-json3-dev)")
   endif()
   string(REGEX REPLACE "/.*" "" _top ${_entry})
   file(CREATE_LINK ${RICOCHET_HOST_INCLUDE_DIR}/${_top} ${_headers}/${_top} SYMBOLIC)
@@ -47,6 +48,8 @@ target_include_directories(PkgConfig::XXHASH SYSTEM INTERFACE ${_headers})
 target_compile_definitions(PkgConfig::XXHASH INTERFACE XXH_INLINE_ALL)
 add_library(Boost::headers INTERFACE IMPORTED GLOBAL)
 target_include_directories(Boost::headers SYSTEM INTERFACE ${_headers})
+add_library(nlohmann_json::nlohmann_json INTERFACE IMPORTED GLOBAL)
+target_include_directories(nlohmann_json::nlohmann_json SYSTEM INTERFACE ${_headers})
 
 # C++ exceptions (CLI11's usage errors, the commands' exits) need emscripten's catching, at compile and link
 # time. The program runs under node with the host's files (NODERAWFS: paths as on the host, so logs are read and

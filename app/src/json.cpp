@@ -1,156 +1,113 @@
-// The `--json` writer (ricochet_app/json.hpp).
+// The `--json` writer (ricochet_app/json.hpp) over nlohmann-json.
 #include "ricochet_app/json.hpp"
 
 #include <cmath>
+#include <vector>
 
-#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 namespace ricochet::app {
 
 namespace {
 
-/// The length of the valid UTF-8 sequence at s[i] (RFC 3629: no overlong forms, no surrogates, at most
-/// U+10FFFF), 0 if the bytes there are not one.
-std::size_t utf8_length(std::string_view s, std::size_t i) {
-    const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[i + k]); };
-    const auto cont = [&](std::size_t k) { return i + k < s.size() && (b(k) & 0xC0) == 0x80; };
-    const unsigned char c = b(0);
-    if (c < 0x80) return 1;
-    if (c >= 0xC2 && c <= 0xDF) return cont(1) ? 2 : 0;
-    if (c >= 0xE0 && c <= 0xEF) {
-        if (!cont(1) || !cont(2)) return 0;
-        // E0 A0..BF (no overlong), ED 80..9F (no surrogates).
-        if ((c == 0xE0 && b(1) < 0xA0) || (c == 0xED && b(1) > 0x9F)) return 0;
-        return 3;
-    }
-    if (c >= 0xF0 && c <= 0xF4) {
-        if (!cont(1) || !cont(2) || !cont(3)) return 0;
-        // F0 90..BF (no overlong), F4 80..8F (at most U+10FFFF).
-        if ((c == 0xF0 && b(1) < 0x90) || (c == 0xF4 && b(1) > 0x8F)) return 0;
-        return 4;
-    }
-    return 0;
-}
+using Json = nlohmann::ordered_json;
+
+/// ASCII out (non-ASCII as \u escapes, DEL escaped too), ill-formed UTF-8 as U+FFFD, never an exception.
+std::string dump(const Json& j) { return j.dump(-1, ' ', true, Json::error_handler_t::replace); }
 
 }  // namespace
 
-std::string json_string(std::string_view s) {
-    std::string out = "\"";
-    for (std::size_t i = 0; i < s.size();) {
-        const unsigned char c = static_cast<unsigned char>(s[i]);
-        const std::size_t n = utf8_length(s, i);
-        if (n == 0) {
-            out += "\\ufffd";
-            ++i;
-            continue;
-        }
-        if (n > 1) {
-            out.append(s, i, n);
-            i += n;
-            continue;
-        }
-        switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\r': out += "\\r"; break;
-            case '\t': out += "\\t"; break;
-            case '\b': out += "\\b"; break;
-            case '\f': out += "\\f"; break;
-            default:
-                // U+0000..U+001F must be escaped; DEL need not be but is unreadable in a terminal.
-                if (c < 0x20 || c == 0x7F)
-                    out += fmt::format("\\u{:04x}", c);
-                else
-                    out += static_cast<char>(c);
-        }
-        ++i;
-    }
-    out += '"';
-    return out;
+std::string valid_utf8(std::string_view s) {
+    // Through a JSON string and back: the dump replaces each ill-formed sequence with U+FFFD.
+    return Json::parse(Json(std::string(s)).dump(-1, ' ', false, Json::error_handler_t::replace)).get<std::string>();
 }
 
-void JsonWriter::separate() {
-    if (after_key_) {
-        after_key_ = false;
-        return;
+/// The document so far, and the containers open in it (each inside the one before; the outermost first).
+struct JsonWriter::Tree {
+    Json root;
+    std::vector<Json*> open;
+    std::string key;
+    bool closed = false;
+
+    /// Puts v where the next value goes (the root, the open array's end, or the open object's key) and returns it.
+    Json& put(Json v) {
+        if (open.empty()) {
+            root = std::move(v);
+            closed = !root.is_structured();
+            return root;
+        }
+        Json& top = *open.back();
+        if (top.is_array()) {
+            top.push_back(std::move(v));
+            return top.back();
+        }
+        return top[key] = std::move(v);
     }
-    if (!depth_.empty()) {
-        if (depth_.back()) out_ += ',';
-        depth_.back() = true;
+    void close() {
+        open.pop_back();
+        closed = open.empty();
     }
-}
+};
+
+JsonWriter::JsonWriter() : tree_(std::make_unique<Tree>()) {}
+JsonWriter::~JsonWriter() = default;
 
 JsonWriter& JsonWriter::begin_object() {
-    separate();
-    out_ += '{';
-    depth_.push_back(false);
+    tree_->open.push_back(&tree_->put(Json::object()));
     return *this;
 }
 
 JsonWriter& JsonWriter::end_object() {
-    out_ += '}';
-    depth_.pop_back();
+    tree_->close();
     return *this;
 }
 
 JsonWriter& JsonWriter::begin_array() {
-    separate();
-    out_ += '[';
-    depth_.push_back(false);
+    tree_->open.push_back(&tree_->put(Json::array()));
     return *this;
 }
 
 JsonWriter& JsonWriter::end_array() {
-    out_ += ']';
-    depth_.pop_back();
+    tree_->close();
     return *this;
 }
 
 JsonWriter& JsonWriter::key(std::string_view name) {
-    separate();
-    out_ += json_string(name);
-    out_ += ':';
-    after_key_ = true;
+    tree_->key = std::string(name);
     return *this;
 }
 
 JsonWriter& JsonWriter::value(std::string_view s) {
-    separate();
-    out_ += json_string(s);
+    tree_->put(std::string(s));
     return *this;
 }
 
 JsonWriter& JsonWriter::value(bool b) {
-    separate();
-    out_ += b ? "true" : "false";
+    tree_->put(b);
     return *this;
 }
 
 JsonWriter& JsonWriter::value(std::int64_t n) {
-    separate();
-    out_ += fmt::format("{}", n);
+    tree_->put(n);
     return *this;
 }
 
 JsonWriter& JsonWriter::value(std::uint64_t n) {
-    separate();
-    out_ += fmt::format("{}", n);
+    tree_->put(n);
     return *this;
 }
 
 JsonWriter& JsonWriter::value(double x) {
     if (!std::isfinite(x)) return null();
-    separate();
-    // Shortest round-trip form; fmt writes 1e+300 and 0.5, both valid JSON numbers.
-    out_ += fmt::format("{}", x);
+    tree_->put(x);
     return *this;
 }
 
 JsonWriter& JsonWriter::null() {
-    separate();
-    out_ += "null";
+    tree_->put(nullptr);
     return *this;
 }
+
+std::string JsonWriter::str() const { return tree_->closed ? dump(tree_->root) + "\n" : std::string(); }
 
 }  // namespace ricochet::app

@@ -81,6 +81,46 @@ d = json.load(open(sys.argv[1]))
 a = sys.argv[3:]
 sys.exit(0 if eval(sys.argv[2]) else 1)' "$dir/$f" "$e" "$@" 2>"$dir/py" || fail "std$f is not JSON where $e: $(cat "$dir/py")"
 }
+# junit_valid FILE: FILE validates against the JUnit schema docs/schemas/ holds (xmllint); sarif_valid FILE against
+# the SARIF 2.1.0 schema (python3-jsonschema). Each is first shown a broken copy, which it must reject: a check
+# that cannot fail checks nothing.
+junit_valid() {
+  command -v xmllint >/dev/null || fail "no xmllint (Debian package libxml2-utils)"
+  sed 's/<testsuite name="\([^"]*\)" tests="[0-9]*"/<testsuite name="\1"/' "$1" >"$dir/broken.xml"
+  cmp -s "$1" "$dir/broken.xml" && fail "$1 has no <testsuite> to break"
+  ! xmllint --noout --schema "$src/docs/schemas/junit-10.xsd" "$dir/broken.xml" 2>/dev/null || fail "the JUnit schema takes a <testsuite> without tests"
+  xmllint --noout --schema "$src/docs/schemas/junit-10.xsd" "$1" 2>"$dir/py" || fail "$1 is not valid JUnit: $(cat "$dir/py")"
+}
+sarif_valid() {
+  python3 -c 'import json, sys, jsonschema
+schema = json.load(open(sys.argv[1]))
+doc = json.load(open(sys.argv[2]))
+broken = json.loads(json.dumps(doc)); broken["runs"][0]["results"].append({"ruleId": "x", "level": "fatal", "message": {"text": "x"}})
+try:
+    jsonschema.validate(broken, schema)
+    sys.exit("the SARIF schema takes a result of level fatal")
+except jsonschema.ValidationError:
+    pass
+jsonschema.validate(doc, schema)' "$src/docs/schemas/sarif-schema-2.1.0.json" "$1" 2>"$dir/py" || fail "$1 is not valid SARIF: $(tail -n 3 "$dir/py")"
+}
+# junit_properties FILE: GoogleTest's XML (--gtest_output=xml:FILE) is well-formed, holds a case per test with name,
+# classname and time, and is valid JUnit but for the attributes GoogleTest adds that junit-10.xsd does not know
+# (docs/cli-reports.md): a copy without them validates against the schema as it is.
+junit_properties() {
+  xmllint --noout "$1" 2>"$dir/py" || fail "$1 is not XML: $(cat "$dir/py")"
+  xml_is "$1" 'd.tag == "testsuites" and len(list(d.iter("testcase"))) >= 1 and all(c.get("name") and c.get("classname") and c.get("time") for c in d.iter("testcase"))'
+  ! xmllint --noout --schema "$src/docs/schemas/junit-10.xsd" "$1" 2>/dev/null || return 0
+  sed -E 's/ (disabled|timestamp|status|result|file|line|value_param|type_param)="[^"]*"//g' "$1" >"$dir/gtest-plain.xml"
+  junit_valid "$dir/gtest-plain.xml"
+}
+# xml_is FILE PYTHON-EXPRESSION [ARG...]: as json_is, over FILE's XML root element as d (xml.etree).
+xml_is() {
+  f=$1 e=$2; shift 2
+  python3 -c 'import sys, xml.etree.ElementTree as ET
+d = ET.parse(sys.argv[1]).getroot()
+a = sys.argv[3:]
+sys.exit(0 if eval(sys.argv[2]) else 1)' "$f" "$e" "$@" 2>"$dir/py" || fail "$f is not XML where $e: $(cat "$dir/py")"
+}
 # stop_after_first_line SIGNAL ARGS...: starts ricochet ARGS in the background (stdout in $dir/out, stderr in
 # $dir/err), waits until it has printed its first line (synchronised on its output, not on a delay), sends
 # SIGNAL, and leaves its exit status in rc. The commands given run for hours unless stopped, so the verdict
@@ -204,8 +244,11 @@ case "$case" in
                      has out "check passed" ;;
   check-fuzz-seed)   # The campaign check ends with: its count and seed, in a cache of its own.
                      mkproj; need_fuzzer scene
-                     cd "$proj"; XDG_CACHE_HOME=$dir/cache run 0 check --no-properties --fuzz-runs 20 --fuzz-seed 3
+                     cd "$proj"; XDG_CACHE_HOME=$dir/cache run 0 check --no-properties --fuzz-runs 20 --fuzz-seed 3 --junit "$dir/c.xml" --sarif "$dir/c.sarif"
                      has out "== fuzz: 20 inputs per target, seed 3"
+                     # The campaign's own report, taken into check's: a case per target.
+                     junit_valid "$dir/c.xml"; sarif_valid "$dir/c.sarif"
+                     xml_is "$dir/c.xml" 'd[-1].get("name") == "fuzz" and "scene" in [c.get("name") for c in d[-1]] and {c.get("classname") for c in d[-1]} == {"fuzz.robust"}' 
                      grep -q '^fuzz        passed (' "$dir/out" || fail "no fuzz passed line"
                      [ -d "$dir/cache/ricochet/fuzz/scene" ] || fail "the campaign did not use \$XDG_CACHE_HOME" ;;
   check-fuzz-time)   run 2 check --fuzz-time soon
@@ -463,11 +506,16 @@ case "$case" in
                      [ -x "$props" ] || { echo "skip $case: no property suite in this build"; exit 77; }
                      mkproj; cd "$proj"
                      GTEST_FILTER='*NoTunnelSingleWall*' RICOCHET_KERNEL=lecture-float RC_PARAMS="seed=1 max_success=4000" \
-                       run 1 check --json --fuzz-runs 0
+                       run 1 check --json --fuzz-runs 0 --junit "$dir/c.xml" --sarif "$dir/c.sarif"
                      json_is out 'd["stages"]["properties"]["status"] == "failed" and d["stages"]["properties"]["exit"] == 1 and len(d["stages"]["properties"]["failed_properties"]) == 1 and d["stages"]["properties"]["failed_properties"][0].startswith("Kernels/") and d["stages"]["properties"]["failed_properties"][0].endswith(".NoTunnelSingleWall/lecture_float")'
                      set -- "$proj"/replays/NoTunnelSingleWall-*.scene
                      [ "$#" = 1 ] && [ -f "$1" ] || fail "expected one saved log in $proj/replays, found: $*"
-                     json_is out 'd["stages"]["properties"]["saved_logs"] == [a[0]]' "$(cd "$proj/replays" && pwd -P)/$(basename "$1")" ;;
+                     json_is out 'd["stages"]["properties"]["saved_logs"] == [a[0]]' "$(cd "$proj/replays" && pwd -P)/$(basename "$1")"
+                     # The reports: the failed property's case names its saved log, and SARIF points at its found line.
+                     junit_valid "$dir/c.xml"; sarif_valid "$dir/c.sarif"
+                     xml_is "$dir/c.xml" 'any(c.get("name").startswith("NoTunnelSingleWall/") and c.find("failure") is not None and a[0] in c.find("failure").get("message") for c in d.iter("testcase"))' "$(basename "$1")"
+                     json_is c.sarif '[(r["locations"][0]["physicalLocation"]["artifactLocation"]["uri"], r["locations"][0]["physicalLocation"]["region"]["startLine"]) for r in d["runs"][0]["results"]] == [("replays/" + a[0], int(a[1]))]' \
+                       "$(basename "$1")" "$(grep -n '^found ' "$1" | cut -d: -f1)" ;;
   json-fuzz)         mkproj; need_fuzzer scene
                      cd "$proj"; run 0 fuzz --json --target scene --runs 20 --seed 1 --cache-dir "$dir/cache"
                      json_is out 'd["schema"] == "ricochet-fuzz/1" and d["exit"] == 0 and d["kernel"] == "robust" and d["runs_per_worker"] == 20 and d["time_s"] is None and d["seed"] == 1'
@@ -498,6 +546,58 @@ case "$case" in
                        fail "the merge kept the duplicate names"
                      sha=$(printf 'ricochet 1\nframes 1\n' | sha1sum | cut -d' ' -f1)
                      [ -f "$dir/cache-merge/parser/robust/corpus/$sha" ] || fail "the merge did not keep the input as $sha" ;;
+  # --- --junit and --sarif: reports CI reads (docs/cli-reports.md), valid against their schemas (docs/schemas/).
+  junit-replay)      # A lecture log without its expect failure line fails at its found check; an unreadable log errors.
+                     grep -v '^expect failure' "$src/replays/lecture/double-pinball-tunnel.scene" >"$dir/t.scene"
+                     printf 'ricochet 1\nbogus 1\n' >"$dir/b.scene"
+                     run 2 replay --junit "$dir/r.xml" "$log" "$dir/t.scene" "$dir/b.scene"
+                     junit_valid "$dir/r.xml"
+                     xml_is "$dir/r.xml" 'd.tag == "testsuites" and [(c.get("name"), c.get("classname")) for c in d.iter("testcase")] == [(p, a[3]) for p in a[:3]]' "$log" "$dir/t.scene" "$dir/b.scene" "$dir"
+                     xml_is "$dir/r.xml" 'd.find("testsuite").get("failures") == "1" and d.find("testsuite").get("errors") == "1"'
+                     xml_is "$dir/r.xml" 'd.find(".//failure").get("type") == "no-tunnel" and d.find(".//failure").get("message").startswith("no-tunnel broke at frame 4 ball 0: ") and d.find(".//failure").get("message").endswith(" (log " + a[0] + ")")' "$dir/t.scene"
+                     xml_is "$dir/r.xml" 'd.find(".//error").get("message").startswith(a[0] + ":2:1: error: ")' "$dir/b.scene"
+                     # --json and --junit together: the document on stdout, the report in its file.
+                     run 1 replay --json --junit "$dir/r2.xml" "$log" "$dir/t.scene"
+                     json_is out 'd["exit"] == 1 and d["failed"] == 1'; junit_valid "$dir/r2.xml" ;;
+  junit-sarif-check) # check's reports: a case per log, per pinball kernel, per stage skipped; a SARIF result at the log's line.
+                     mkproj; grep -v '^expect failure' "$src/replays/lecture/double-pinball-tunnel.scene" >"$proj/replays/t.scene"
+                     cp "$src/replays/pinball.scene" "$proj/replays/"; cd "$proj"
+                     run 1 check --no-properties --fuzz-runs 0 --junit "$dir/c.xml" --sarif "$dir/c.sarif"
+                     junit_valid "$dir/c.xml"; sarif_valid "$dir/c.sarif"
+                     xml_is "$dir/c.xml" '[s.get("name") for s in d] == ["replay", "pinball", "properties", "fuzz"] and [c.get("name") for c in d[1]][:4] == ["lecture-float", "lecture-double", "robust", "exact"]'
+                     xml_is "$dir/c.xml" 'd[2].find("testcase/skipped") is not None and d[0].find("testcase/failure") is not None'
+                     json_is c.sarif '[(r["ruleId"], r["locations"][0]["physicalLocation"]["artifactLocation"], r["locations"][0]["physicalLocation"]["region"]["startLine"]) for r in d["runs"][0]["results"]] == [("no-tunnel", {"uri": "replays/t.scene", "uriBaseId": "PROJECTROOT"}, int(a[0]))]' \
+                       "$(grep -n '^check no-tunnel$' "$proj/replays/t.scene" | cut -d: -f1)"
+                     json_is c.sarif 'd["runs"][0]["originalUriBaseIds"]["PROJECTROOT"]["uri"] == "file://" + a[0] + "/" and [r["id"] for r in d["runs"][0]["tool"]["driver"]["rules"]] == ["no-tunnel"]' "$(pwd -P)" ;;
+  junit-sarif-fuzz)  # A campaign that saves a failure: its target's case fails naming check, frame, ball and log; SARIF points at the log's found line.
+                     mkproj; need_fuzzer disc; cd "$proj"
+                     run 1 fuzz --json --target disc --kernel lecture-float --runs 1 --seed 1 --jobs 1 --cache-dir "$dir/cache" --junit "$dir/f.xml" --sarif "$dir/f.sarif"
+                     junit_valid "$dir/f.xml"; sarif_valid "$dir/f.sarif"
+                     json_is out 'd["exit"] == 1 and d["new_failures"] >= 1'
+                     saved=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["failures"][0]["log"])' "$dir/out")
+                     [ -f "$saved" ] || fail "no saved log $saved"
+                     found=$(sed -n 's/^found \([^ ]*\) \([0-9]*\) \([0-9]*\)$/\1 broke at frame \2 ball \3/p' "$saved")
+                     xml_is "$dir/f.xml" '[(c.get("classname"), c.get("name")) for c in d.iter("testcase")] == [("fuzz.lecture-float", "disc")] and d.find(".//failure").get("message").startswith(a[0] + ": ") and ("(log " + a[1] + ")") in d.find(".//failure").get("message")' "$found" "$saved"
+                     json_is f.sarif 'd["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["artifactLocation"]["uri"] == a[0] and d["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["region"]["startLine"] == int(a[1])' \
+                       "$saved" "$(grep -n '^found ' "$saved" | cut -d: -f1)" ;;
+  report-bad-path)   # A report that cannot be written is refused before any work, naming the file; nothing is left.
+                     mkproj; cd "$proj"
+                     run 2 replay --junit "$dir/no/r.xml" "$log"; first_line err "ricochet: error: cannot write $dir/no/r.xml: no such folder: $dir/no"
+                     [ ! -s "$dir/out" ] || fail "replay ran"
+                     run 2 check --no-properties --fuzz-runs 0 --sarif "$dir"; first_line err "ricochet: error: cannot write $dir: it is a folder"
+                     run 2 fuzz --runs 1 --cache-dir "$dir/cache" --junit "$dir/no/f.xml"; first_line err "ricochet: error: cannot write $dir/no/f.xml: no such folder: $dir/no"
+                     [ ! -e "$dir/cache" ] || fail "fuzz made its cache"
+                     run 2 replay --junit; first_line err "ricochet: error: --junit: 1 required FILE missing"
+                     # A write that fails at the end (a full device) says so, and the exit status is 2.
+                     if [ -w /dev/full ]; then run 2 replay --junit /dev/full "$log"
+                       grep -q '^ricochet: error: cannot write /dev/full: .*No space left on device' "$dir/err" || fail "no write error"; fi ;;
+  junit-properties)  # The property suite's own JUnit (GoogleTest's --gtest_output=xml), a tiny filtered run.
+                     props=$(dirname "$ricochet")/../properties/ricochet_properties
+                     [ -x "$props" ] || { echo "skip $case: no property suite in this build"; exit 77; }
+                     mkproj; cd "$proj"
+                     RC_PARAMS="seed=1 max_success=20" RICOCHET_REPLAY_DIR="$proj/replays" "$props" --gtest_filter='*NoTunnelSingleWall*robust*' \
+                       --gtest_output="xml:$dir/p.xml" >"$dir/out" 2>"$dir/err" || fail "the filtered property run failed"
+                     junit_properties "$dir/p.xml" ;;
   # --- SIGINT and SIGTERM: stop at the next frame or log boundary, say what was done, exit 128 + signal.
   stop-run)          stop_after_first_line INT run "$long" --max-work 0
                      [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
@@ -524,11 +624,15 @@ case "$case" in
   stop-replay-json)  mkdir "$dir/many"; sed 's/^frames 10000000$/frames 2000/' "$long" >"$dir/many/a.scene"
                      i=0; while [ $i -lt 300 ]; do ln "$dir/many/a.scene" "$dir/many/l$i.scene"; i=$((i + 1)); done
                      # Under --json the verdict lines go to stderr: wait on a copy of replay's stdout there.
-                     "$ricochet" replay --json "$dir/many" >"$dir/json" 2>"$dir/out" & pid=$!
+                     "$ricochet" replay --json --junit "$dir/many.xml" "$dir/many" >"$dir/json" 2>"$dir/out" & pid=$!
                      while ! grep -q '^ok ' "$dir/out"; do kill -0 "$pid" 2>/dev/null || fail "replay ended early"; sleep 0.02; done
                      kill -INT "$pid"; wait "$pid"; rc=$?; mv "$dir/json" "$dir/out"
                      [ "$rc" = 130 ] || fail "exit $rc after SIGINT, expected 130"
-                     json_is out 'd["exit"] == 130 and d["stopped"] is True and d["total"] == 301 and 1 <= d["passed"] == len(d["logs"]) < 301' ;;
+                     json_is out 'd["exit"] == 130 and d["stopped"] is True and d["total"] == 301 and 1 <= d["passed"] == len(d["logs"]) < 301'
+                     # The report of a stopped replay is whole: the logs it ran, valid JUnit, and no temporary file left.
+                     junit_valid "$dir/many.xml"
+                     xml_is "$dir/many.xml" 'd.get("tests") == a[0]' "$(python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["logs"]))' "$dir/out")"
+                     [ -z "$(ls -A "$dir" | grep '\.tmp\.')" ] || fail "a temporary file is left" ;;
   stop-check)        mkproj; sed 's/^frames 10000000$/frames 2000/' "$long" >"$proj/replays/a.scene"
                      i=0; while [ $i -lt 300 ]; do ln "$proj/replays/a.scene" "$proj/replays/l$i.scene"; i=$((i + 1)); done
                      cd "$proj"; stop_after_first_line INT check --no-properties --fuzz-runs 0

@@ -51,6 +51,9 @@ case "$case" in
                    offers 'files' reduce x.scene -o ""
                    offers 'dirs' fuzz --cache-dir ""
                    offers 'files' replay --plugin ""
+                   offers 'files' replay --junit ""
+                   offers 'files' check --sarif ""
+                   offers 'files' fuzz --junit ""
                    offers 'dirs' check --replay-dir = ""
                    offers 'words' run --frames ""
                    offers 'words' run x.scene --frames 3 "" ;;

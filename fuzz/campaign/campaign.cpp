@@ -16,7 +16,9 @@
 #include "rates.hpp"
 #include "ricochet_app/json.hpp"
 #include "ricochet_app/json_stdout.hpp"
+#include "ricochet_app/report.hpp"
 #include "ricochet_app/stop_signal.hpp"
+#include "ricochet/scene_log.hpp"
 #include "workers.hpp"
 
 namespace ricochet::fuzz {
@@ -118,11 +120,44 @@ std::string json_summary(const Plan& plan, const CampaignOptions& opt, double wa
     return json.end_object().str();
 }
 
+/// The campaign as a report's suite: a case per target, failed by its new failures (those the exit status
+/// counts: saved, no log, unsaved, flaky, pending), a finding each.
+app::TestSuite report_suite(const Plan& plan, double fuzzed) {
+    app::TestSuite suite{"fuzz", fuzzed, {}};
+    for (const TargetRun& r : plan.runs) {
+        app::TestCase c{fmt::format("fuzz.{}", plan.kernel_name), r.target, fuzzed, app::TestCase::Outcome::passed, {}, {}};
+        for (const FailureRecord& f : r.failures) {
+            // A known failure fails the case too where it fails the campaign (a regression still there).
+            const bool regression = f.status == FailureStatus::known && plan.known_fails;
+            if (!f.counts_as_new() && !regression) continue;
+            c.outcome = app::TestCase::Outcome::failed;
+            const auto at = [](const std::optional<std::uint64_t>& n) {
+                return n ? std::optional<std::int64_t>(static_cast<std::int64_t>(*n)) : std::nullopt;
+            };
+            // The target's report line says the check and frame again; only a failure with no check needs it.
+            const std::string what = regression         ? "a saved failure, failing again"
+                                     : !f.check.empty() ? "a new failure"
+                                     : f.message.empty() ? "not converted yet"
+                                                         : f.message;
+            c.findings.push_back({f.check.empty() ? std::string("fuzz") : f.check, at(f.frame), at(f.ball), f.log.string(), {}, {},
+                                  fmt::format("{} ({}); input {}", what, status_name(f.status), f.artifact.string())});
+        }
+        suite.cases.push_back(std::move(c));
+    }
+    return suite;
+}
+
 }  // namespace
 
 int run_campaign(const CampaignOptions& opt) {
     // The command's clock starts here: a campaign by time ends, tail and all, by --time seconds from now.
     const Budget budget(Clock::now(), opt.runs > 0 ? 0.0 : opt.time);
+    // A report that cannot be written is refused before any fuzzing.
+    const app::ReportFiles reports{opt.junit, opt.sarif};
+    if (const std::string problem = app::report_files_problem(reports); !problem.empty()) {
+        fmt::print(stderr, "ricochet: error: {}\n", problem);
+        return 2;
+    }
     // Under --json everything the campaign prints goes to stderr; stdout gets the document at the end.
     app::JsonStdout json_out(opt.json);
     // SIGINT or SIGTERM: the workers are stopped, the failures converted so far are saved, the others wait in
@@ -201,15 +236,25 @@ int run_campaign(const CampaignOptions& opt) {
     // baseline's or a peer's is its documented weakness seen again.
     const bool regressions = any_known && plan->known_fails;
     const bool failing = any_new || regressions;
-    const int code = stopped ? app::stop_exit_code() : failing ? 1 : 0;
+    int code = stopped ? app::stop_exit_code() : failing ? 1 : 0;
     // The wall time of the whole command, from its start to this line.
     const double wall = budget.elapsed();
+    // The reports before the summary's last line and the document, so that both say the exit: 2 if one could
+    // not be written.
+    std::string report_error;
+    if (!app::write_reports({"ricochet fuzz", wall, {report_suite(*plan, fuzzed)}, {}, {}}, reports, write_file_atomically,
+                            &report_error)) {
+        fmt::print(stderr, "ricochet: error: {}\n", report_error);
+        if (!stopped) code = 2;
+    }
     std::string verdict = any_new && left.pending > 0 ? "NEW FAILURES (some not converted yet)"
                           : any_new                   ? "NEW FAILURES"
                                                       : "no new failures";
     if (regressions) verdict += "; saved failures failing again (regressions until fixed)";
     fmt::print("kernel {}, {:.0f} s ({:.0f} s fuzzing), exec/s per worker; {}{}\n", plan->kernel_name, wall, fuzzed, verdict,
-               stopped ? fmt::format("; stopped by {} (exit {})", app::stop_signal_name(), code) : failing ? " (exit 1)" : "");
+               stopped ? fmt::format("; stopped by {} (exit {})", app::stop_signal_name(), code)
+               : code != 0 ? fmt::format(" (exit {})", code)
+                           : "");
     std::fflush(stdout);
     if (json_out.on()) {
         json_out.restore();

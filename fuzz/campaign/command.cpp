@@ -60,6 +60,14 @@ void register_fuzz(CLI::App& app) {
     sub->add_flag("--json", opt->json,
                   "print one JSON document (docs/cli-json.md, schema ricochet-fuzz/1) on stdout instead of the summary; "
                   "progress goes to stderr");
+    sub->add_option("--junit", opt->junit,
+                    "also write a JUnit XML report to FILE (a test case per target, a failure per new failure; "
+                    "docs/cli-reports.md), whole or not at all")
+        ->type_name("FILE");
+    sub->add_option("--sarif", opt->sarif,
+                    "also write a SARIF 2.1.0 log to FILE: a result per failure, at its saved log's line "
+                    "(docs/cli-reports.md)")
+        ->type_name("FILE");
     // After `--`, everything is positional: libFuzzer's own -flag=value arguments.
     sub->add_option("libfuzzer_flags", opt->libfuzzer_flags,
                     "after --: flags passed to every libFuzzer worker after the campaign's own (e.g. -- -max_len=256 -use_cmp=0)");

@@ -1,25 +1,30 @@
-// The `--json` summaries (docs/cli-json.md) written as text: no JSON library is a dependency of the tree
-// (Debian 12 here has no -dev package of one installed), and the documents are small and write-only, so a
-// writer of a few lines with a correct string escaper does it.
+// The `--json` summaries (docs/cli-json.md), built in order through nlohmann-json (an ordered_json tree, so
+// members keep the order they were written in) and dumped as ASCII: a byte that is not part of valid UTF-8
+// becomes U+FFFD (a path may hold any bytes; a JSON text may not), every other character that is not ASCII a
+// \u escape.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
-#include <vector>
 
 namespace ricochet::app {
 
 /// The version of every document's schema: the "schema" field, "ricochet-NAME/1" (docs/cli-json.md).
 inline constexpr int k_json_schema_version = 1;
 
-/// s as a JSON string, quotes included (RFC 8259): `"` `\` and control characters escaped, a byte that is
-/// not part of valid UTF-8 replaced by U+FFFD (a path may hold any bytes; a JSON text may not).
-std::string json_string(std::string_view s);
+/// s with every ill-formed UTF-8 sequence replaced by U+FFFD: text any UTF-8 document (JSON, XML) may hold.
+std::string valid_utf8(std::string_view s);
 
-/// One JSON value written in order: objects, arrays, keys and scalars, commas put in between.
+/// One JSON value written in order: objects, arrays, keys and scalars.
 class JsonWriter {
 public:
+    JsonWriter();
+    ~JsonWriter();
+    JsonWriter(const JsonWriter&) = delete;
+    JsonWriter& operator=(const JsonWriter&) = delete;
+
     /// `{`, `}`, `[`, `]`.
     JsonWriter& begin_object();
     JsonWriter& end_object();
@@ -43,14 +48,12 @@ public:
         key(name);
         return value(v);
     }
-    /// The text so far, ended by a newline once the outermost value is closed.
-    std::string str() const { return depth_.empty() ? out_ + "\n" : out_; }
+    /// The document, ended by a newline, once the outermost value is closed; empty before.
+    std::string str() const;
 
 private:
-    void separate();
-    std::string out_;
-    std::vector<bool> depth_;  // per open container: whether it holds a value already
-    bool after_key_ = false;
+    struct Tree;
+    std::unique_ptr<Tree> tree_;
 };
 
 }  // namespace ricochet::app

@@ -27,12 +27,14 @@ struct CampaignOptions {
     std::string replay_dir;            ///< where failure logs are saved
     bool no_merge = false;             ///< skip the corpus merge at the end
     bool json = false;                 ///< the summary as one JSON document on stdout (docs/cli-json.md); the rest on stderr
+    std::string junit;                 ///< where to write a JUnit XML report (docs/cli-reports.md); empty: none
+    std::string sarif;                 ///< where to write a SARIF 2.1.0 log (docs/cli-reports.md); empty: none
     std::vector<std::string> libfuzzer_flags;  ///< passed to every worker after the campaign's own flags
 };
 
 /// Runs a campaign, printing progress and a summary on stdout. Returns 0 if nothing new failed, 1 if
-/// something did (or a failure was left unconverted), 2 on bad usage or missing binaries, 128 + the signal if
-/// stopped.
+/// something did (or a failure was left unconverted), 2 on bad usage, missing binaries or a report that could
+/// not be written, 128 + the signal if stopped.
 int run_campaign(const CampaignOptions& options);
 
 /// What `ricochet fuzz convert` converts and where; an empty string takes its default.
