@@ -164,6 +164,28 @@ a, b = (json.load(open(p)) for p in sys.argv[1:3])
 sys.exit(0 if a["new_failures"] >= 1 and b["new_failures"] == 0 and b["known_failures"] >= 1 and b["exit"] == 1 else 1)' \
                     "$dir/round1.json" "$dir/round2.json" || fail "the second campaign did not fail on the known case"
                   has_part err "saved failures failing again (regressions until fixed) (exit 1)" ;;
+  check-kernel)   # check --kernel plugin:PATH: the pinball example, the properties and the campaign under the plug-in
+                  # alone, the corpus's logs under their own kernels. The blind plug-in's failure is saved into the
+                  # corpus, and the next check fails on it there (a regression) until it is fixed.
+                  need_props
+                  blind=$plugins/test_plugin_no_reason.so
+                  mkdir -p "$dir/proj"
+                  cp "$(dirname "$0")/../../replays/pinball.scene" "$dir/proj/"
+                  GTEST_FILTER='*NoTunnelSingleWall*' RC_PARAMS="seed=1 max_success=200" \
+                    run 1 check --kernel "plugin:$blind" --replay-dir "$dir/proj" --fuzz-runs 0 --json
+                  python3 -c 'import json, sys
+d = json.load(open(sys.argv[1])); st = d["stages"]
+ok = (d["kernel"] == "test-no-reason" and st["replay"]["status"] == "passed"
+      and list(st["pinball"]["kernels"]) == ["test-no-reason"]
+      and st["properties"]["status"] == "failed" and len(st["properties"]["saved_logs"]) == 1)
+sys.exit(0 if ok else 1)' "$dir/out" || fail "the document does not show the stages under the plug-in"
+                  set -- "$dir"/proj/NoTunnelSingleWall-*.scene
+                  [ -f "$1" ] && grep -qx 'kernel test-no-reason' "$1" || fail "no saved log naming the plug-in in the corpus"
+                  run 1 check --kernel "plugin:$blind" --replay-dir "$dir/proj" --fuzz-runs 0 --no-properties --json
+                  python3 -c 'import json, sys
+d = json.load(open(sys.argv[1])); r = d["stages"]["replay"]
+sys.exit(0 if r["status"] == "failed" and r["failed"] == 1 and r["passed"] == 1 else 1)' "$dir/out" ||
+                    fail "the second check does not fail on the saved failure" ;;
   reduce)         # reduce takes a plug-in as the other commands do: --kernel plugin:PATH, or --plugin for a log naming
                   # its kernel. The blind plug-in (test-no-reason) lets the ball through the wall at x = 7.
                   blind=$plugins/test_plugin_no_reason.so
