@@ -244,6 +244,16 @@ void register_check(CLI::App& app) {
             throw Exit{2};
         }
         const std::filesystem::path replays = project->replay_dir;
+        // --replay-dir names the folder failures go to: made if it is not there yet (its parent must be).
+        std::error_code made_ec;
+        if (!opt->replay_dir.empty() && !std::filesystem::exists(replays, made_ec)) {
+            if (!std::filesystem::create_directory(replays, made_ec)) {
+                fmt::print(stderr, "ricochet check: error: cannot make the replay folder {}: {}\n", replays.string(),
+                           made_ec ? made_ec.message() : "it is not a folder");
+                throw Exit{2};
+            }
+            fmt::print(stderr, "ricochet check: note: made the replay folder {}\n", replays.string());
+        }
         // The children (properties, fuzz) get it absolute: they may resolve it from elsewhere.
         std::error_code abs_ec;
         const std::filesystem::path replays_abs = std::filesystem::absolute(replays, abs_ec);
@@ -298,18 +308,27 @@ void register_check(CLI::App& app) {
             return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         };
 
-        // 1. The corpus.
+        // 1. The corpus. A folder that holds no log yet (a new project's, made above) is where the properties and
+        // the campaign will save their failures: nothing to replay, said so, not a failure.
         fmt::print("== replay {}\n", replays.string());
-        ReplaySummary r;
-        const double t_replay = timed([&] { r = replay_paths({replays.string()}, false, opt->max_work); });
-        failed = failed || r.failed > 0 || r.bad_input;
-        summary.push_back(fmt::format("replay      {} ({:.2f} s)", replay_counts(r, false), t_replay));
-        // A log for a kernel this build lacks is skipped, never failed: each reason said once, with its count.
-        for (const auto& [reason, n] : r.skip_reasons) summary.push_back(fmt::format("            {} skipped: {}", n, reason));
-        stage("replay", r.failed > 0 || r.bad_input ? "failed" : "passed").member("seconds", t_replay);
-        report.suites.push_back(replay_suite(r, t_replay));
-        write_replay_members(json, r);
-        json.end_object();
+        if (scene_logs_under(replays).empty()) {
+            const std::string none = fmt::format("no scene logs in {} yet", replays.string());
+            fmt::print("{}\n", none);
+            summary.push_back(fmt::format("replay      skipped ({})", none));
+            report.suites.push_back(stage_case("replay", app::TestCase::Outcome::skipped, none));
+            stage("replay", "skipped").member("message", none).end_object();
+        } else {
+            ReplaySummary r;
+            const double t_replay = timed([&] { r = replay_paths({replays.string()}, false, opt->max_work); });
+            failed = failed || r.failed > 0 || r.bad_input;
+            summary.push_back(fmt::format("replay      {} ({:.2f} s)", replay_counts(r, false), t_replay));
+            // A log for a kernel this build lacks is skipped, never failed: each reason said once, with its count.
+            for (const auto& [reason, n] : r.skip_reasons) summary.push_back(fmt::format("            {} skipped: {}", n, reason));
+            stage("replay", r.failed > 0 || r.bad_input ? "failed" : "passed").member("seconds", t_replay);
+            report.suites.push_back(replay_suite(r, t_replay));
+            write_replay_members(json, r);
+            json.end_object();
+        }
         if (app::stop_requested()) finish();
 
         // 2. The lecture's pinball experiment, under every kernel (or --kernel's alone): robust and exact must keep

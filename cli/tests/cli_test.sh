@@ -176,6 +176,14 @@ case "$case" in
   full-record)       cp "$log" "$dir/r.scene"; run_full 1 record "$dir/r.scene"; first_line err "$enospc" ;;
   full-help)         run_full 1 help; first_line err "$enospc" ;;
   full-reduce)       run_full 1 reduce "$src/replays/lecture/double-pinball-tunnel.scene"; first_line err "$enospc" ;;
+  check-new-corpus)  # A replay folder --replay-dir names is made if it is not there; with no log yet the replay stage is
+                     # skipped, not failed (failures will be saved there); a folder whose parent is missing is refused.
+                     run 0 check --replay-dir "$dir/new" --no-properties --fuzz-runs 0
+                     [ -d "$dir/new" ] || fail "the replay folder was not made"
+                     has err "ricochet check: note: made the replay folder $dir/new"
+                     has out "replay      skipped (no scene logs in $dir/new yet)"
+                     run 2 check --replay-dir "$dir/none/new" --no-properties --fuzz-runs 0
+                     first_line err "ricochet check: error: cannot make the replay folder $dir/none/new: No such file or directory" ;;
   replay-empty-folder) mkdir "$dir/empty"; run 2 replay "$dir/empty"
                      has err "ricochet: error: no scene logs (*.scene) under $dir/empty"; has out "0 passed, 0 failed" ;;
   replay-empty-hashes) mkdir "$dir/empty"; run 2 replay --hashes "$dir/empty"
