@@ -287,6 +287,30 @@ TEST(Reduce, TheLectureKernelsDiscFailuresReduceToDiscFailuresThatReplay) {
 
 // --- Refusals and step errors
 
+/// A bug on one path of the broad phase: with a wall index (the grid, as replay steps by default) the last wall is
+/// never tried; with every wall tried (no index) the kernel is right.
+FrameStatus blind_with_index(Ball& ball, BallMemory& memory, std::span<const Wall> walls, std::vector<HitEvent>& hits,
+                             StepScratch& scratch, const WallIndex* index) {
+    if (index != nullptr && !walls.empty())
+        return mutant::robust().step_ball(ball, memory, walls.first(walls.size() - 1), hits, scratch, nullptr);
+    return mutant::robust().step_ball(ball, memory, walls, hits, scratch, index);
+}
+
+TEST(Reduce, JudgesAsReplayStepsSoABugOnOneBroadPhasePathKeepsItsLog) {
+    // The ball crosses wall 1 in frame 1. Reduce tried every wall of small scenes (a quicker path that gives the
+    // same bits on a correct core): it found no failure here, while replay, stepping with the grid, sees the
+    // tunnel. It now steps as replay does, so the failure a harness reports is the one its log replays.
+    const Scene s = parse_ok("ricochet 1\nframes 2\nwall -9 -9 -9 -8\nwall 2 -1 2 1\nball 0 0 3 0\ncheck no-tunnel\n");
+    mutant::Mutation m;
+    m.ops.step_ball = blind_with_index;
+    Scene scene = s;
+    scene.kernel = mutant::id();
+    const ReducedLog r = reduced(scene);
+    expect_reproduces(r);
+    // Fixed (robust): the log passes.
+    EXPECT_TRUE(replay_scene(r.log.scene, KernelId::robust).passed);
+}
+
 TEST(Reduce, ALogWhoseChecksHoldIsRefused) {
     Scene s = parse_ok("ricochet 1\nframes 10\nwall 0 -5 0 5\nball -1 0 0.5 0\ncheck no-tunnel\ncheck oracle\n");
     EXPECT_EQ(refusal(s), "every check holds under robust through frame 10: nothing to reduce");

@@ -5,16 +5,6 @@
 #include <utility>
 
 namespace ricochet::detail::reduce {
-namespace {
-
-/// A try steps with the wall grid from this many walls and this many ball-frames on; otherwise every wall
-/// is tried. Options change no event's bits (world.hpp), only the time: a handful of walls is quicker
-/// without an index, a leg far longer than the scene (as generated cases have) would walk many grid cells
-/// for nothing, and a run of a frame or two sweeps fewer walls than building the grid visits.
-constexpr std::size_t k_grid_from_walls = 64;
-constexpr std::int64_t k_grid_from_ball_frames = 16;
-
-}  // namespace
 
 Culprit culprit_of(const Scene& scene, const CheckFailure& f) {
     // Degenerate: a static shape's failure (oracle at frame 0) names ball 0 of a scene that may have none.
@@ -27,9 +17,9 @@ CheckedRun run_to_first_failure(const Scene& scene, KernelId kernel, std::span<c
     CheckOptions options;
     options.keep_events = false;
     options.on_frame = on_frame;
-    const bool grid = scene.walls.size() >= k_grid_from_walls &&
-                      scene.frames * static_cast<std::int64_t>(scene.balls.size()) >= k_grid_from_ball_frames;
-    options.world.broad_phase = grid ? BroadPhase::grid : BroadPhase::none;
+    // The world's default options, as `ricochet replay` steps the reduced log: on a correct core the broad phase
+    // changes no bits, but a bug in one of its paths shows only on that path, and the log must fail as replay
+    // runs it (properties/harness.cpp judges the same way).
     // Nothing after the first failure can change the verdict.
     options.stop_after = [](const CheckedRun& run) { return run.failure.has_value(); };
     return run_checked(scene, kernel, scene.frames, checks, options);
