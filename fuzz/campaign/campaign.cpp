@@ -120,8 +120,9 @@ std::string json_summary(const Plan& plan, const CampaignOptions& opt, double wa
     return json.end_object().str();
 }
 
-/// The campaign as a report's suite: a case per target, failed by its new failures (those the exit status
-/// counts: saved, no log, unsaved, flaky, pending), a finding each.
+/// The campaign as a report's suite: a case per target, failed by what fails the campaign (its new failures:
+/// saved, no log, unsaved, flaky, pending; and a known one where the kernel is held to the guarantees), a
+/// finding each.
 app::TestSuite report_suite(const Plan& plan, double fuzzed) {
     app::TestSuite suite{"fuzz", fuzzed, {}};
     for (const TargetRun& r : plan.runs) {
