@@ -61,7 +61,7 @@ case $case in
   no-entry)       run 2 run "$dir/left.scene" --kernel "plugin:$plugins/test_plugin_no_entry.so"
                   first_line err "ricochet: error: plug-in $plugins/test_plugin_no_entry.so: no symbol ricochet_plugin_entry (a plug-in defines it: see ricochet/plugin.h)" ;;
   wrong-abi)      run 2 replay --plugin "$plugins/test_plugin_wrong_abi.so" "$dir/left.scene"
-                  first_line err "ricochet: error: plug-in $plugins/test_plugin_wrong_abi.so: its table is for plugin.h ABI version 99, this ricochet speaks version 1 (rebuild it against this ricochet's ricochet/plugin.h)" ;;
+                  first_line err "ricochet: error: plug-in $plugins/test_plugin_wrong_abi.so: its table is for plugin.h ABI version 99, this ricochet speaks versions 1 and 2 (rebuild it against this ricochet's ricochet/plugin.h)" ;;
   not-a-library)  run 2 run "$dir/left.scene" --kernel "plugin:$dir/left.scene"
                   head -n 1 "$dir/err" | grep -q "^ricochet: error: plug-in $dir/left.scene: cannot load it: .\+" ||
                     fail "no dlerror message naming the file" ;;
