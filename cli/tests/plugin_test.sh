@@ -301,6 +301,37 @@ sys.exit(0 if r["status"] == "failed" and r["failed"] == 1 and r["passed"] == 1 
                   has err "ricochet fuzz: note: leaving out target disc: kernel 'test-good' steps point balls only"
                   grep -q '^scene ' "$dir/out" || fail "the scene target did not run"
                   ! grep -q '^disc ' "$dir/out" || fail "the disc target ran" ;;
+  # ABI version 2: a plug-in that sweeps discs (test-disc) steps discs and bumpers under every command.
+  disc-run)       # A disc off the wall at x = 5 (contact at x = 4, t = 1/3 of frame 2), then off the bumper at x = -5.
+                  printf 'ricochet 1\nframes 4\nwall 5 -5 5 5\nbumper -5 0 1\nball 0 0 3 0 1\ncheck oracle\ncheck no-tunnel\n' >"$dir/d.scene"
+                  run 0 run "$dir/d.scene" --kernel "plugin:$plugins/test_plugin_disc.so"
+                  grep -q '^hit 2 0 0 4 0' "$dir/out" || fail "no hit at (4, 0) in frame 2"
+                  grep -q '^bump 4 0 0 -3 0' "$dir/out" || fail "no bump at (-3, 0) in frame 4" ;;
+  disc-reduce-replay) # Its discs' failures are found, reduced and replayed like its point balls': test-disc rounds B_i
+                  # once, without robust's walk back, so `penetration` (δ = 0) catches a disc in a box at once.
+                  disc=$plugins/test_plugin_disc.so
+                  printf 'ricochet 1\nframes 20\nwall 0 0 0 16\nwall 0 16 16 16\nwall 16 16 16 0\nwall 16 0 0 0\nbumper 8 8 2\nball 4 4 3 1.25 1\nball 12 3 -2 3.5 0.5\ncheck penetration\n' >"$dir/box.scene"
+                  run 0 reduce "$dir/box.scene" --kernel "plugin:$disc" -o "$dir/small.scene"
+                  grep -qx 'kernel test-disc' "$dir/small.scene" || fail "the reduced log does not name the plug-in's kernel"
+                  run 1 replay --plugin "$disc" "$dir/small.scene"
+                  has_part out "invariant penetration broke at frame "
+                  run 0 replay --plugin "$disc" --kernel robust "$dir/small.scene" ;;
+  disc-bad-answer) # t = 2 from sweep_disc: a broken header, reported with the call.
+                  printf 'ricochet 1\nframes 2\nwall -5 -5 -5 5\nball 0 0 -10 0 1\n' >"$dir/d.scene"
+                  run 3 run "$dir/d.scene" --kernel "plugin:$plugins/test_plugin_disc_broken.so"
+                  first_line err "$(named test-disc-broken disc_broken) broke ricochet/plugin.h: its sweep_disc function answered a hit at t = 2, which is not in [0, 1], called with bs (0, 0), v (-10, 0), radius 1, wall (-5, -5) -> (-5, 5); while running $dir/d.scene" ;;
+  disc-fuzz)      # The disc target runs against it (fixed seed and count); every log it saves replays its failure.
+                  need_fuzzer disc
+                  disc=$plugins/test_plugin_disc.so
+                  timeout 120 "$ricochet" fuzz --kernel "plugin:$disc" --target disc --runs 300 --seed 1 --jobs 1 \
+                    --cache-dir "$dir/cache" --replay-dir "$dir/replays" >"$dir/out" 2>"$dir/err"
+                  rc=$?; [ "$rc" = 0 ] || [ "$rc" = 1 ] || fail "exit $rc, expected 0 or 1"
+                  grep -q '^disc ' "$dir/out" || fail "the disc target did not run"
+                  for log in "$dir"/replays/*.scene; do
+                    [ -f "$log" ] || continue
+                    grep -qx 'kernel test-disc' "$log" || fail "$log does not name the plug-in's kernel"
+                    run 1 replay --plugin "$disc" "$log"
+                  done ;;
   fuzz-crash)     # libFuzzer keeps the input; the campaign names the plug-in and turns the input into a scene log.
                   # Full-length inputs from the start: the crash rule needs a ball moving left, which libFuzzer's short
                   # first inputs never decode to; so set, four runs of fuzz_sweep crashed at input 35 each, and 2000
