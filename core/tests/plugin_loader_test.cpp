@@ -266,6 +266,7 @@ DiscFrame step_disc_frame(KernelId k, Ball ball, std::span<const Wall> walls, st
 }
 
 TEST(PluginDisc, AVersionOneTableStillLoadsAndRefusesDiscsAndBumpers) {
+    // test-v1 serves only a loader asking for version 1: the loader asks for 2, then for 1.
     const KernelId k = loaded("v1");
     const PluginInfo* info = plugin_info(k);
     ASSERT_NE(info, nullptr);

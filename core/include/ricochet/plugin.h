@@ -1,9 +1,10 @@
-/* ricochet/plugin.h: the plug-in interface, ABI version 2 (version 1, point balls only, still loads). Plain C (C99 and C++), no other header of
- * ricochet needed: build your own collision code as a shared library that defines ricochet_plugin_entry,
- * and every harness of ricochet runs against it without rebuilding ricochet:
+/* ricochet/plugin.h: the plug-in interface, ABI version 2 (version 1, point balls only, still loads). Plain C
+ * (C99 and C++), no other header of ricochet needed: build your own collision code as a shared library that
+ * defines ricochet_plugin_entry, and every harness of ricochet runs against it without rebuilding ricochet:
  *
  *     ricochet run LOG --kernel plugin:./libmine.so          the run, as your code steps it
  *     ricochet fuzz --kernel plugin:./libmine.so             the fuzz campaign (workers load it by its absolute path)
+ *     ricochet fuzz --kernel plugin:./libmine.so --target disc   its discs (with sweep_disc, below)
  *     RICOCHET_KERNEL=plugin:/abs/libmine.so ricochet_properties   the property suite
  *     ricochet replay --plugin ./libmine.so replays/         its saved failure logs
  *
@@ -44,7 +45,8 @@
  * exist, more hits than room; a disc hit whose t is not in [0, 1], whose B_i is not finite, or whose normal is zero
  * or not finite) is reported the same way.
  *
- * Versions: the loader calls ricochet_plugin_entry(RICOCHET_PLUGIN_ABI_VERSION) and loads a table whose
+ * Versions: the loader calls ricochet_plugin_entry(RICOCHET_PLUGIN_ABI_VERSION), and again with 1 if that
+ * returns NULL (a version-1 plug-in that serves only the version it was built for), and loads a table whose
  * abi_version is one it speaks, 1 or 2 (the error says which it got and which it speaks). Version 1 is the
  * table up to speed_abs_bound: point balls among walls; a version-1 plug-in built against the older header
  * keeps working unchanged, and a scene with discs or bumpers is refused for it as before. Version 2 appends

@@ -15,7 +15,8 @@
  *   PLUGIN_HANG          "test-hang": never returns from sweep for a leg moving left, else as PLUGIN_GOOD
  *   PLUGIN_NO_REASON     "test-no-reason": misses without reasons (RICOCHET_MISS), and blind to walls from x = 7
  *   PLUGIN_V1            "test-v1": PLUGIN_GOOD as a version-1 table (abi_version 1, struct_size ending before the
- *                        disc functions), with a sweep_disc past its struct_size that must never be read
+ *                        disc functions), with a sweep_disc past its struct_size that must never be read, served
+ *                        only to a loader asking for version 1 (NULL for any other)
  *   PLUGIN_DISC          "test-disc": version 2, PLUGIN_GOOD plus discs against walls and bumpers in double (the
  *                        shifted line for the face, quadratics for the caps and bumpers, entries only)
  *   PLUGIN_DISC_WALLS    "test-disc-walls": PLUGIN_DISC without sweep_disc_bumper (discs among walls only)
@@ -325,6 +326,7 @@ RICOCHET_PLUGIN_EXPORT const ricochet_plugin* ricochet_plugin_entry(uint32_t abi
     table.name = "test-no-reason";
 #elif defined(PLUGIN_V1)
     /* As a plug-in built against version 1 of the header sees its table; what lies past it is never read. */
+    if (abi_version != 1) return 0;
     table.name = "test-v1";
     table.abi_version = 1;
     table.struct_size = offsetof(ricochet_plugin, sweep_disc);

@@ -120,6 +120,8 @@ std::optional<KernelId> load_into(std::size_t slot, const std::filesystem::path&
         const PluginCall call(slot, PluginOp::entry);
         const auto entry = reinterpret_cast<ricochet_plugin_entry_fn>(symbol);
         const ricochet_plugin* table = entry(RICOCHET_PLUGIN_ABI_VERSION);
+        // A version-1 plug-in may serve only the version it was built for: ask it for that one too.
+        if (table == nullptr) table = entry(k_oldest_abi);
         if (table == nullptr) return fail(fmt::format("{}: {} returned no table", where, RICOCHET_PLUGIN_ENTRY_SYMBOL));
         abi = table->abi_version;
         size = table->struct_size;
