@@ -4,8 +4,9 @@
 // stepped for up to 32 frames by the kernel under test.
 //
 // Why a target of its own rather than radii in `scene`: radii in `scene` would change what every committed `scene`
-// input decodes to, and a kernel that steps point balls only (a peer, a plug-in) could no longer run `scene`; here
-// every input is a disc scene, with a corpus and a dictionary of its own, and `scene` keeps its meaning.
+// input decodes to, and a kernel that steps point balls only (a peer, a plug-in without sweep_disc) could no longer
+// run `scene`; here every input is a disc scene, with a corpus and a dictionary of its own, and `scene` keeps its
+// meaning.
 // Oracle: the shared checker (run_checked) with every check, as `ricochet replay` runs them on the saved log, so
 // every failure replays.
 //
@@ -15,12 +16,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <string_view>
 #include <vector>
 
 #include <fmt/core.h>
 
 #include "fuzz_common.hpp"
 #include "ricochet/checks.hpp"
+#include "ricochet/kernel_spec.hpp"
 
 namespace ricochet::fuzz {
 namespace {
@@ -190,9 +193,16 @@ bool kernel_steps_bumpers() {
 }  // namespace ricochet::fuzz
 
 // libFuzzer asks the kernel before the first input, so that a kernel without discs stops the run without an
-// artifact; the standalone driver (gcc) asks on the first input.
+// artifact; the standalone driver (gcc) asks on the first input. A plug-in (plugin.h ABI version 2 steps discs) is
+// asked on the first input too: loading it installs the plug-in guard's signal handlers, and libFuzzer, finding a
+// handler already there, would install none of its own for SIGABRT, so a failure found (or a crash) would end the
+// worker with no artifact. Loaded after libFuzzer's handlers, the guard hands them on, as in the other targets,
+// which load every kernel on the first input. (The campaign refuses a plug-in without discs before any worker
+// starts.)
 extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** /*argv*/) {
-    (void)ricochet::fuzz::kernel_steps_bumpers();
+    const char* spec = std::getenv(ricochet::fuzz::k_kernel_env);
+    if (spec == nullptr || !std::string_view(spec).starts_with(ricochet::k_plugin_spec_prefix))
+        (void)ricochet::fuzz::kernel_steps_bumpers();
     return 0;
 }
 

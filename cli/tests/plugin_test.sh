@@ -61,7 +61,7 @@ case $case in
   no-entry)       run 2 run "$dir/left.scene" --kernel "plugin:$plugins/test_plugin_no_entry.so"
                   first_line err "ricochet: error: plug-in $plugins/test_plugin_no_entry.so: no symbol ricochet_plugin_entry (a plug-in defines it: see ricochet/plugin.h)" ;;
   wrong-abi)      run 2 replay --plugin "$plugins/test_plugin_wrong_abi.so" "$dir/left.scene"
-                  first_line err "ricochet: error: plug-in $plugins/test_plugin_wrong_abi.so: its table is for plugin.h ABI version 99, this ricochet speaks version 1 (rebuild it against this ricochet's ricochet/plugin.h)" ;;
+                  first_line err "ricochet: error: plug-in $plugins/test_plugin_wrong_abi.so: its table is for plugin.h ABI version 99, this ricochet speaks versions 1 and 2 (rebuild it against this ricochet's ricochet/plugin.h)" ;;
   not-a-library)  run 2 run "$dir/left.scene" --kernel "plugin:$dir/left.scene"
                   head -n 1 "$dir/err" | grep -q "^ricochet: error: plug-in $dir/left.scene: cannot load it: .\+" ||
                     fail "no dlerror message naming the file" ;;
@@ -301,6 +301,39 @@ sys.exit(0 if r["status"] == "failed" and r["failed"] == 1 and r["passed"] == 1 
                   has err "ricochet fuzz: note: leaving out target disc: kernel 'test-good' steps point balls only"
                   grep -q '^scene ' "$dir/out" || fail "the scene target did not run"
                   ! grep -q '^disc ' "$dir/out" || fail "the disc target ran" ;;
+  # ABI version 2: a plug-in that sweeps discs (test-disc) steps discs and bumpers under every command.
+  disc-run)       # A disc off the wall at x = 5 (contact at x = 4, t = 1/3 of frame 2), then off the bumper at x = -5.
+                  printf 'ricochet 1\nframes 4\nwall 5 -5 5 5\nbumper -5 0 1\nball 0 0 3 0 1\ncheck oracle\ncheck no-tunnel\n' >"$dir/d.scene"
+                  run 0 run "$dir/d.scene" --kernel "plugin:$plugins/test_plugin_disc.so"
+                  grep -q '^hit 2 0 0 4 0' "$dir/out" || fail "no hit at (4, 0) in frame 2"
+                  grep -q '^bump 4 0 0 -3 0' "$dir/out" || fail "no bump at (-3, 0) in frame 4" ;;
+  disc-reduce-replay) # Its discs' failures are found, reduced and replayed like its point balls': test-disc rounds B_i
+                  # once, without robust's walk back, so `penetration` (δ = 0) catches a disc in a box at once.
+                  disc=$plugins/test_plugin_disc.so
+                  printf 'ricochet 1\nframes 20\nwall 0 0 0 16\nwall 0 16 16 16\nwall 16 16 16 0\nwall 16 0 0 0\nbumper 8 8 2\nball 4 4 3 1.25 1\nball 12 3 -2 3.5 0.5\ncheck penetration\n' >"$dir/box.scene"
+                  run 0 reduce "$dir/box.scene" --kernel "plugin:$disc" -o "$dir/small.scene"
+                  grep -qx 'kernel test-disc' "$dir/small.scene" || fail "the reduced log does not name the plug-in's kernel"
+                  run 1 replay --plugin "$disc" "$dir/small.scene"
+                  has_part out "invariant penetration broke at frame "
+                  run 0 replay --plugin "$disc" --kernel robust "$dir/small.scene" ;;
+  disc-bad-answer) # t = 2 from sweep_disc: a broken header, reported with the call.
+                  printf 'ricochet 1\nframes 2\nwall -5 -5 -5 5\nball 0 0 -10 0 1\n' >"$dir/d.scene"
+                  run 3 run "$dir/d.scene" --kernel "plugin:$plugins/test_plugin_disc_broken.so"
+                  first_line err "$(named test-disc-broken disc_broken) broke ricochet/plugin.h: its sweep_disc function answered a hit at t = 2, which is not in [0, 1], called with bs (0, 0), v (-10, 0), radius 1, wall (-5, -5) -> (-5, 5); while running $dir/d.scene" ;;
+  disc-fuzz)      # The disc target runs against it and finds a failure (test-disc rounds B_i once; found within 10
+                  # inputs in the runs measured, so 300 leave room), kept as a log that replays it (exit 1), reduced.
+                  need_fuzzer disc
+                  disc=$plugins/test_plugin_disc.so
+                  run 1 fuzz --kernel "plugin:$disc" --target disc --runs 300 --seed 1 --jobs 1 \
+                    --cache-dir "$dir/cache" --replay-dir "$dir/replays"
+                  has_part out "ricochet fuzz: kernel test-disc (plug-in $disc)"
+                  set -- "$dir"/replays/fuzz-disc-*.scene
+                  [ -f "$1" ] || fail "the campaign saved no log"
+                  for log in "$@"; do
+                    grep -qx 'kernel test-disc' "$log" || fail "$log does not name the plug-in's kernel"
+                    grep -q '^from reduce ' "$log" || fail "$log was not reduced"
+                    run 1 replay --plugin "$disc" "$log"
+                  done ;;
   fuzz-crash)     # libFuzzer keeps the input; the campaign names the plug-in and turns the input into a scene log.
                   # Full-length inputs from the start: the crash rule needs a ball moving left, which libFuzzer's short
                   # first inputs never decode to; so set, four runs of fuzz_sweep crashed at input 35 each, and 2000

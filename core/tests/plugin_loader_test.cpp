@@ -1,9 +1,12 @@
 // Plug-in kernels (plugin_loader.hpp, kernel_spec.hpp, plugin.h): each way a plug-in is refused, with what the
 // message says; one load per file; dispatch to the plug-in's functions and to robust's where it has none; the
-// frame loop ricochet runs around a sweep, traced; a whole-frame step under the checks; a miss without a reason.
+// frame loop ricochet runs around a sweep, traced; a whole-frame step under the checks; a miss without a reason;
+// ABI version 2's discs: a version-1 table still loads and refuses them, a version-2 one steps them, traced, and an
+// answer plugin.h does not allow ends the process with a report.
 // The test plug-ins (plugins/test_plugin.c) are built next to each other in RICOCHET_TEST_PLUGIN_DIR.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -13,6 +16,7 @@
 #include "ricochet/checks.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/kernel_spec.hpp"
+#include "ricochet/plugin_guard.hpp"
 #include "ricochet/plugin_loader.hpp"
 #include "ricochet/step_trace.hpp"
 #include "ricochet/world.hpp"
@@ -101,10 +105,10 @@ TEST(PluginLoader, SaysWhyEachBadPluginIsRefused) {
     EXPECT_EQ(refusal(plugin("no_entry")),
               fmt::format("plug-in {}: no symbol ricochet_plugin_entry (a plug-in defines it: see ricochet/plugin.h)", path("no_entry")));
     EXPECT_EQ(refusal(plugin("wrong_abi")),
-              fmt::format("plug-in {}: its table is for plugin.h ABI version 99, this ricochet speaks version 1 (rebuild it "
-                          "against this ricochet's ricochet/plugin.h)",
+              fmt::format("plug-in {}: its table is for plugin.h ABI version 99, this ricochet speaks versions 1 and 2 "
+                          "(rebuild it against this ricochet's ricochet/plugin.h)",
                           path("wrong_abi")));
-    EXPECT_TRUE(refusal(plugin("short_table")).starts_with(fmt::format("plug-in {}: its table says struct_size 8, ABI version 1 needs at least ", path("short_table"))));
+    EXPECT_TRUE(refusal(plugin("short_table")).starts_with(fmt::format("plug-in {}: its table says struct_size 8, ABI version 2 needs at least ", path("short_table"))));
     EXPECT_EQ(refusal(plugin("no_table")), fmt::format("plug-in {}: ricochet_plugin_entry returned no table", path("no_table")));
     EXPECT_EQ(refusal(plugin("bad_name")),
               fmt::format("plug-in {}: its kernel name 'bad name' is not 1 to 64 of A-Z a-z 0-9 - _ .", path("bad_name")));
@@ -242,6 +246,142 @@ TEST(PluginKernel, AMissWithoutAReasonIsJudgedAsAMiss) {
     ASSERT_TRUE(seen.failure);
     EXPECT_EQ(seen.failure->str(),
               "oracle broke at frame 1 ball 0: leg 0 ((0, 0) -> (10, 0)) against wall 0: the kernel says miss, exactly hit");
+}
+
+/// One frame of ball among walls and bumpers by kernel k, traced.
+struct DiscFrame {
+    FrameStatus status;
+    Ball ball;
+    std::vector<HitEvent> hits;
+    StepTrace trace;
+};
+DiscFrame step_disc_frame(KernelId k, Ball ball, std::span<const Wall> walls, std::span<const Bumper> bumpers) {
+    DiscFrame f{};
+    BallMemory memory;
+    StepScratch scratch;
+    scratch.trace = &f.trace;
+    f.status = step_ball(k, ball, memory, Obstacles{walls, bumpers}, f.hits, scratch);
+    f.ball = ball;
+    return f;
+}
+
+TEST(PluginDisc, AVersionOneTableStillLoadsAndRefusesDiscsAndBumpers) {
+    // test-v1 serves only a loader asking for version 1: the loader asks for 2, then for 1.
+    const KernelId k = loaded("v1");
+    const PluginInfo* info = plugin_info(k);
+    ASSERT_NE(info, nullptr);
+    EXPECT_EQ(info->abi_version, 1u);
+    // Its table sets sweep_disc past its struct_size: a version-1 table has no disc functions.
+    EXPECT_FALSE(info->discs);
+    EXPECT_EQ(kernel_ops(k).step_disc, nullptr);
+    EXPECT_FALSE(kernel_ops(k).steps_bumpers);
+    // Points among walls as ever: its sweep.
+    EXPECT_EQ(sweep(k, {0, 0}, {10, 0}, k_wall).t, 0.5);
+    const Ball disc{{0, 0}, {10, 0}, 0.5};
+    EXPECT_EQ(unsupported_scene(k, std::span<const Ball>(&disc, 1), 0),
+              std::optional<std::string>("kernel 'test-v1' steps point balls only: ball 0 has radius 0.5"));
+    const Ball point{{0, 0}, {10, 0}};
+    EXPECT_EQ(unsupported_scene(k, std::span<const Ball>(&point, 1), 1),
+              std::optional<std::string>("kernel 'test-v1' does not step bumpers: the scene has 1 (bumper 0 first)"));
+    // A version-2 table without sweep_disc (test-good) refuses them the same way.
+    const KernelId good = loaded("good");
+    EXPECT_EQ(plugin_info(good)->abi_version, 2u);
+    EXPECT_EQ(kernel_ops(good).step_disc, nullptr);
+}
+
+TEST(PluginDisc, AVersionTwoTableStepsADiscAmongWallsAndBumpersTracingEachLeg) {
+    const KernelId k = loaded("disc");
+    ASSERT_TRUE(plugin_info(k)->discs);
+    ASSERT_TRUE(plugin_info(k)->bumpers);
+    EXPECT_NE(kernel_ops(k).step_disc, nullptr);
+    EXPECT_TRUE(kernel_ops(k).steps_bumpers);
+    const Wall walls[] = {k_wall};
+    // A disc of radius 1 from (0, 0) moving (10, 0) against x = 5: the face shifted by 1, x = 4, at t = 0.4;
+    // v′ = (−10, 0) about the normal (−1, 0), the rest of the frame 0.6·v′ from (4, 0): (−2, 0).
+    const DiscFrame wall = step_disc_frame(k, Ball{{0, 0}, {10, 0}, 1}, walls, {});
+    EXPECT_EQ(wall.status, FrameStatus::ok);
+    ASSERT_EQ(wall.hits.size(), 1u);
+    EXPECT_EQ(wall.hits[0].wall, 0u);
+    EXPECT_FALSE(wall.hits[0].bumper);
+    EXPECT_EQ(wall.hits[0].t, 0.4);
+    EXPECT_EQ(wall.hits[0].point, (Vec2{4, 0}));
+    EXPECT_EQ(wall.ball.pos, (Vec2{-2, 0}));
+    EXPECT_EQ(wall.ball.vel, (Vec2{-10, 0}));
+    // Two legs: the first decides wall 0 (a contact) and takes it; the second skips it, as just bounced off.
+    ASSERT_EQ(wall.trace.legs.size(), 2u);
+    EXPECT_EQ(wall.trace.legs[0].hit, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(wall.trace.legs[0].hit_t, 0.4);
+    EXPECT_EQ(wall.trace.legs[0].vel, (Vec2{10, 0}));
+    ASSERT_EQ(wall.trace.legs[0].decision_count, 1u);
+    EXPECT_EQ(wall.trace.decisions[wall.trace.legs[0].first_decision].miss, Miss::none);
+    EXPECT_EQ(wall.trace.legs[1].skipped, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(wall.trace.legs[1].decision_count, 0u);
+    EXPECT_EQ(wall.trace.reflections, 1);
+    // The same disc against a bumper at (5, 0) of radius 1, no walls: |B − C| = 2 at x = 3, t = 0.3; back to (−4, 0).
+    const Bumper bumpers[] = {Bumper{{5, 0}, 1}};
+    const DiscFrame bump = step_disc_frame(k, Ball{{0, 0}, {10, 0}, 1}, {}, bumpers);
+    ASSERT_EQ(bump.hits.size(), 1u);
+    EXPECT_TRUE(bump.hits[0].bumper);
+    EXPECT_EQ(bump.hits[0].wall, 0u);
+    EXPECT_EQ(bump.hits[0].point, (Vec2{3, 0}));
+    EXPECT_EQ(bump.ball.pos, (Vec2{-4, 0}));
+    ASSERT_EQ(bump.trace.legs.size(), 2u);
+    EXPECT_EQ(bump.trace.legs[0].bumped, std::optional<std::uint32_t>(0));
+    EXPECT_EQ(bump.trace.legs[1].skipped_bumper, std::optional<std::uint32_t>(0));
+    // Both: the bumper's t = 0.3 comes before the wall's 0.4, and the disc goes back left, never meeting the wall.
+    const DiscFrame both = step_disc_frame(k, Ball{{0, 0}, {10, 0}, 1}, walls, bumpers);
+    ASSERT_EQ(both.hits.size(), 1u);
+    EXPECT_TRUE(both.hits[0].bumper);
+    // A box with a bumper in it, discs and a point ball: every check a log can name but one holds for a hundred
+    // frames, each leg judged. The one: `penetration` asks every printed piece to keep its distances exactly
+    // (δ = 0), which a B_i rounded once, without robust's walk back, does not; it catches this plug-in at once.
+    Scene box;
+    box.walls = {{{0, 0}, {0, 16}}, {{0, 16}, {16, 16}}, {{16, 16}, {16, 0}}, {{16, 0}, {0, 0}}};
+    box.bumpers = {{{8, 8}, 2}};
+    box.balls = {{{4, 4}, {3, 1.25}, 1}, {{12, 3}, {-2, 3.5}, 0.5}, {{2, 13}, {1.5, -0.75}}};
+    box.frames = 100;
+    std::vector<Check> checks(k_all_checks.begin(), k_all_checks.end());
+    std::erase(checks, Check::penetration);
+    const CheckedRun run = run_checked(box, k, box.frames, checks);
+    EXPECT_FALSE(run.failure) << run.failure->str();
+    EXPECT_GT(std::count_if(run.events.begin(), run.events.end(), [](const Event& e) { return e.kind == Event::Kind::bump; }), 0);
+    const Check penetration[] = {Check::penetration};
+    const CheckedRun seen = run_checked(box, k, box.frames, penetration);
+    ASSERT_TRUE(seen.failure);
+    EXPECT_EQ(seen.failure->check, Check::penetration) << seen.failure->str();
+}
+
+TEST(PluginDisc, DiscsAmongWallsOnlyWithoutSweepDiscBumper) {
+    const KernelId k = loaded("disc_walls");
+    EXPECT_NE(kernel_ops(k).step_disc, nullptr);
+    EXPECT_FALSE(kernel_ops(k).steps_bumpers);
+    const Ball disc{{0, 0}, {10, 0}, 0.5};
+    EXPECT_EQ(unsupported_scene(k, std::span<const Ball>(&disc, 1), 0), std::nullopt);
+    EXPECT_EQ(unsupported_scene(k, std::span<const Ball>(&disc, 1), 2),
+              std::optional<std::string>("kernel 'test-disc-walls' does not step bumpers: the scene has 2 (bumper 0 first)"));
+}
+
+TEST(PluginDiscDeathTest, AnAnswerPluginHDoesNotAllowIsReported) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    const Wall walls[] = {{{-5, -5}, {-5, 5}}, {{-5, -5}, {5, -5}}};
+    // Moving left into x = −5: the broken plug-in says t = 2.
+    EXPECT_EXIT(
+        {
+            const KernelId k = loaded("disc_broken");
+            step_disc_frame(k, Ball{{0, 0}, {-10, 0}, 1}, std::span<const Wall>(walls, 1), {});
+        },
+        testing::ExitedWithCode(k_plugin_fault_exit),
+        "plug-in kernel 'test-disc-broken' .* broke ricochet/plugin.h: its sweep_disc function answered a hit at t = 2, "
+        "which is not in \\[0, 1\\], called with bs \\(0, 0\\), v \\(-10, 0\\), radius 1, wall \\(-5, -5\\) -> \\(-5, 5\\)");
+    // Moving down into y = −5: a zero normal.
+    EXPECT_EXIT(
+        {
+            const KernelId k = loaded("disc_broken");
+            step_disc_frame(k, Ball{{0, 0}, {0, -10}, 1}, std::span<const Wall>(walls + 1, 1), {});
+        },
+        testing::ExitedWithCode(k_plugin_fault_exit),
+        "its sweep_disc function answered a hit with the normal \\(0, 0\\), which is zero, called with bs \\(0, 0\\), "
+        "v \\(0, -10\\), radius 1, wall \\(-5, -5\\) -> \\(5, -5\\)");
 }
 
 }  // namespace

@@ -97,8 +97,9 @@ struct KernelOps {
                              StepScratch& scratch, const WallIndex* index);
     /// Steps a disc (a ball of radius > 0) among walls and bumpers, or a point ball in a scene with bumpers; a
     /// hit off a bumper is a HitEvent with bumper set. A point ball among walls alone always goes to step_ball,
-    /// so that it keeps its bits. Null for a kernel that steps point balls among walls only (the peers,
-    /// plug-ins): World refuses a scene with discs or bumpers for it. A kernel type gives it as K::step_disc.
+    /// so that it keeps its bits. Null for a kernel that steps point balls among walls only (the peers, plug-ins
+    /// without plugin.h's sweep_disc): World refuses a scene with discs or bumpers for it. A kernel type gives it
+    /// as K::step_disc.
     FrameStatus (*step_disc)(Ball& ball, BallMemory& memory, const Obstacles& obstacles, std::vector<HitEvent>& hits,
                              StepScratch& scratch) = nullptr;
     /// True if step_disc also handles bumpers (K::k_steps_bumpers); false: discs among walls only.

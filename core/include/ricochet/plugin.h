@@ -1,9 +1,10 @@
-/* ricochet/plugin.h: the plug-in interface, ABI version 1. Plain C (C99 and C++), no other header of
- * ricochet needed: build your own collision code as a shared library that defines ricochet_plugin_entry,
- * and every harness of ricochet runs against it without rebuilding ricochet:
+/* ricochet/plugin.h: the plug-in interface, ABI version 2 (version 1, point balls only, still loads). Plain C
+ * (C99 and C++), no other header of ricochet needed: build your own collision code as a shared library that
+ * defines ricochet_plugin_entry, and every harness of ricochet runs against it without rebuilding ricochet:
  *
  *     ricochet run LOG --kernel plugin:./libmine.so          the run, as your code steps it
  *     ricochet fuzz --kernel plugin:./libmine.so             the fuzz campaign (workers load it by its absolute path)
+ *     ricochet fuzz --kernel plugin:./libmine.so --target disc   its discs (with sweep_disc, below)
  *     RICOCHET_KERNEL=plugin:/abs/libmine.so ricochet_properties   the property suite
  *     ricochet replay --plugin ./libmine.so replays/         its saved failure logs
  *
@@ -25,6 +26,9 @@
  *     sweeps nothing. A ball lying on a wall's line and moving off it does not hit that wall.
  *   - Numbers: every coordinate, radius and velocity component ricochet passes is finite, of magnitude at
  *     most 2^256 (kernel.hpp's accepted range).
+ *   - Discs (ABI version 2): a disc of radius r is the set of points within r of its centre B(t); it touches a
+ *     wall when its centre comes within r of the segment, a bumper (c, rb) when |B(t) - c| = r + rb. A contact
+ *     normal points from the obstacle to the disc.
  * The harness judges your answers against ricochet's exact oracle by the checks of docs/scene-log.md
  * ("Checks"); a failure is saved as a scene log that `ricochet replay --plugin PATH LOG` reproduces.
  *
@@ -38,12 +42,17 @@
  * 0: no limit, for a debugger) ends the process with exit status 3 and a message naming the plug-in, the
  * function and its arguments; the scene being stepped is kept as a scene log (the message says where) and
  * replays the crash. A table that breaks this header (an unknown miss code, a hit on a wall that does not
- * exist, more hits than room) is reported the same way.
+ * exist, more hits than room; a disc hit whose t is not in [0, 1], whose B_i is not finite, or whose normal is zero
+ * or not finite) is reported the same way.
  *
- * Versions: the loader calls ricochet_plugin_entry(RICOCHET_PLUGIN_ABI_VERSION) and loads the table only
- * if its abi_version equals the version it speaks (the error says which it got and which it wants). Within
- * one ABI version the table only grows at its end: struct_size says how much of it the plug-in knows, and
- * the loader takes every field past it as absent (NULL, 0). */
+ * Versions: the loader calls ricochet_plugin_entry(RICOCHET_PLUGIN_ABI_VERSION), and again with 1 if that
+ * returns NULL (a version-1 plug-in that serves only the version it was built for), and loads a table whose
+ * abi_version is one it speaks, 1 or 2 (the error says which it got and which it speaks). Version 1 is the
+ * table up to speed_abs_bound: point balls among walls; a version-1 plug-in built against the older header
+ * keeps working unchanged, and a scene with discs or bumpers is refused for it as before. Version 2 appends
+ * the disc functions (sweep_disc, sweep_disc_bumper, reflect_disc). Within one ABI version the table only
+ * grows at its end: struct_size says how much of it the plug-in knows, and the loader takes every field past
+ * it as absent (NULL, 0); a version-1 table never has the disc functions, whatever its struct_size. */
 #ifndef RICOCHET_PLUGIN_H
 #define RICOCHET_PLUGIN_H
 
@@ -53,8 +62,8 @@
 extern "C" {
 #endif
 
-/** The ABI this header describes; the loader refuses a table of another version. */
-#define RICOCHET_PLUGIN_ABI_VERSION 1u
+/** The ABI this header describes; the loader loads tables of this version and of version 1, and refuses others. */
+#define RICOCHET_PLUGIN_ABI_VERSION 2u
 /** The one symbol the loader looks up (dlsym) in the shared library. */
 #define RICOCHET_PLUGIN_ENTRY_SYMBOL "ricochet_plugin_entry"
 /** Most bytes of a kernel name: 1 to 64 of A-Z a-z 0-9 '-' '_' '.', and not a name already taken. */
@@ -116,6 +125,17 @@ typedef struct ricochet_sweep_result {
     double t;            /**< with a hit: t_i in [0, 1], the fraction of the leg where it meets the wall */
     ricochet_vec2 point; /**< with a hit: B_i, the point where it meets the wall */
 } ricochet_sweep_result;
+
+/** What sweep_disc and sweep_disc_bumper answer for one leg of a disc against one obstacle (ABI version 2). */
+typedef struct ricochet_disc_result {
+    int32_t miss;         /**< RICOCHET_HIT, or a miss: RICOCHET_MISS (a RICOCHET_MISS_* code reads as RICOCHET_MISS:
+                               a disc's miss has no reason the oracle checks) */
+    double t;             /**< with a hit: t_i in [0, 1], the fraction of the leg where the disc first touches */
+    ricochet_vec2 point;  /**< with a hit: B_i, the disc's centre at that contact (finite) */
+    ricochet_vec2 normal; /**< with a hit: the contact normal, from the obstacle to the disc (the face's side the
+                               disc is on, B_i - P_k at a cap, B_i - C at a bumper): finite and non-zero, of any
+                               length (it is only a direction) */
+} ricochet_disc_result;
 
 /** One bounce of a frame step: the wall (its index in the frame's walls), the frame time and the point. */
 typedef struct ricochet_hit {
@@ -186,6 +206,36 @@ typedef struct ricochet_plugin {
     double speed_rel_bound;
     /** See speed_rel_bound. */
     double speed_abs_bound;
+
+    /* ABI version 2: discs. Everything above is version 1, unchanged. */
+
+    /** Optional: the leg bs -> bs + v of a disc of radius r against wall, its face and its two end caps (the
+     * points within r of the segment p0 -> p1); r > 0, or r = 0 for a point ball in a scene with bumpers (then the
+     * wall's segment itself). Fills out: RICOCHET_HIT with the earliest contact (t, the centre B_i, the normal
+     * from the wall to the disc), or RICOCHET_MISS. ricochet's conventions for discs (docs/scene-log.md, "Discs and
+     * bumpers"): a contact is an entry (the distance reaches r while decreasing; a tangent is no hit); a disc that
+     * starts in reach hits at t = 0 if it moves closer, else not; a zero-length wall is never hit (its caps
+     * included); a zero velocity sweeps nothing. With it, ricochet steps discs with this plug-in: its frame loop
+     * (the lecture's: every wall and bumper but the one just bounced off, the earliest t, ties to the lowest wall
+     * then the lowest bumper, the bounce about the returned normal at the returned B_i, the rest of the frame
+     * from B_i, at most RICOCHET_PLUGIN_MAX_BOUNCES bounces) traces every leg, so the checks judge each answer.
+     * Without it the plug-in's kernel steps point balls among walls only (discs and bumpers are refused). A
+     * whole-frame step (above) is for point balls only: discs always go through this frame loop. */
+    void (*sweep_disc)(void* context, ricochet_vec2 bs, ricochet_vec2 v, double r, const ricochet_wall* wall,
+                       ricochet_disc_result* out);
+    /** Optional (with sweep_disc): the same leg against a solid bumper, the circle (c, bumper->r): a contact
+     * where |B(t) - c| = r + bumper->r, entering; the normal from c to the disc. A bumper of radius 0 met by a
+     * point (r = 0) is never hit. Without it the kernel steps discs among walls only, and a scene with bumpers
+     * is refused. */
+    void (*sweep_disc_bumper)(void* context, ricochet_vec2 bs, ricochet_vec2 v, double r,
+                              const ricochet_circle* bumper, ricochet_disc_result* out);
+    /** Optional: the bounce of a disc, v' for v about the contact normal a sweep returned (as returned: not
+     * necessarily of unit length). NULL: robust's reflection, v - 2(v.n^)n^ with n^ = normal/|normal|. Held to
+     * the same `speed` bound as reflect. */
+    ricochet_vec2 (*reflect_disc)(void* context, ricochet_vec2 v, ricochet_vec2 normal);
+
+    /* Room to grow within version 2: the functions still to come (a ball meeting a ball) are appended here, and
+     * a plug-in built before them has a struct_size that ends before them, so it reads as not having them. */
 } ricochet_plugin;
 
 /** The entry the loader looks up: returns the plug-in's table, which must stay valid while the process

@@ -5,7 +5,10 @@
 // finds a kernel already registered.
 //
 // What ricochet supplies around a plug-in (plugin.h says it where its author reads):
-// - the functions it leaves NULL (reflect, the static tests) are the robust kernel's, exact decisions;
+// - the functions it leaves NULL (reflect, reflect_disc, the static tests) are the robust kernel's, exact decisions;
+// - with sweep_disc (plugin.h, ABI version 2) its discs are stepped by the lecture's disc frame loop
+//   (naive_disc_frame.hpp, plugin_disc.cpp) over every wall and bumper, each leg traced; without it, and for
+//   every version-1 plug-in, a scene with discs or bumpers is refused (sweep_disc_bumper adds bumpers);
 // - without a frame step, its frames are stepped by the lecture kernels' loop (naive_frame.hpp) over every
 //   wall of the scene (no broad phase: what the plug-in is asked never depends on the grid), its legs traced
 //   for the checks; with one, a trace says legs_traced = false and the reflections it reports;
@@ -18,6 +21,7 @@
 // steps a scene, as register_kernel asks.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -31,12 +35,15 @@ struct PluginInfo {
     std::string name;             ///< the kernel's name as it declares it (kernel_name of its id)
     std::filesystem::path path;   ///< the file, absolute, symbolic links resolved
     bool frame_step = false;      ///< it steps whole frames itself (plugin.h: step)
+    std::uint32_t abi_version = 0;  ///< its table's version: 1 (point balls) or 2
+    bool discs = false;           ///< it sweeps discs (plugin.h, version 2: sweep_disc)
+    bool bumpers = false;         ///< and bumpers (sweep_disc_bumper, with sweep_disc)
 };
 
 /// Loads the plug-in in file and registers its kernel; once per file: loading it again, by any path to it,
 /// returns the same id. Nothing, and *error (if given) says why, when the file is missing or not a loadable
-/// library (dlerror's words), has no ricochet_plugin_entry, gives another ABI version (which it gives and which
-/// this ricochet wants), a table too short, no sweep, a name that is malformed or taken, init fails, the registry
+/// library (dlerror's words), has no ricochet_plugin_entry, gives an ABI version other than 1 and 2 (which it gives
+/// and which this ricochet speaks), a table too short, no sweep, a name that is malformed or taken, init fails, the registry
 /// is full, or RICOCHET_PLUGIN_TIMEOUT (seconds per call into a plug-in before it counts as hung; 0: no limit;
 /// default k_default_plugin_timeout_s) is not a number from 0 to 86400. The first load installs the guard.
 std::optional<KernelId> load_plugin(const std::filesystem::path& file, std::string* error = nullptr);

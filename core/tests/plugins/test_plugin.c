@@ -14,11 +14,20 @@
  *   PLUGIN_CRASH         "test-crash": crashes in sweep on some inputs (below), else as PLUGIN_GOOD
  *   PLUGIN_HANG          "test-hang": never returns from sweep for a leg moving left, else as PLUGIN_GOOD
  *   PLUGIN_NO_REASON     "test-no-reason": misses without reasons (RICOCHET_MISS), and blind to walls from x = 7
+ *   PLUGIN_V1            "test-v1": PLUGIN_GOOD as a version-1 table (abi_version 1, struct_size ending before the
+ *                        disc functions), with a sweep_disc past its struct_size that must never be read, served
+ *                        only to a loader asking for version 1 (NULL for any other)
+ *   PLUGIN_DISC          "test-disc": version 2, PLUGIN_GOOD plus discs against walls and bumpers in double (the
+ *                        shifted line for the face, quadratics for the caps and bumpers, entries only)
+ *   PLUGIN_DISC_WALLS    "test-disc-walls": PLUGIN_DISC without sweep_disc_bumper (discs among walls only)
+ *   PLUGIN_DISC_BROKEN   "test-disc-broken": PLUGIN_DISC whose disc hits say t = 2 on legs moving left, and give a
+ *                        zero normal on legs moving down
  * PLUGIN_CRASH's inputs: a wall starting at x = -1001 (SIGSEGV, a write through a null pointer), -1002
  * (SIGABRT, abort()), -1003 (SIGFPE), -1004 (SIGILL), -1005 (SIGBUS), -1006 (a stack overflow, SIGSEGV on
  * the guard page); and any leg moving left and down from x < 0 (SIGSEGV), which generated cases reach. */
 #define _POSIX_C_SOURCE 200809L /* SIGBUS */
 #include <math.h>
+#include <stddef.h>
 #include <signal.h>
 #include <stdlib.h>
 
@@ -187,6 +196,82 @@ static void step(void* context, ricochet_frame* f) {
 }
 #endif
 
+#if defined(PLUGIN_DISC) || defined(PLUGIN_DISC_WALLS) || defined(PLUGIN_DISC_BROKEN) || defined(PLUGIN_V1)
+/* The entry into the circle (c, rho) of the leg bs -> bs + v: the smaller root of |f + v*t|^2 = rho^2, f = bs - c,
+ * while the distance decreases (f.v < 0); a start in reach hits at t = 0 if it moves closer. The normal B - c. */
+static int circle_entry(ricochet_vec2 bs, ricochet_vec2 v, ricochet_vec2 c, double rho, ricochet_disc_result* out) {
+    ricochet_vec2 f = sub(bs, c);
+    double a = dot(v, v), b = 2 * dot(f, v), cc = dot(f, f) - rho * rho, disc, t;
+    /* Degenerate: no radius, no motion, or moving away (or along) from c. */
+    if (!(rho > 0) || a == 0 || !(b < 0)) return 0;
+    if (cc <= 0) {
+        t = 0;
+    } else {
+        disc = b * b - 4 * a * cc;
+        if (!(disc > 0)) return 0; /* a tangent is no hit */
+        t = (-b - sqrt(disc)) / (2 * a);
+        if (!(t >= 0 && t <= 1)) return 0;
+    }
+    if (out->miss == RICOCHET_HIT && !(t < out->t)) return 0;
+    out->miss = RICOCHET_HIT;
+    out->t = t;
+    out->point.x = bs.x + v.x * t;
+    out->point.y = bs.y + v.y * t;
+    out->normal = sub(out->point, c);
+    return 1;
+}
+
+/* A disc of radius r against the wall's face (the line shifted by r toward the disc, between the ends) and caps. */
+static void sweep_disc(void* context, ricochet_vec2 bs, ricochet_vec2 v, double r, const ricochet_wall* w,
+                       ricochet_disc_result* out) {
+    ricochet_vec2 e = sub(w->p1, w->p0);
+    double len2 = dot(e, e), len, s0, side, dist, approach, t, u;
+    ricochet_vec2 n, b;
+    (void)context;
+    out->miss = RICOCHET_MISS;
+    /* Degenerate: a zero-length wall, or no motion. */
+    if (len2 == 0 || (v.x == 0 && v.y == 0)) return;
+    len = sqrt(len2);
+    n.x = e.y / len;
+    n.y = -e.x / len;
+    s0 = dot(n, sub(bs, w->p0));
+    /* Degenerate: the centre on the wall's line has no side, and no face normal. */
+    if (s0 != 0) {
+        side = s0 > 0 ? 1 : -1;
+        dist = side * s0;             /* the centre's distance from the line */
+        approach = -side * dot(n, v); /* how fast it closes in */
+        if (approach > 0) {
+            t = dist <= r ? 0 : (dist - r) / approach;
+            if (t <= 1) {
+                b.x = bs.x + v.x * t;
+                b.y = bs.y + v.y * t;
+                u = dot(sub(b, w->p0), e) / len2;
+                if (u >= 0 && u <= 1) {
+                    out->miss = RICOCHET_HIT;
+                    out->t = t;
+                    out->point = b;
+                    out->normal.x = side * n.x;
+                    out->normal.y = side * n.y;
+                }
+            }
+        }
+    }
+    circle_entry(bs, v, w->p0, r, out);
+    circle_entry(bs, v, w->p1, r, out);
+#if defined(PLUGIN_DISC_BROKEN)
+    if (out->miss == RICOCHET_HIT && v.x < 0) out->t = 2;
+    if (out->miss == RICOCHET_HIT && v.y < 0) out->normal.x = out->normal.y = 0;
+#endif
+}
+
+static void sweep_disc_bumper(void* context, ricochet_vec2 bs, ricochet_vec2 v, double r, const ricochet_circle* c,
+                              ricochet_disc_result* out) {
+    (void)context;
+    out->miss = RICOCHET_MISS;
+    circle_entry(bs, v, c->c, r + c->r, out);
+}
+#endif
+
 #if defined(PLUGIN_INIT_FAILS)
 static int32_t init(void** context) {
     (void)context;
@@ -239,6 +324,26 @@ RICOCHET_PLUGIN_EXPORT const ricochet_plugin* ricochet_plugin_entry(uint32_t abi
     table.name = "test-hang";
 #elif defined(PLUGIN_NO_REASON)
     table.name = "test-no-reason";
+#elif defined(PLUGIN_V1)
+    /* As a plug-in built against version 1 of the header sees its table; what lies past it is never read. */
+    if (abi_version != 1) return 0;
+    table.name = "test-v1";
+    table.abi_version = 1;
+    table.struct_size = offsetof(ricochet_plugin, sweep_disc);
+    table.sweep_disc = sweep_disc;
+    table.sweep_disc_bumper = sweep_disc_bumper;
+#elif defined(PLUGIN_DISC)
+    table.name = "test-disc";
+    table.sweep_disc = sweep_disc;
+    table.sweep_disc_bumper = sweep_disc_bumper;
+#elif defined(PLUGIN_DISC_WALLS)
+    table.name = "test-disc-walls";
+    table.sweep_disc = sweep_disc;
+    (void)sweep_disc_bumper;
+#elif defined(PLUGIN_DISC_BROKEN)
+    table.name = "test-disc-broken";
+    table.sweep_disc = sweep_disc;
+    table.sweep_disc_bumper = sweep_disc_bumper;
 #endif
     return &table;
 }

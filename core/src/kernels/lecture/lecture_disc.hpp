@@ -10,20 +10,18 @@
 //   bumper |B(t) − C|² = (R + r)², the same quadratic
 // The earliest t wins; ties: face, cap P0, cap P1 of one wall, the lowest wall, then bumpers by index. The
 // bounce reflects v about the unit contact normal, n̂ on a face, (B_i − P_k)/R at a cap, (B_i − C)/(R + r) at a
-// bumper: v′ = v − 2(v·n̂)n̂; the rest of the frame from B_i, at most k_max_bounces bounces. No tangent rule, no
-// start-inside rule, no clearance: what rounding does to t_i and B_i is what the harness is there to see.
+// bumper: v′ = v − 2(v·n̂)n̂; the rest of the frame from B_i, at most k_max_bounces bounces (the frame loop is
+// naive_disc_frame.hpp's, which a plug-in's discs share). No tangent rule, no start-inside rule, no clearance: what
+// rounding does to t_i and B_i is what the harness is there to see.
 #pragma once
 
 #include <cmath>
-#include <cstdint>
-#include <limits>
 #include <optional>
 #include <vector>
 
+#include "kernels/naive_disc_frame.hpp"
 #include "ricochet/kernel.hpp"
-#include "ricochet/limits.hpp"
 #include "ricochet/line.hpp"
-#include "ricochet/step_trace.hpp"
 #include "ricochet/vec2.hpp"
 
 namespace ricochet::disc {
@@ -33,14 +31,8 @@ template <class Real>
 FrameStatus step_lecture_disc(Ball& ball, const Obstacles& obstacles, std::vector<HitEvent>& hits,
                               StepScratch& scratch) {
     using V = Vec2T<Real>;
+    using Contact = detail::NaiveContact<Real>;
     const Real R = static_cast<Real>(ball.r);
-    V pos = vec_cast<Real>(ball.pos), vel = vec_cast<Real>(ball.vel);
-    Real rest = 1, now = 0;
-    // The obstacle just bounced off, skipped on the next leg as the point stepper skips its wall.
-    constexpr std::uint32_t k_none = std::numeric_limits<std::uint32_t>::max();
-    std::uint32_t last = k_none;
-    bool last_bumper = false;
-    FrameStatus status = FrameStatus::ok;
 
     // u/k, component by component.
     const auto over = [](V u, Real k) { return V{u.x / k, u.y / k}; };
@@ -76,91 +68,36 @@ FrameStatus step_lecture_disc(Ball& ball, const Obstacles& obstacles, std::vecto
         return ti;
     };
 
-    for (int bounce = 0;; ++bounce) {
-        const V d = vel * rest;
-        const Vec2 a = vec_cast<double>(pos);
-        const Vec2 b = vec_cast<double>(pos + d);
-        TracedLeg* traced = nullptr;
-        if (StepTrace* t = scratch.trace) {
-            const auto first = static_cast<std::uint32_t>(t->decisions.size());
-            const std::optional<std::uint32_t> skipped =
-                last == k_none || last_bumper ? std::nullopt : std::optional<std::uint32_t>(last);
-            traced = &t->legs.emplace_back(TracedLeg{a, b, false, 0, 0, std::nullopt, first, 0, skipped});
-            traced->vel = vec_cast<double>(vel);
-            if (last != k_none && last_bumper) traced->skipped_bumper = last;
+    // A wall: its face, then its caps; the decision traced is whether one of them became the leg's earliest so far.
+    const auto wall_contacts = [&](V pos, V d, const Wall& w, const auto& offer) {
+        const V p0 = vec_cast<Real>(w.p0), p1 = vec_cast<Real>(w.p1);
+        bool hit = false;
+        V n{};
+        if (const auto t = face_time(pos, d, p0, p1, n)) hit = offer(Contact{*t, pos + d * *t, n}) || hit;
+        // A point ball (R = 0, in a scene with bumpers) has no caps: the lecture's point sweep.
+        if (R > Real(0))
+            for (const V& pk : {p0, p1})
+                if (const auto t = circle_time(pos, d, pk, R)) {
+                    // (B_i − P_k)/R
+                    const V bi = pos + d * *t;
+                    hit = offer(Contact{*t, bi, over(bi - pk, R)}) || hit;
+                }
+        return hit ? Miss::none : Miss::no_reason;
+    };
+    const auto bumper_contacts = [&](V pos, V d, const Bumper& bumper, const auto& offer) {
+        const V c = vec_cast<Real>(bumper.c);
+        const Real rho = R + static_cast<Real>(bumper.r);
+        // A bumper of radius 0 met by a point is never hit (as a zero-length wall).
+        if (!(rho > Real(0))) return;
+        if (const auto t = circle_time(pos, d, c, rho)) {
+            // (B_i − C)/(R + r)
+            const V bi = pos + d * *t;
+            offer(Contact{*t, bi, over(bi - c, rho)});
         }
-        bool found = false;
-        Real best_t = 0;
-        std::uint32_t best = 0;
-        bool best_bumper = false;
-        V normal{};  // the unit contact normal of the best contact, at its B_i
-        const auto offer = [&](Real t, std::uint32_t i, bool bumper, V n) {
-            if (found && !(t < best_t)) return false;
-            found = true;
-            best_t = t;
-            best = i;
-            best_bumper = bumper;
-            normal = n;
-            return true;
-        };
-        for (std::uint32_t i = 0; i < obstacles.walls.size(); ++i) {
-            if (i == last && !last_bumper) continue;
-            const Wall& w = obstacles.walls[i];
-            const V p0 = vec_cast<Real>(w.p0), p1 = vec_cast<Real>(w.p1);
-            bool hit = false;
-            V n{};
-            if (const auto t = face_time(pos, d, p0, p1, n)) hit = offer(*t, i, false, n) || hit;
-            // A point ball (R = 0, in a scene with bumpers) has no caps: the lecture's point sweep.
-            if (R > Real(0))
-                for (const V& pk : {p0, p1})
-                    if (const auto t = circle_time(pos, d, pk, R)) {
-                        // (B_i − P_k)/R
-                        const V bi = pos + d * *t;
-                        hit = offer(*t, i, false, over(bi - pk, R)) || hit;
-                    }
-            if (traced != nullptr) {
-                scratch.trace->decisions.push_back({i, hit ? Miss::none : Miss::no_reason});
-                ++traced->decision_count;
-            }
-        }
-        for (std::uint32_t i = 0; i < obstacles.bumpers.size(); ++i) {
-            if (i == last && last_bumper) continue;
-            const Bumper& bumper = obstacles.bumpers[i];
-            const V c = vec_cast<Real>(bumper.c);
-            const Real rho = R + static_cast<Real>(bumper.r);
-            // A bumper of radius 0 met by a point is never hit (as a zero-length wall).
-            if (!(rho > Real(0))) continue;
-            if (const auto t = circle_time(pos, d, c, rho)) {
-                // (B_i − C)/(R + r)
-                const V bi = pos + d * *t;
-                offer(*t, i, true, over(bi - c, rho));
-            }
-        }
-        if (!found) {
-            pos = pos + d;
-            break;
-        }
-        if (traced != nullptr) {
-            (best_bumper ? traced->bumped : traced->hit) = best;
-            traced->hit_t = static_cast<double>(best_t);
-        }
-        if (bounce == k_max_bounces) {
-            status = FrameStatus::bounce_limit;
-            break;
-        }
-        if (scratch.trace != nullptr) ++scratch.trace->reflections;
-        const V bi = pos + d * best_t;
-        now = now + rest * best_t;
-        hits.push_back({best, static_cast<double>(now), vec_cast<double>(bi), best_bumper});
-        // v′ = v − 2(v·n̂)n̂, then the rest of the frame, (1 − t_i)·v′, from B_i.
-        vel = vel - normal * (Real(2) * dot(vel, normal));
-        pos = bi;
-        rest = rest * (Real(1) - best_t);
-        last = best;
-        last_bumper = best_bumper;
-    }
-    ball = {vec_cast<double>(pos), vec_cast<double>(vel)};
-    return status;
+    };
+    // v′ = v − 2(v·n̂)n̂, n̂ the unit contact normal.
+    const auto reflect = [](V v, V n) { return v - n * (Real(2) * dot(v, n)); };
+    return detail::step_naive_disc_frame<Real>(ball, obstacles, hits, scratch, wall_contacts, bumper_contacts, reflect);
 }
 
 }  // namespace ricochet::disc

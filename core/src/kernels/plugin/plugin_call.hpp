@@ -24,12 +24,15 @@ enum class PluginOp : std::uint8_t {
     point_in_rect,
     rects_overlap,
     step,
+    sweep_disc,         ///< ABI version 2
+    sweep_disc_bumper,  ///< ABI version 2
+    reflect_disc,       ///< ABI version 2
 };
 
 /// Most plug-ins a process loads (the registry's room past the four built-in kernels, kernel.hpp).
 inline constexpr std::size_t k_max_plugins = 12;
-/// Most numbers a call's report shows (rects_overlap's two rectangles).
-inline constexpr std::size_t k_max_call_args = 8;
+/// Most numbers a call's report shows (sweep_disc's leg, radius and wall).
+inline constexpr std::size_t k_max_call_args = 9;
 
 /// Names plug-in slot for the guard's reports (name empty while it is being loaded). Before any call into it.
 void guard_name_plugin(std::size_t slot, std::string_view name, std::string_view path);

@@ -127,6 +127,11 @@ OpText op_text(PluginOp op) {
         case PluginOp::point_in_rect: return {"its point_in_rect function", "p (%, %), rect % % % %"};
         case PluginOp::rects_overlap: return {"its rects_overlap function", "rect % % % %, rect % % % %"};
         case PluginOp::step: return {"its step function", "ball (%, %) moving (%, %) among # walls"};
+        case PluginOp::sweep_disc:
+            return {"its sweep_disc function", "bs (%, %), v (%, %), radius %, wall (%, %) -> (%, %)"};
+        case PluginOp::sweep_disc_bumper:
+            return {"its sweep_disc_bumper function", "bs (%, %), v (%, %), radius %, bumper (%, %) radius %"};
+        case PluginOp::reflect_disc: return {"its reflect_disc function", "v (%, %), normal (%, %)"};
     }
     return {"?", ""};
 }

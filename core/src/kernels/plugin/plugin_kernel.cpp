@@ -1,7 +1,7 @@
 // Plug-in kernels: KernelOps (plain function pointers, no context) for each plug-in slot, through a type per
 // slot whose functions call that slot's plug-in under the guard, converting to and from plugin.h's C types,
 // supplying the robust kernel's function where the plug-in has none, and rejecting answers plugin.h does not
-// allow.
+// allow. Its discs are plugin_disc.cpp's.
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -177,6 +177,12 @@ struct SlotKernel {
                                  std::vector<HitEvent>& hits, StepScratch& scratch, const WallIndex* /*index*/) {
         return detail::step_ball(S, ball, walls, hits, scratch);
     }
+    /// Discs and bumpers (plugin_disc.cpp); plugin_kernel_ops keeps it only for a plug-in that sweeps discs.
+    static FrameStatus step_disc(Ball& ball, BallMemory& /*memory*/, const Obstacles& obstacles,
+                                 std::vector<HitEvent>& hits, StepScratch& scratch) {
+        return step_plugin_disc(S, ball, obstacles, hits, scratch);
+    }
+    static constexpr bool k_steps_bumpers = true;
 };
 
 template <std::size_t... S>
@@ -201,6 +207,10 @@ KernelOps plugin_kernel_ops(std::size_t slot) {
     // The user's own code, held to ricochet's guarantees: a saved failure is a regression that fails replay
     // until it is fixed (no `expect failure`), unlike the lecture baselines' and the peers' documented ones.
     ops.failures_documented = false;
+    // Discs only with sweep_disc (plugin.h, ABI version 2), bumpers only with sweep_disc_bumper too: else the
+    // kernel refuses such scenes (unsupported_scene), as every version-1 plug-in's does.
+    if (pl.api.sweep_disc == nullptr) ops.step_disc = nullptr;
+    ops.steps_bumpers = ops.step_disc != nullptr && pl.api.sweep_disc_bumper != nullptr;
     return ops;
 }
 

@@ -54,8 +54,16 @@ bool well_formed_name(std::string_view name) {
     return true;
 }
 
-/// The bytes of ricochet_plugin an ABI-1 table must have: up to and including sweep, the required function.
+/// The bytes of ricochet_plugin a table must have, of either version: up to and including sweep, the required
+/// function.
 constexpr std::size_t k_required_bytes = offsetof(ricochet_plugin, sweep) + sizeof(ricochet_plugin::sweep);
+/// The most of ricochet_plugin a version-1 table can hold: everything before version 2's first field.
+constexpr std::size_t k_version_1_bytes = offsetof(ricochet_plugin, sweep_disc);
+/// The oldest ABI version this ricochet loads (RICOCHET_PLUGIN_ABI_VERSION is the newest).
+constexpr std::uint32_t k_oldest_abi = 1;
+
+/// True for a table version this ricochet loads: 1 (point balls) or 2 (discs too).
+bool spoken(std::uint32_t abi) { return abi >= k_oldest_abi && abi <= RICOCHET_PLUGIN_ABI_VERSION; }
 
 /// Calls every loaded plug-in's destroy when the process ends normally.
 void destroy_all() {
@@ -112,18 +120,22 @@ std::optional<KernelId> load_into(std::size_t slot, const std::filesystem::path&
         const PluginCall call(slot, PluginOp::entry);
         const auto entry = reinterpret_cast<ricochet_plugin_entry_fn>(symbol);
         const ricochet_plugin* table = entry(RICOCHET_PLUGIN_ABI_VERSION);
+        // A version-1 plug-in may serve only the version it was built for: ask it for that one too.
+        if (table == nullptr) table = entry(k_oldest_abi);
         if (table == nullptr) return fail(fmt::format("{}: {} returned no table", where, RICOCHET_PLUGIN_ENTRY_SYMBOL));
         abi = table->abi_version;
         size = table->struct_size;
-        if (abi == RICOCHET_PLUGIN_ABI_VERSION && size >= k_required_bytes) {
-            std::memcpy(&p.api, table, std::min<std::size_t>(size, sizeof(ricochet_plugin)));
+        if (spoken(abi) && size >= k_required_bytes) {
+            // A version-1 table ends before the disc functions, whatever struct_size it claims.
+            const std::size_t known = abi == 1 ? k_version_1_bytes : sizeof(ricochet_plugin);
+            std::memcpy(&p.api, table, std::min<std::size_t>(size, known));
             if (p.api.name != nullptr) name.assign(p.api.name, strnlen(p.api.name, RICOCHET_PLUGIN_MAX_NAME + 1));
         }
     }
-    if (abi != RICOCHET_PLUGIN_ABI_VERSION)
-        return fail(fmt::format("{}: its table is for plugin.h ABI version {}, this ricochet speaks version {} "
+    if (!spoken(abi))
+        return fail(fmt::format("{}: its table is for plugin.h ABI version {}, this ricochet speaks versions {} and {} "
                                 "(rebuild it against this ricochet's ricochet/plugin.h)",
-                                where, abi, RICOCHET_PLUGIN_ABI_VERSION));
+                                where, abi, k_oldest_abi, RICOCHET_PLUGIN_ABI_VERSION));
     if (size < k_required_bytes)
         return fail(fmt::format("{}: its table says struct_size {}, ABI version {} needs at least {} bytes (set it "
                                 "to sizeof(ricochet_plugin))",
@@ -149,7 +161,8 @@ std::optional<KernelId> load_into(std::size_t slot, const std::filesystem::path&
         }
         if (rc != 0) return fail(fmt::format("{}: its init function failed (returned {})", named, rc));
     }
-    p.info = {name, file, p.api.step != nullptr};
+    p.info = {name, file, p.api.step != nullptr, abi, p.api.sweep_disc != nullptr,
+              p.api.sweep_disc != nullptr && p.api.sweep_disc_bumper != nullptr};
     g_plugins[slot] = std::move(p);
     const auto id = register_kernel(plugin_kernel_ops(slot));
     if (!id) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "kernels/plugin/plugin_call.hpp"
 #include "ricochet/kernel.hpp"
@@ -25,5 +26,10 @@ LoadedPlugin& loaded_plugin(std::size_t slot);
 
 /// The registry entry of the plug-in in slot: its functions, and ricochet's where it has none.
 KernelOps plugin_kernel_ops(std::size_t slot);
+
+/// One frame of a disc (or a point ball among bumpers) with the plug-in in slot's sweep_disc, sweep_disc_bumper and
+/// reflect_disc (plugin_disc.cpp): its kernel's step_disc, for a plug-in that has sweep_disc.
+FrameStatus step_plugin_disc(std::size_t slot, Ball& ball, const Obstacles& obstacles, std::vector<HitEvent>& hits,
+                             StepScratch& scratch);
 
 }  // namespace ricochet::detail
