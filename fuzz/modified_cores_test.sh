@@ -13,12 +13,15 @@
 #   - `ricochet replay --plugin P --kernel robust LOG` passes it (the same log on a core without the bug).
 # Prints "reproduced N/N"; fails unless every log does both, and the static, sweep and scene targets and the
 # properties each found at least one failure.
-# Usage: modified_cores_test.sh RICOCHET_EXE FUZZ_BIN_DIR SOURCE_DIR PROPERTIES_EXE PLUGIN.so...
+# Usage: modified_cores_test.sh RICOCHET_EXE FUZZ_BIN_DIR SOURCE_DIR PROPERTIES_EXE [disc:]PLUGIN.so...
+#   (disc: a plug-in that steps discs, plugin.h version 2: the disc target and the disc properties run too)
 set -u
 exe=$(realpath -s "$1"); bins=$(realpath -s "$2"); src=$(realpath -s "$3"); props=$(realpath -s "$4")
 shift 4
 plugins=()
-for p in "$@"; do plugins+=("$(realpath -s "$p")"); done
+for p in "$@"; do
+  case $p in disc:*) plugins+=("disc:$(realpath -s "${p#disc:}")") ;; *) plugins+=("$(realpath -s "$p")") ;; esac
+done
 TMP="$(mktemp -d "${TMPDIR:-/tmp}/ricochet-modified.XXXXXX")" || exit 1
 trap 'rm -rf "$TMP"' EXIT
 trap 'exit 143' INT TERM
@@ -28,11 +31,14 @@ cd "$TMP" || exit 1  # libFuzzer writes nothing into the source tree, whatever i
 runs=3000
 fuzz_seeds="1 2"
 properties='*NoTunnelWalls*:*FrameOracle*:*NoEscapeClosedPolygon*:*StaticBoundary*:*SweepBoundary*:*HitAccuracy*'
+disc_properties='*DiscNoTunnelChains*:*BumperNoTunnel*:*DiscAccuracy*'
 declare -A found_by
 logs=()
-for p in "${plugins[@]}"; do
+for spec in "${plugins[@]}"; do
+  p=${spec#disc:} targets="static sweep scene" filter=$properties
+  [ "$spec" = "$p" ] || { targets="$targets disc"; filter="$filter:$disc_properties"; }
   name=$(basename "$p" .so)
-  for t in static sweep scene; do
+  for t in $targets; do
     [ -x "$bins/fuzz_$t" ] || { echo "FAIL: $bins/fuzz_$t is missing"; exit 1; }
     for s in $fuzz_seeds; do
       art="$TMP/art/$name-$t-$s/"; mkdir -p "$art" "$TMP/junk" "$TMP/logs/$name"
@@ -54,7 +60,7 @@ for p in "${plugins[@]}"; do
     echo "$name $t: ${found_by[$t]:-0} so far, at ${SECONDS} s"
   done
   d="$TMP/logs/$name/properties"; mkdir -p "$d"
-  RICOCHET_KERNEL="plugin:$p" RICOCHET_REPLAY_DIR="$d" RC_PARAMS="seed=1 max_success=300" GTEST_FILTER="$properties" \
+  RICOCHET_KERNEL="plugin:$p" RICOCHET_REPLAY_DIR="$d" RC_PARAMS="seed=1 max_success=300" GTEST_FILTER="$filter" \
     "$props" > "$TMP/$name-props.out" 2>&1
   n=0
   for log in "$d"/*.scene; do
@@ -84,10 +90,12 @@ for entry in "${logs[@]}"; do
   fi
   reproduced=$((reproduced + 1))
 done
-echo "found: static ${found_by[static]:-0}, sweep ${found_by[sweep]:-0}, scene ${found_by[scene]:-0}, properties ${found_by[properties]:-0}"
+echo "found: static ${found_by[static]:-0}, sweep ${found_by[sweep]:-0}, scene ${found_by[scene]:-0}, disc ${found_by[disc]:-0}, properties ${found_by[properties]:-0}"
 echo "reproduced $reproduced/$total, and each passes without its bug"
 [ "$total" -gt 0 ] && [ "$reproduced" = "$total" ] || exit 1
-for what in static sweep scene properties; do
+wanted="static sweep scene properties"
+case " ${plugins[*]}" in *" disc:"*) wanted="$wanted disc" ;; esac
+for what in $wanted; do
   [ "${found_by[$what]:-0}" -ge 1 ] || { echo "FAIL: $what found no failure in any modified core"; exit 1; }
 done
 echo PASS
