@@ -28,12 +28,14 @@
 
 #include "ricochet/kernel_id.hpp"
 
+struct ricochet_plugin;  // ricochet/plugin.h
+
 namespace ricochet {
 
 /// A loaded plug-in kernel.
 struct PluginInfo {
     std::string name;             ///< the kernel's name as it declares it (kernel_name of its id)
-    std::filesystem::path path;   ///< the file, absolute, symbolic links resolved
+    std::filesystem::path path;   ///< the file, absolute, symbolic links resolved; empty for a table linked in
     bool frame_step = false;      ///< it steps whole frames itself (plugin.h: step)
     std::uint32_t abi_version = 0;  ///< its table's version: 1 (point balls) or 2
     bool discs = false;           ///< it sweeps discs (plugin.h, version 2: sweep_disc)
@@ -47,6 +49,14 @@ struct PluginInfo {
 /// is full, or RICOCHET_PLUGIN_TIMEOUT (seconds per call into a plug-in before it counts as hung; 0: no limit;
 /// default k_default_plugin_timeout_s) is not a number from 0 to 86400. The first load installs the guard.
 std::optional<KernelId> load_plugin(const std::filesystem::path& file, std::string* error = nullptr);
+
+/// Registers the kernel of a plugin.h table linked into this program, without a shared library or dlopen: the
+/// user's own test binary (ricochet/properties.hpp, RICOCHET_TEST_KERNEL) or any program that steps scenes with its
+/// own collision code. The table is checked, its init run, its kernel registered and guarded exactly as a loaded
+/// plug-in's (load_plugin): the same messages, the same refusals, the same kernel, whose logs name it by the name
+/// it declares. table must outlive every use of the kernel (a static is fine); registering the same table again
+/// returns the same id. Nothing, and *error says why, where load_plugin would refuse the table.
+std::optional<KernelId> register_plugin(const ricochet_plugin& table, std::string* error = nullptr);
 
 /// The plug-in behind kernel k, or null if k is not a plug-in kernel.
 const PluginInfo* plugin_info(KernelId k);

@@ -75,6 +75,82 @@ void destroy_all() {
     }
 }
 
+/// Copies table (of the plug-in in slot, as its entry returned it) into p: as much of it as its version and
+/// struct_size say it has. Sets abi, size and name (empty when the table has none or its version is not spoken).
+void copy_table(std::size_t slot, const ricochet_plugin* table, LoadedPlugin& p, std::uint32_t& abi,
+                std::uint32_t& size, std::string& name) {
+    // The table is the plug-in's: a bad pointer there is its crash.
+    const PluginCall call(slot, PluginOp::entry);
+    abi = table->abi_version;
+    size = table->struct_size;
+    if (spoken(abi) && size >= k_required_bytes) {
+        // A version-1 table ends before the disc functions, whatever struct_size it claims.
+        const std::size_t known = abi == 1 ? k_version_1_bytes : sizeof(ricochet_plugin);
+        std::memcpy(&p.api, table, std::min<std::size_t>(size, known));
+        if (p.api.name != nullptr) name.assign(p.api.name, strnlen(p.api.name, RICOCHET_PLUGIN_MAX_NAME + 1));
+    }
+}
+
+/// The steps after the table is copied, the same for a loaded and a linked-in plug-in: its version, size, name and
+/// sweep checked, init run, the kernel registered into slot. where names it in messages ("plug-in PATH", ...),
+/// shown its place in reports ("PATH", "linked into this program").
+std::optional<KernelId> admit(std::size_t slot, LoadedPlugin p, std::uint32_t abi, std::uint32_t size,
+                              const std::string& name, const std::string& where, const std::string& shown_at,
+                              std::string* why) {
+    const auto fail = [&](std::string message) -> std::optional<KernelId> {
+        *why = std::move(message);
+        return std::nullopt;
+    };
+    if (!spoken(abi))
+        return fail(fmt::format("{}: its table is for plugin.h ABI version {}, this ricochet speaks versions {} and {} "
+                                "(rebuild it against this ricochet's ricochet/plugin.h)",
+                                where, abi, k_oldest_abi, RICOCHET_PLUGIN_ABI_VERSION));
+    if (size < k_required_bytes)
+        return fail(fmt::format("{}: its table says struct_size {}, ABI version {} needs at least {} bytes (set it "
+                                "to sizeof(ricochet_plugin))",
+                                where, size, abi, k_required_bytes));
+    if (p.api.name == nullptr) return fail(fmt::format("{}: its table has no name", where));
+    if (!well_formed_name(name))
+        return fail(fmt::format("{}: its kernel name '{}' is not 1 to {} of A-Z a-z 0-9 - _ .", where, shown(name),
+                                RICOCHET_PLUGIN_MAX_NAME));
+    if (const auto taken = parse_kernel(name)) {
+        const PluginInfo* other = plugin_info(*taken);
+        return fail(fmt::format("{}: its kernel name '{}' is taken, by {}", where, name,
+                                other == nullptr      ? std::string("a kernel of ricochet's")
+                                : other->path.empty() ? std::string("a kernel linked into this program")
+                                                      : fmt::format("the plug-in {}", other->path.string())));
+    }
+    const std::string named = fmt::format("plug-in kernel '{}' ({})", name, shown_at);
+    if (p.api.sweep == nullptr) return fail(fmt::format("{}: no sweep function (plugin.h: it is required)", named));
+    guard_name_plugin(slot, name, shown_at);
+    if (p.api.init != nullptr) {
+        std::int32_t rc = 0;
+        {
+            const PluginCall call(slot, PluginOp::init);
+            rc = p.api.init(&p.context);
+        }
+        if (rc != 0) return fail(fmt::format("{}: its init function failed (returned {})", named, rc));
+    }
+    p.info.name = name;
+    p.info.frame_step = p.api.step != nullptr;
+    p.info.abi_version = abi;
+    p.info.discs = p.api.sweep_disc != nullptr;
+    p.info.bumpers = p.api.sweep_disc != nullptr && p.api.sweep_disc_bumper != nullptr;
+    g_plugins[slot] = std::move(p);
+    const auto id = register_kernel(plugin_kernel_ops(slot));
+    if (!id) {
+        if (g_plugins[slot].api.destroy != nullptr) {
+            const PluginCall call(slot, PluginOp::destroy);
+            g_plugins[slot].api.destroy(g_plugins[slot].context);
+        }
+        g_plugins[slot] = LoadedPlugin{};
+        return fail(fmt::format("{}: no room in the kernel registry ({} kernels at most)", named, k_max_kernels));
+    }
+    g_plugins[slot].id = *id;
+    if (g_loaded++ == 0) std::atexit(destroy_all);
+    return id;
+}
+
 /// Loads file (absolute, canonical) into slot: the steps of load_plugin after its checks of the path.
 std::optional<KernelId> load_into(std::size_t slot, const std::filesystem::path& file, std::string* why) {
     const std::string where = fmt::format("plug-in {}", file.string());
@@ -113,68 +189,23 @@ std::optional<KernelId> load_into(std::size_t slot, const std::filesystem::path&
                                 RICOCHET_PLUGIN_ENTRY_SYMBOL));
     LoadedPlugin p;
     p.handle = handle;
+    p.info.path = file;
     std::uint32_t abi = 0, size = 0;
     std::string name;
+    const ricochet_plugin* table = nullptr;
     {
-        // The entry and its table are the plug-in's: a bad pointer there is its crash.
+        // The entry is the plug-in's: a crash in it is its crash.
         const PluginCall call(slot, PluginOp::entry);
         const auto entry = reinterpret_cast<ricochet_plugin_entry_fn>(symbol);
-        const ricochet_plugin* table = entry(RICOCHET_PLUGIN_ABI_VERSION);
+        table = entry(RICOCHET_PLUGIN_ABI_VERSION);
         // A version-1 plug-in may serve only the version it was built for: ask it for that one too.
         if (table == nullptr) table = entry(k_oldest_abi);
-        if (table == nullptr) return fail(fmt::format("{}: {} returned no table", where, RICOCHET_PLUGIN_ENTRY_SYMBOL));
-        abi = table->abi_version;
-        size = table->struct_size;
-        if (spoken(abi) && size >= k_required_bytes) {
-            // A version-1 table ends before the disc functions, whatever struct_size it claims.
-            const std::size_t known = abi == 1 ? k_version_1_bytes : sizeof(ricochet_plugin);
-            std::memcpy(&p.api, table, std::min<std::size_t>(size, known));
-            if (p.api.name != nullptr) name.assign(p.api.name, strnlen(p.api.name, RICOCHET_PLUGIN_MAX_NAME + 1));
-        }
     }
-    if (!spoken(abi))
-        return fail(fmt::format("{}: its table is for plugin.h ABI version {}, this ricochet speaks versions {} and {} "
-                                "(rebuild it against this ricochet's ricochet/plugin.h)",
-                                where, abi, k_oldest_abi, RICOCHET_PLUGIN_ABI_VERSION));
-    if (size < k_required_bytes)
-        return fail(fmt::format("{}: its table says struct_size {}, ABI version {} needs at least {} bytes (set it "
-                                "to sizeof(ricochet_plugin))",
-                                where, size, abi, k_required_bytes));
-    if (p.api.name == nullptr) return fail(fmt::format("{}: its table has no name", where));
-    if (!well_formed_name(name))
-        return fail(fmt::format("{}: its kernel name '{}' is not 1 to {} of A-Z a-z 0-9 - _ .", where, shown(name),
-                                RICOCHET_PLUGIN_MAX_NAME));
-    if (const auto taken = parse_kernel(name)) {
-        const PluginInfo* other = plugin_info(*taken);
-        return fail(fmt::format("{}: its kernel name '{}' is taken, by {}", where, name,
-                                other != nullptr ? fmt::format("the plug-in {}", other->path.string())
-                                                 : std::string("a kernel of ricochet's")));
-    }
-    const std::string named = fmt::format("plug-in kernel '{}' ({})", name, file.string());
-    if (p.api.sweep == nullptr) return fail(fmt::format("{}: no sweep function (plugin.h: it is required)", named));
-    guard_name_plugin(slot, name, file.string());
-    if (p.api.init != nullptr) {
-        std::int32_t rc = 0;
-        {
-            const PluginCall call(slot, PluginOp::init);
-            rc = p.api.init(&p.context);
-        }
-        if (rc != 0) return fail(fmt::format("{}: its init function failed (returned {})", named, rc));
-    }
-    p.info = {name, file, p.api.step != nullptr, abi, p.api.sweep_disc != nullptr,
-              p.api.sweep_disc != nullptr && p.api.sweep_disc_bumper != nullptr};
-    g_plugins[slot] = std::move(p);
-    const auto id = register_kernel(plugin_kernel_ops(slot));
-    if (!id) {
-        if (g_plugins[slot].api.destroy != nullptr) {
-            const PluginCall call(slot, PluginOp::destroy);
-            g_plugins[slot].api.destroy(g_plugins[slot].context);
-        }
-        g_plugins[slot] = LoadedPlugin{};
-        return fail(fmt::format("{}: no room in the kernel registry ({} kernels at most)", named, k_max_kernels));
-    }
-    g_plugins[slot].id = *id;
-    if (g_loaded++ == 0) std::atexit(destroy_all);
+    if (table == nullptr) return fail(fmt::format("{}: {} returned no table", where, RICOCHET_PLUGIN_ENTRY_SYMBOL));
+    copy_table(slot, table, p, abi, size, name);
+    std::string refused;
+    const auto id = admit(slot, std::move(p), abi, size, name, where, file.string(), &refused);
+    if (!id) return fail(std::move(refused));
     return id;
 }
 
@@ -208,6 +239,37 @@ std::optional<KernelId> load_plugin(const std::filesystem::path& file, std::stri
         return refuse(fmt::format("plug-in {}: {} plug-ins are loaded already, the most", canonical.string(), k_max_plugins));
     guard_start(*timeout);
     const auto id = load_into(g_loaded, canonical, &why);
+    if (!id) return refuse(why);
+    return id;
+}
+
+std::optional<KernelId> register_plugin(const ricochet_plugin& table, std::string* error) {
+    using namespace detail;
+    std::string why;
+    const auto refuse = [&](std::string message) -> std::optional<KernelId> {
+        if (error != nullptr) *error = std::move(message);
+        return std::nullopt;
+    };
+    const std::lock_guard lock(g_load_mutex);
+    for (std::size_t s = 0; s < g_loaded; ++s)
+        if (g_plugins[s].table == &table) return g_plugins[s].id;
+    const auto timeout = timeout_from_env(&why);
+    if (!timeout) return refuse(why);
+    if (g_loaded == k_max_plugins)
+        return refuse(fmt::format("kernel table at {}: {} plug-ins are registered already, the most",
+                                  static_cast<const void*>(&table), k_max_plugins));
+    guard_start(*timeout);
+    const std::size_t slot = g_loaded;
+    constexpr const char* k_linked_in = "linked into this program";
+    guard_name_plugin(slot, "", k_linked_in);
+    LoadedPlugin p;
+    p.table = &table;
+    std::uint32_t abi = 0, size = 0;
+    std::string name;
+    copy_table(slot, &table, p, abi, size, name);
+    const std::string where = name.empty() ? std::string("the kernel table linked into this program")
+                                           : fmt::format("the kernel table '{}' linked into this program", shown(name));
+    const auto id = admit(slot, std::move(p), abi, size, name, where, k_linked_in, &why);
     if (!id) return refuse(why);
     return id;
 }

@@ -16,7 +16,8 @@ namespace ricochet::detail {
 struct LoadedPlugin {
     ricochet_plugin api{};    ///< its table, every field past its struct_size absent (NULL, 0)
     void* context = nullptr;  ///< what its init set
-    void* handle = nullptr;   ///< dlopen's
+    void* handle = nullptr;   ///< dlopen's; null for a table linked in (register_plugin)
+    const ricochet_plugin* table = nullptr;  ///< the table register_plugin was given; null for a loaded plug-in
     PluginInfo info;
     KernelId id{};
 };
