@@ -5,11 +5,15 @@
 #   harness   P/include/ricochet/*.hpp             the harness's public headers (checks, truth, replay, ...)
 #             P/lib/libricochet_harness.a          the harness
 #             P/lib/cmake/ricochet/ricochetHarnessTargets.cmake
+#   properties P/include/ricochet/properties.hpp   the property suite in a user's own GoogleTest binary
+#             P/lib/ricochet/properties/...        its objects (an object library: its tests register themselves)
+#             P/lib/cmake/ricochet/ricochetPropertiesTargets.cmake
 #   command   P/bin/ricochet                       the command
 # (`--component core` installs the core alone). find_package(ricochet 0.2) gives ricochet::core with its include
 # folder, C++20 and the floating-point flags; ricochet::plugin, the include folder alone, for a plug-in kernel
 # (ricochet/plugin.h) in C or C++; and, where the harness was installed, ricochet::harness, which brings the core
-# along. find_package(ricochet 0.2 COMPONENTS harness) fails where it was not.
+# along. find_package(ricochet 0.2 COMPONENTS harness) fails where it was not; likewise COMPONENTS properties for
+# ricochet::properties (the suite, with the harness, RapidCheck and GoogleTest), installed where the build has it.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 set(_ricochet_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/ricochet)
@@ -25,6 +29,14 @@ install(TARGETS ricochet_harness EXPORT ricochetHarnessTargets COMPONENT harness
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/harness/include/ricochet DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         COMPONENT harness FILES_MATCHING PATTERN "*.hpp")
+if(TARGET ricochet_properties_suite)
+  install(TARGETS ricochet_properties_suite EXPORT ricochetPropertiesTargets COMPONENT properties
+          OBJECTS DESTINATION ${CMAKE_INSTALL_LIBDIR}/ricochet/properties)
+  install(FILES ${PROJECT_SOURCE_DIR}/properties/include/ricochet/properties.hpp
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ricochet COMPONENT properties)
+  install(EXPORT ricochetPropertiesTargets NAMESPACE ricochet:: DESTINATION ${_ricochet_cmake_dir}
+          COMPONENT properties)
+endif()
 install(TARGETS ricochet RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT command)
 
 # A static core's private xxhash is named in the export as $<LINK_ONLY:PkgConfig::XXHASH>: the config

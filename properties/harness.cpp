@@ -33,7 +33,6 @@
 #include "ricochet/plugin_loader.hpp"
 #include "ricochet/replay.hpp"
 #include "ricochet/scene_log.hpp"
-#include "ricochet_peers/peers.hpp"
 
 namespace ricochet {
 
@@ -143,9 +142,10 @@ public:
     void onTestFinished(const rc::detail::TestMetadata&, const rc::detail::TestResult&) override {}
 };
 
-/// The kernel as RICOCHET_KERNEL spells it: its name, or plugin:PATH for a plug-in.
+/// The kernel as RICOCHET_KERNEL spells it: its name (a table linked in, too), or plugin:PATH for a loaded plug-in.
 std::string kernel_spec(KernelId k) {
-    if (const PluginInfo* info = plugin_info(k)) return fmt::format("plugin:{}", info->path.string());
+    if (const PluginInfo* info = plugin_info(k); info != nullptr && !info->path.empty())
+        return fmt::format("plugin:{}", info->path.string());
     return std::string(kernel_name(k));
 }
 
@@ -204,11 +204,13 @@ std::optional<Failure> judge(const Property& p, KernelId k, const Scene& s) {
 /// kernel k. Returns how many it replayed.
 int replay_saved(const Property& p, KernelId k) {
     std::vector<std::filesystem::path> logs;
-    for (const std::filesystem::path& dir : {replay_dir(), save_dir(k)}) {
+    const std::filesystem::path dirs[] = {replay_dir(), save_dir(k)};
+    for (const std::filesystem::path& dir : dirs) {
         std::error_code ec;
         if (!std::filesystem::is_directory(dir, ec)) continue;
-        // The same folder twice (save_dir(k) is replay_dir() for a built-in kernel) is listed once.
-        if (dir != replay_dir() && std::filesystem::equivalent(dir, replay_dir(), ec)) continue;
+        // The same folder twice (save_dir(k) is replay_dir() for a built-in kernel, and for every kernel of a
+        // runner without a corpus of its own) is listed once.
+        if (&dir == &dirs[1] && (dir == dirs[0] || std::filesystem::equivalent(dir, dirs[0], ec))) continue;
         std::vector<std::filesystem::path> found;
         for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
             if (entry.path().extension() == ".scene") found.push_back(entry.path());
@@ -292,36 +294,6 @@ std::string save_failure(const Property& p, KernelId k, std::uint64_t seed, cons
 
 }  // namespace
 
-std::vector<KernelId> kernels_under_test() {
-    // The peers join the registry before RICOCHET_KERNEL is read (the suites are instantiated from here).
-    peers::register_peer_kernels();
-    const char* env = std::getenv("RICOCHET_KERNEL");
-    if (env == nullptr || *env == '\0') return {KernelId::robust, KernelId::exact};
-    std::vector<KernelId> out;
-    std::string_view rest = env;
-    while (!rest.empty()) {
-        const auto comma = rest.find(',');
-        const std::string_view name = rest.substr(0, comma);
-        if (name == "all") {
-            out.assign(k_all_kernels.begin(), k_all_kernels.end());
-        } else if (std::string error; const auto k = resolve_kernel(name, &error)) {
-            out.push_back(*k);
-        } else {
-            // A name or plugin:PATH (kernel_spec.hpp), or all.
-            fmt::print(stderr, "RICOCHET_KERNEL: error: {}; all names the built-in kernels\n", error);
-            std::exit(2);
-        }
-        rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
-    }
-    return out;
-}
-
-std::filesystem::path replay_dir() {
-    const char* env = std::getenv("RICOCHET_REPLAY_DIR");
-    if (env != nullptr && *env != '\0') return env;
-    return RICOCHET_DEFAULT_REPLAY_DIR;
-}
-
 std::filesystem::path save_dir(KernelId k) {
     const char* env = std::getenv("RICOCHET_REPLAY_DIR");
     if (env != nullptr && *env != '\0') return env;
@@ -372,7 +344,7 @@ std::string kernel_param_name(const ::testing::TestParamInfo<KernelId>& info) {
 
 void run_property(const Property& p, KernelId k) {
     // Saved logs are read below (replayed first, read back after saving): they may name a peer kernel.
-    peers::register_peer_kernels();
+    register_runner_kernels();
     const auto start = std::chrono::steady_clock::now();
     const int replayed = replay_saved(p, k);
 

@@ -24,10 +24,23 @@ void showValue(const Scene& scene, std::ostream& os);
 
 namespace ricochet::props {
 
-/// The kernels RICOCHET_KERNEL names (one name, or several separated by commas); robust and exact if unset.
+/// The kernels RICOCHET_KERNEL names (one name, or several separated by commas); if unset, the kernels put under
+/// test with RICOCHET_TEST_KERNEL (ricochet/properties.hpp), or robust and exact where there are none (kernels.cpp).
 std::vector<KernelId> kernels_under_test();
 
-/// The folder saved logs are replayed from: RICOCHET_REPLAY_DIR, else the source tree's replays/ (the corpus).
+/// What the program running the properties adds (set before main, read after): ricochet's own runner
+/// (runner/in_tree.cpp) replays and saves into the source tree's corpus and registers the peers; a user's test
+/// binary has neither.
+struct RunnerDefaults {
+    std::filesystem::path replay_dir;      ///< replay_dir() without RICOCHET_REPLAY_DIR; empty: found/ here
+    void (*register_kernels)() = nullptr;  ///< registers kernels saved logs may name (the peers)
+};
+void set_runner_defaults(RunnerDefaults defaults);
+/// Runs the runner's register_kernels, if any (idempotent, as register_peer_kernels is).
+void register_runner_kernels();
+
+/// The folder saved logs are replayed from: RICOCHET_REPLAY_DIR, else the runner's (ricochet's runner: the source
+/// tree's replays/, the corpus), else found/ in the current folder.
 std::filesystem::path replay_dir();
 
 /// The folder kernel k's failures (and a plug-in's kept cases) are saved into: RICOCHET_REPLAY_DIR; else, for a
