@@ -3,12 +3,20 @@
 // ricochet/properties.hpp (RICOCHET_TEST_KERNEL).
 #include <gtest/gtest.h>
 
+#include <csignal>
+
+#include <filesystem>
 #include <string>
+
+#include <fmt/format.h>
+#include <unistd.h>
 
 #include "ricochet/checks.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/plugin.h"
+#include "ricochet/plugin_guard.hpp"
 #include "ricochet/plugin_loader.hpp"
+#include "ricochet/sweep.hpp"
 
 namespace ricochet {
 namespace {
@@ -103,6 +111,31 @@ TEST(PluginLinked, ItsKernelIsJudgedByTheChecks) {
     ASSERT_TRUE(run.failure);
     EXPECT_EQ(run.failure->str(),
               "oracle broke at frame 1 ball 0: leg 0 ((0, 0) -> (10, 0)) against wall 0: the kernel says miss, exactly hit");
+}
+
+/// A sweep that crashes, as a null pointer in game code does.
+void crashing_sweep(void*, ricochet_vec2, ricochet_vec2, const ricochet_wall*, ricochet_sweep_result*) {
+    ::raise(SIGSEGV);
+}
+
+TEST(PluginLinkedDeathTest, ACrashIsReportedAndTheCaseKeptToRunAgain) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    const std::filesystem::path keep =
+        std::filesystem::temp_directory_path() / fmt::format("ricochet-linked-{}", ::getpid()) / "case.scene";
+    EXPECT_EXIT(
+        {
+            static ricochet_plugin table = table_named("linked-crash");
+            table.sweep = crashing_sweep;
+            const auto k = register_plugin(table);
+            stage_plugin_input({"running a test of mine", "ricochet 1\nframes 1\n", keep});
+            sweep(*k, {0, 0}, {10, 0}, Wall{{5, -5}, {5, 5}});
+        },
+        testing::ExitedWithCode(k_plugin_fault_exit),
+        "plug-in kernel 'linked-crash' \\(linked into this program\\) crashed: SIGSEGV in its sweep function, "
+        "called with bs \\(0, 0\\), v \\(10, 0\\), wall \\(5, -5\\) -> \\(5, 5\\).*"
+        "the scene is kept as .*case.scene; replay it: run this program again \\(it replays its saved logs first\\)");
+    std::error_code ec;
+    std::filesystem::remove_all(keep.parent_path(), ec);
 }
 
 }  // namespace

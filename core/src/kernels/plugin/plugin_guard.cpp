@@ -300,10 +300,15 @@ void report(Fault fault, int sig, const CallMark& mark, std::string_view what) {
     if (kept) {
         note.add(before ? "ricochet: the same scene was kept before as " : "ricochet: the scene is kept as ");
         note.add(stage->keep);
-        note.add("; replay it: ricochet replay --plugin ");
-        note.add(id.path.data());
-        note.put(' ');
-        note.add(stage->keep);
+        // A loaded plug-in's path is absolute; a table linked into the program (register_plugin) has none.
+        if (id.path[0] == '/') {
+            note.add("; replay it: ricochet replay --plugin ");
+            note.add(id.path.data());
+            note.put(' ');
+            note.add(stage->keep);
+        } else {
+            note.add("; replay it: run this program again (it replays its saved logs first)");
+        }
     } else {
         note.add("ricochet: could not keep the scene as ");
         note.add(stage->keep);
