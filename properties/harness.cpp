@@ -38,6 +38,8 @@ namespace ricochet {
 
 void showValue(const Scene& scene, std::ostream& os) { os << "\n" << write_scene_log(scene); }
 
+void PrintTo(KernelId k, std::ostream* os) { *os << kernel_name(k); }
+
 }  // namespace ricochet
 
 namespace ricochet::props {

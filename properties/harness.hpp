@@ -20,6 +20,8 @@
 namespace ricochet {
 /// Shows a Scene in RapidCheck's counterexample as the scene log it would be saved as.
 void showValue(const Scene& scene, std::ostream& os);
+/// Shows a kernel in GoogleTest's messages by its name ("GetParam() = my-kernel", not its byte).
+void PrintTo(KernelId k, std::ostream* os);
 }  // namespace ricochet
 
 namespace ricochet::props {
