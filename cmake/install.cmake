@@ -8,6 +8,7 @@
 #   properties P/include/ricochet/properties.hpp   the property suite in a user's own GoogleTest binary
 #             P/lib/ricochet/properties/...        its objects (an object library: its tests register themselves)
 #             P/lib/cmake/ricochet/ricochetPropertiesTargets.cmake
+#             P/share/doc/ricochet/examples/gtest-kernel/   the example a user starts from
 #   command   P/bin/ricochet                       the command
 # (`--component core` installs the core alone). find_package(ricochet 0.2) gives ricochet::core with its include
 # folder, C++20 and the floating-point flags; ricochet::plugin, the include folder alone, for a plug-in kernel
@@ -36,6 +37,9 @@ if(TARGET ricochet_properties_suite)
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ricochet COMPONENT properties)
   install(EXPORT ricochetPropertiesTargets NAMESPACE ricochet:: DESTINATION ${_ricochet_cmake_dir}
           COMPONENT properties)
+  # The example a user starts from (docs/testing-your-code.md), without ricochet's own test of it.
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples/gtest-kernel DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples
+          COMPONENT properties PATTERN "*_test.sh" EXCLUDE)
 endif()
 install(TARGETS ricochet RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT command)
 
