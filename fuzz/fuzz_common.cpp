@@ -211,8 +211,33 @@ void stage_plugin_case(std::string_view target, const Scene& scene, std::span<co
     stage_plugin_input({fmt::format("running fuzz target {}", target), write_scene_log(log), out});
 }
 
-void check_scene(std::string_view target, const Scene& scene, std::span<const Check> checks,
+/// The domain of RICOCHET_DOMAIN (domain.hpp), read once; the full domain if unset. One that does not read ends
+/// the worker with status 2 (the campaign checks --domain before it starts any).
+const Domain& domain_under_test() {
+    static const Domain d = [] {
+        const char* env = std::getenv("RICOCHET_DOMAIN");
+        if (env == nullptr) return Domain{};
+        std::string error;
+        const auto parsed = parse_domain_spec(env, &error);
+        if (!parsed) {
+            fmt::print(stderr, "ricochet fuzz: error: RICOCHET_DOMAIN: {}\n", error);
+            std::exit(2);
+        }
+        return *parsed;
+    }();
+    return d;
+}
+
+void check_scene(std::string_view target, const Scene& decoded, std::span<const Check> checks,
                  std::span<const std::uint8_t> input) {
+    // The user's world: the decoded scene brought into it, or the input skipped where it cannot be.
+    Scene fitted;
+    const Domain& domain = domain_under_test();
+    if (!domain.full()) {
+        fitted = decoded;
+        if (!fit_to_domain(fitted, domain)) return;
+    }
+    const Scene& scene = domain.full() ? decoded : fitted;
     CheckOptions options;
     options.keep_events = false;
     const std::vector<Check> asked = checks_for(input, checks);

@@ -160,9 +160,11 @@ std::string reproduce_command(KernelId k, const rc::detail::TestParams& params) 
     const char* dir = std::getenv("RICOCHET_REPLAY_DIR");
     // The shrink bound too: a bounded run saves the case it stopped at, which an unbounded one shrinks further.
     const std::optional<long> tries = shrink_tries_limit();
-    return fmt::format("RICOCHET_KERNEL={}{}{} RC_PARAMS=\"seed={} max_success={}{}\" {} --gtest_filter='{}.{}'",
+    const char* domain = std::getenv("RICOCHET_DOMAIN");
+    return fmt::format("RICOCHET_KERNEL={}{}{}{} RC_PARAMS=\"seed={} max_success={}{}\" {} --gtest_filter='{}.{}'",
                        kernel_spec(k),
                        dir != nullptr && *dir != '\0' ? fmt::format(" RICOCHET_REPLAY_DIR={}", dir) : std::string(),
+                       domain != nullptr ? fmt::format(" RICOCHET_DOMAIN='{}'", domain) : std::string(),
                        tries ? fmt::format(" RICOCHET_SHRINK_TRIES={}", *tries) : std::string(),
                        params.seed, params.maxSuccess, params.disableShrinking ? " noshrink=1" : "",
                        ec ? std::string("ricochet_properties") : self.string(),
@@ -203,8 +205,8 @@ std::optional<Failure> judge(const Property& p, KernelId k, const Scene& s) {
 }
 
 /// Replays every saved log in replay_dir(), and in save_dir(k) when that is another folder, that names p, under
-/// kernel k. Returns how many it replayed.
-int replay_saved(const Property& p, KernelId k) {
+/// kernel k, in domain (a log of its own domain in that one). Returns how many it replayed.
+int replay_saved(const Property& p, KernelId k, const Domain& domain) {
     std::vector<std::filesystem::path> logs;
     const std::filesystem::path dirs[] = {replay_dir(), save_dir(k)};
     for (const std::filesystem::path& dir : dirs) {
@@ -229,6 +231,16 @@ int replay_saved(const Property& p, KernelId k) {
         }
         Scene s = std::get<Scene>(std::move(parsed));
         if (!names_property(s, p.name)) continue;
+        // A log saved without a domain is judged in the domain under test, if it lies inside it: a case outside the
+        // user's world is not one their kernel promises. A log with its own domain is judged in that.
+        if (s.domain.full() && !domain.full()) {
+            if (const auto why = outside_domain(s, domain)) {
+                fmt::print("note: skipping {}: outside the domain under test ({}): {}\n", path.string(),
+                           domain_spec(domain), *why);
+                continue;
+            }
+            s.domain = domain;
+        }
         ++replayed;
         // The log's case is replayed against the kernel under test: a case that once broke some kernel
         // stays a regression test for every kernel the property is claimed for.
@@ -348,7 +360,10 @@ void run_property(const Property& p, KernelId k) {
     // Saved logs are read below (replayed first, read back after saving): they may name a peer kernel.
     register_runner_kernels();
     const auto start = std::chrono::steady_clock::now();
-    const int replayed = replay_saved(p, k);
+    // The user's world (domain.hpp): saved logs are judged in it, and each drawn scene is brought into it, or
+    // discarded where it cannot be.
+    const Domain domain = domain_under_test(k);
+    const int replayed = replay_saved(p, k, domain);
 
     pin_rapidcheck_seed();
     rc::detail::TestParams params = rc::detail::configuration().testParams;
@@ -379,6 +394,7 @@ void run_property(const Property& p, KernelId k) {
     });
     const auto property = [&] {
         Scene s = *gen;
+        if (!domain.full() && !fit_to_domain(s, domain)) RC_DISCARD("outside the domain");
         if (last && shrink_limit) {
             // Shrinking. Past the bound every candidate passes unjudged but the case RapidCheck holds (it runs
             // that one again at the end), so the shrinker stops at the smallest failure found so far.

@@ -30,6 +30,11 @@ namespace ricochet::props {
 /// test with RICOCHET_TEST_KERNEL (ricochet/properties.hpp), or robust and exact where there are none (kernels.cpp).
 std::vector<KernelId> kernels_under_test();
 
+/// The domain kernel k's properties draw from and judge in: RICOCHET_DOMAIN if set (for every kernel), else the
+/// one its RICOCHET_TEST_KERNEL_IN line gives, else the full domain. A RICOCHET_DOMAIN that does not read ends the
+/// program with status 2.
+Domain domain_under_test(KernelId k);
+
 /// What the program running the properties adds (set before main, read after): ricochet's own runner
 /// (runner/in_tree.cpp) replays and saves into the source tree's corpus and registers the peers; a user's test
 /// binary has neither.

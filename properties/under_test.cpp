@@ -1,8 +1,10 @@
 // What the properties run against and where their logs live, as the program running them sets it
 // (harness.hpp): the kernels under test (RICOCHET_KERNEL, else the tables of RICOCHET_TEST_KERNEL, else robust
-// and exact) and the runner's defaults (ricochet's own runner: the corpus and the peers).
+// and exact), their domains (RICOCHET_DOMAIN, else RICOCHET_TEST_KERNEL_IN's) and the runner's defaults (ricochet's own runner: the corpus and the peers).
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
+#include <utility>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,9 +26,31 @@ RunnerDefaults& runner_defaults() {
     return defaults;
 }
 
-std::vector<const ricochet_plugin*>& pending_tables() {
-    static std::vector<const ricochet_plugin*> tables;
+/// A table put under test and the domain its line gives.
+struct Pending {
+    const ricochet_plugin* table;
+    std::string domain;
+};
+std::vector<Pending>& pending_tables() {
+    static std::vector<Pending> tables;
     return tables;
+}
+
+/// spec read as a domain, or the program ends with status 2 naming where it came from.
+Domain read_domain(std::string_view spec, std::string_view from) {
+    std::string error;
+    const auto d = parse_domain_spec(spec, &error);
+    if (!d) {
+        fmt::print(stderr, "{}: error: {}\n", from, error);
+        std::exit(2);
+    }
+    return *d;
+}
+
+/// The domains of the tables under test, by kernel (filled with test_kernels()).
+std::vector<std::pair<KernelId, Domain>>& test_domains() {
+    static std::vector<std::pair<KernelId, Domain>> domains;
+    return domains;
 }
 
 /// The kernels of the tables put under test, registered on the first call (after main has begun: the
@@ -34,14 +58,15 @@ std::vector<const ricochet_plugin*>& pending_tables() {
 const std::vector<KernelId>& test_kernels() {
     static const std::vector<KernelId> kernels = [] {
         std::vector<KernelId> out;
-        for (const ricochet_plugin* table : pending_tables()) {
+        for (const Pending& p : pending_tables()) {
             std::string error;
-            const auto k = register_plugin(*table, &error);
+            const auto k = register_plugin(*p.table, &error);
             if (!k) {
                 fmt::print(stderr, "RICOCHET_TEST_KERNEL: error: {}\n", error);
                 std::exit(2);
             }
             out.push_back(*k);
+            test_domains().emplace_back(*k, read_domain(p.domain, fmt::format("RICOCHET_TEST_KERNEL_IN({})", kernel_name(*k))));
         }
         return out;
     }();
@@ -50,9 +75,22 @@ const std::vector<KernelId>& test_kernels() {
 
 }  // namespace
 
-bool test_kernel(const ricochet_plugin& table) {
-    pending_tables().push_back(&table);
+bool test_kernel(const ricochet_plugin& table, const char* domain) {
+    pending_tables().push_back({&table, domain != nullptr ? domain : ""});
     return true;
+}
+
+Domain domain_under_test(KernelId k) {
+    static const std::optional<Domain> from_env = []() -> std::optional<Domain> {
+        const char* env = std::getenv("RICOCHET_DOMAIN");
+        if (env == nullptr) return std::nullopt;
+        return read_domain(env, "RICOCHET_DOMAIN");
+    }();
+    if (from_env) return *from_env;
+    (void)test_kernels();
+    for (const auto& [kernel, domain] : test_domains())
+        if (kernel == k) return domain;
+    return {};
 }
 
 void set_runner_defaults(RunnerDefaults defaults) { runner_defaults() = std::move(defaults); }

@@ -184,6 +184,10 @@ case "$case" in
                      has out "replay      skipped (no scene logs in $dir/new yet)"
                      run 2 check --replay-dir "$dir/none/new" --no-properties --fuzz-runs 0
                      first_line err "ricochet check: error: cannot make the replay folder $dir/none/new: No such file or directory" ;;
+  fuzz-bad-domain)   # A domain that does not read is refused before any worker starts, saying which item.
+                     run 2 fuzz --domain coordinates=1e6,speed=0 --runs 1 --cache-dir "$dir/cache"
+                     first_line err "ricochet fuzz: error: --domain: 'speed' needs a number above 0 and at most 2^256: speed=0"
+                     [ ! -e "$dir/cache" ] || fail "the cache was made" ;;
   replay-empty-folder) mkdir "$dir/empty"; run 2 replay "$dir/empty"
                      has err "ricochet: error: no scene logs (*.scene) under $dir/empty"; has out "0 passed, 0 failed" ;;
   replay-empty-hashes) mkdir "$dir/empty"; run 2 replay --hashes "$dir/empty"

@@ -33,10 +33,12 @@ while read -r c; do
   cut -d'|' -f1 "$dir/forms" | cut -d' ' -f1 | grep -qxF "$c" || fail "command '$c' (ricochet help) has no row in docs/cli.md's table"
 done <"$dir/commands"
 
-# Where a test may use a flag: the test scripts and the CMake files that add tests, read once.
+# Where a test may use a flag: the test scripts and the CMake files that add tests, read once, and the guide whose
+# every command CTest package/testing_guide runs (examples/gtest-kernel/guide_test.sh).
 find "$src/cli" "$src/bench" "$src/fuzz" "$src/core" "$src/harness" "$src/peers" "$src/app" "$src/properties" \
   "$src/replays" "$src/examples" \
   \( -name '*test.sh' -o -name CMakeLists.txt \) ! -name readme_table_test.sh -exec cat {} + >"$dir/tests" 2>/dev/null
+cat "$src/docs/testing-your-code.md" >>"$dir/tests"
 
 while IFS='|' read -r cmd flags; do
   # A build without benchmarks (RICOCHET_BENCH=OFF) has a `bench` that only says so.

@@ -58,6 +58,10 @@ grep -lx 'ball 0 0 0 1e-323' "$home"/mygame/found/BounceSpeed-*.scene >/dev/null
   fail "no BounceSpeed log of a ball moving (0, 1e-323), as the guide says"
 grep -q '^<svg' "$home/bounce.svg" || fail "no SVG drawn"
 ls "$home/mygame/found-fuzz/"*.scene >/dev/null 2>&1 || fail "the fuzz campaign saved no log"
+for f in "$home/mygame/found-fuzz/"*.scene; do
+  grep -qx 'domain coordinates 1000000' "$f" && grep -qx 'domain no-subnormals' "$f" && grep -qx 'check boundary' "$f" ||
+    { cat "$f"; fail "$f is not the boundary failure in the domain the guide shows"; }
+done
 for report in ctest-junit.xml replay-junit.xml; do
   grep -q '<failure' "$home/$report" || fail "$report has no failing test case"
 done

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "ricochet/domain.hpp"
 #include "ricochet_fuzz/campaign.hpp"
 
 namespace ricochet::fuzz {
@@ -41,6 +42,13 @@ void register_fuzz(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("fuzz", "run a libFuzzer campaign; failures become scene logs");
     sub->add_option("--target", opt->targets, "target(s): parser, static, sweep, scene, disc (default: all built; disc only for a kernel that steps discs)");
     sub->add_option("--kernel", opt->kernel, "kernel under test: a kernel's name, or plugin:PATH (ricochet/plugin.h; default robust)");
+    auto domain = std::make_shared<std::string>();
+    CLI::Option* domain_opt =
+        sub->add_option("--domain", *domain,
+                        "the kernel's world: inputs are brought into it or skipped, waived checks are not run, and logs "
+                        "state it (e.g. coordinates=1e6,no-subnormals,waive=touching; docs/scene-log.md \"Domain\"; "
+                        "default $RICOCHET_DOMAIN, else the whole range)")
+            ->type_name("SPEC");
     CLI::Option* time = sub->add_option("--time", opt->time,
                                         "seconds the whole command takes, fuzzing then converting failures and merging "
                                         "(default 60; 1 to 604800, a week)")
@@ -89,8 +97,17 @@ void register_fuzz(CLI::App& app) {
         if (rc != 0) throw CLI::RuntimeError(rc);
     });
 
-    sub->callback([opt, convert, time, runs] {
+    sub->callback([opt, convert, time, runs, domain, domain_opt] {
         if (convert->parsed()) return;
+        // The workers and every process the campaign runs read the domain from RICOCHET_DOMAIN, inherited.
+        if (domain_opt->count() > 0) {
+            std::string error;
+            if (!parse_domain_spec(*domain, &error)) {
+                fmt::print(stderr, "ricochet fuzz: error: --domain: {}\n", error);
+                throw CLI::RuntimeError(2);
+            }
+            ::setenv("RICOCHET_DOMAIN", domain->c_str(), 1);
+        }
         // A campaign is by count or by clock, never both: a count with --seed repeats, a clock does not.
         if (time->count() > 0 && runs->count() > 0) {
             fmt::print(stderr, "ricochet fuzz: error: --runs and --time exclude each other: --runs N runs N inputs per worker "

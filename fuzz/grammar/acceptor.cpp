@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "lexical.hpp"
+#include "wall_length.hpp"
 
 namespace ricochet_grammar {
 namespace {
@@ -127,36 +129,49 @@ private:
             arity(t, 1);
             frames_ = integer(t[1]);
             if (frames_ > k_frame_limit) reject("frames over the limit");
+        } else if (d == "domain") {
+            domain(t);
         } else if (d == "wall") {
             entity(walls_, "walls");
             numbers(t, 4);
+            for (std::size_t i = 1; i <= 4; ++i) in_domain(t[i], false);
+            if (wall_length_ && !wall_at_least(number(t[1]), number(t[2]), number(t[3]), number(t[4]), *wall_length_))
+                reject("a wall shorter than the domain's wall-length");
         } else if (d == "ball") {
             entity(balls_, "balls");
             // "Discs and bumpers": X Y VX VY and an optional radius R ≥ 0; R > 0 makes the ball a disc.
             if (t.size() == 6) {
                 numbers(t, 5);
                 if (number(t[5]) < 0.0) reject("negative radius");
+                in_domain(t[5], false);
             } else {
                 numbers(t, 4);
             }
+            in_domain(t[1], false), in_domain(t[2], false), in_domain(t[3], true), in_domain(t[4], true);
         } else if (d == "circle") {
             entity(circles_, "circles");
             numbers(t, 3);
             // −0 is zero; any other negative radius is an error.
             if (number(t[3]) < 0.0) reject("negative radius");
+            for (std::size_t i = 1; i <= 3; ++i) in_domain(t[i], false);
         } else if (d == "bumper") {
             entity(bumpers_, "bumpers");
             numbers(t, 3);
             if (number(t[3]) < 0.0) reject("negative radius");
+            for (std::size_t i = 1; i <= 3; ++i) in_domain(t[i], false);
         } else if (d == "rect") {
             entity(rects_, "rects");
             numbers(t, 4);
             if (number(t[1]) > number(t[3])) reject("LEFT greater than RIGHT");
             if (number(t[2]) > number(t[4])) reject("BOTTOM greater than TOP");
+            for (std::size_t i = 1; i <= 4; ++i) in_domain(t[i], false);
         } else if (d == "check") {
             arity(t, 1);
             const std::string_view c = check_name(t[1]);
             if (one_of_listed(c)) reject("check listed twice");
+            // "Domain": `waive touching` switches off boundary and oracle, and a log may not name them.
+            if (waive_touching_ && (c == "boundary" || c == "oracle")) reject("a check the domain waives");
+            after_domain_ = true;
             checks_.push_back(c);
             check_lines_.push_back(line_);
         } else if (d == "expect") {
@@ -171,6 +186,46 @@ private:
         } else {
             reject("unknown directive '" + std::string(d) + "'");
         }
+    }
+
+    // "Domain": `domain coordinates C`, `speed V`, `wall-length L` (C, V, L > 0), `no-subnormals`, `waive touching`,
+    // each once, before the first wall, ball, circle, rect, bumper and check.
+    void domain(const Tokens& t) {
+        if (after_domain_) reject("'domain' after an entity or a check");
+        if (t.size() < 2) reject("'domain': what it bounds is missing");
+        const std::string_view what = t[1];
+        const auto bound = [&](std::optional<double>& out) {
+            if (out) reject("duplicate 'domain " + std::string(what) + "'");
+            arity(t, 2);
+            const double x = number(t[2]);
+            if (!(x > 0.0)) reject("a domain bound not above 0");
+            out = x;
+        };
+        if (what == "coordinates") {
+            bound(coordinates_);
+        } else if (what == "speed") {
+            bound(speed_);
+        } else if (what == "wall-length") {
+            bound(wall_length_);
+        } else if (what == "no-subnormals") {
+            once(no_subnormals_, "domain no-subnormals");
+            arity(t, 1);
+        } else if (what == "waive") {
+            arity(t, 2);
+            if (t[2] != "touching") reject("unknown convention");
+            once(waive_touching_, "domain waive touching");
+        } else {
+            reject("unknown domain '" + std::string(what) + "'");
+        }
+    }
+    // An entity's number against the domain: a coordinate or radius (or, speed, a velocity component) within its
+    // bound, and not subnormal under no-subnormals. The entity's line settles the domain.
+    void in_domain(std::string_view token, bool speed) {
+        after_domain_ = true;
+        const double x = number(token);
+        const std::optional<double>& b = speed ? speed_ : coordinates_;
+        if (b && !(std::fabs(x) <= *b)) reject("a number outside the domain");
+        if (no_subnormals_ && x != 0.0 && std::fabs(x) < 0x1p-1022) reject("a subnormal number in the domain");
     }
 
     void expect(const Tokens& t) {
@@ -229,6 +284,8 @@ private:
     std::vector<int> check_lines_;
     std::vector<Reference> states_;
     std::optional<Reference> found_, failure_;
+    bool after_domain_ = false, no_subnormals_ = false, waive_touching_ = false;
+    std::optional<double> coordinates_, speed_, wall_length_;
 };
 
 }  // namespace

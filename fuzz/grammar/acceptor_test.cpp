@@ -333,4 +333,37 @@ TEST(GrammarAcceptor, ExpectHashIsSixteenLowercaseHexDigits) {
     rejected_at(h + "expect hash 0x23456789abcdef\n", 2);
 }
 
+TEST(GrammarAcceptor, DomainLines) {
+    accepted(h + "domain coordinates 1e6\ndomain speed 1000\ndomain wall-length 0.5\ndomain no-subnormals\n"
+                 "domain waive touching\nwall 0 0 3 4\nball 1 2 3 4 0.5\ncircle 0 0 1\nbumper 0 0 1\nrect 0 0 1 1\n"
+                 "check no-tunnel\nexpect state 0 0 1e70 0 0 0\n");
+    // Each once, with its bound above 0, before every entity and check.
+    rejected_at(h + "domain speed 1\ndomain speed 1\n", 3);
+    rejected_at(h + "domain speed 0\n", 2);
+    rejected_at(h + "domain speed\n", 2);
+    rejected_at(h + "domain no-subnormals 1\n", 2);
+    rejected_at(h + "domain waive corners\n", 2);
+    rejected_at(h + "domain gravity 1\n", 2);
+    rejected_at(h + "domain\n", 2);
+    rejected_at(h + "check speed\ndomain speed 1\n", 3);
+    rejected_at(h + "wall 0 0 1 1\ndomain speed 1\n", 3);
+    // The entities within it.
+    rejected_at(h + "domain coordinates 10\nwall 0 0 11 0\n", 3);
+    rejected_at(h + "domain coordinates 10\nball 0 0 100 0 11\n", 3);
+    accepted(h + "domain coordinates 10\nball 0 0 100 0 10\n");
+    rejected_at(h + "domain speed 10\nball 0 0 0 -11\n", 3);
+    rejected_at(h + "domain no-subnormals\nbumper 0 0 5e-324\n", 3);
+    accepted(h + "domain no-subnormals\nbumper 0 0 -0\nwall 0 0 0x1p-1022 0\n");
+    // |(0, 0) -> (3, 4)| = 5: exactly as long is long enough; one ulp shorter is not.
+    accepted(h + "domain wall-length 5\nwall 0 0 3 4\n");
+    rejected_at(h + "domain wall-length 5\nwall 0 0 3 3.9999999999999996\n", 3);
+    rejected_at(h + "domain wall-length 5e-324\nwall 1 1 1 1\n", 3);
+    accepted(h + "domain wall-length 5e-324\nwall 0 0 5e-324 0\n");
+    accepted(h + "domain wall-length 1e70\nwall -1e70 0 0 0\n");
+    // A waived check may not be named.
+    rejected_at(h + "domain waive touching\ncheck oracle\n", 3);
+    rejected_at(h + "domain waive touching\ncheck boundary\n", 3);
+    accepted(h + "domain waive touching\ncheck speed\n");
+}
+
 }  // namespace

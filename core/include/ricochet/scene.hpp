@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ricochet/check.hpp"
+#include "ricochet/domain.hpp"
 #include "ricochet/event.hpp"
 #include "ricochet/expect.hpp"
 #include "ricochet/kernel_id.hpp"
@@ -34,6 +35,7 @@ struct Scene {
     std::optional<ExpectFailure> expect_failure;
     std::optional<Found> found;                 ///< what the run that saved the log showed (`found`)
     std::vector<std::string> provenance;        ///< the words after each `from`, verbatim
+    Domain domain;                              ///< what the scene is drawn from and judged in (`domain` lines)
     friend bool operator==(const Scene&, const Scene&) = default;  ///< by value (same_bits compares bits)
 };
 

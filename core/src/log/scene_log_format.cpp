@@ -180,6 +180,71 @@ private:
         return v;
     }
 
+    /// The number at token n as its domain allows it: a coordinate or radius (length) or a velocity component
+    /// (speed) within the domain's bound, and not subnormal where the domain says so.
+    void in_domain(std::size_t n, double x, bool speed) {
+        const Domain& d = scene_.domain;
+        const std::optional<double>& bound = speed ? d.speed : d.coordinates;
+        if (bound && !(std::fabs(x) <= *bound))
+            fail(tokens_[n], fmt::format("{} {} is outside the log's domain ({} {})", expected_word(n),
+                                         shown(tokens_[n].text), speed ? "speed" : "coordinates", *bound));
+        if (d.no_subnormals && std::fpclassify(x) == FP_SUBNORMAL)
+            fail(tokens_[n], fmt::format("{} {} is subnormal, outside the log's domain (no-subnormals)", expected_word(n),
+                                         shown(tokens_[n].text)));
+    }
+    /// The name of argument n in the current directive's expected_ ("X0 Y0 X1 Y1": 1 is X0).
+    std::string_view expected_word(std::size_t n) const {
+        std::string_view rest = expected_;
+        for (std::size_t i = 1; i < n && !rest.empty(); ++i) {
+            const auto space = rest.find(' ');
+            rest = space == std::string_view::npos ? std::string_view{} : rest.substr(space + 1);
+        }
+        const std::string_view word = rest.substr(0, rest.find(' '));
+        return word.starts_with('[') ? word.substr(1, word.size() - 2) : word;
+    }
+    /// An entity or check line: the domain is settled from here on.
+    void settle_domain() { seen_entity_ = true; }
+
+    void domain_line() {
+        expected_ = "coordinates C, speed V, wall-length L, no-subnormals or waive touching";
+        const Token& d = tokens_[0];
+        if (seen_entity_)
+            fail(d, "'domain' comes before the first wall, ball, circle, rect, bumper and check (they are read in it)");
+        const Token& what = arg(1, "what the domain bounds");
+        Domain& dom = scene_.domain;
+        const auto duplicate = [&](bool taken) {
+            if (taken) fail(what, fmt::format("duplicate 'domain {}'", shown(what.text)));
+        };
+        const auto bound = [&](std::optional<double>& out) {
+            duplicate(out.has_value());
+            const double x = number(2, what.text);
+            if (!(x > 0)) fail(tokens_[2], fmt::format("domain {} {} is not above 0", what.text, shown(tokens_[2].text)));
+            no_more(3);
+            out = x;
+        };
+        if (what.text == "coordinates") {
+            bound(dom.coordinates);
+        } else if (what.text == "speed") {
+            bound(dom.speed);
+        } else if (what.text == "wall-length") {
+            bound(dom.wall_length);
+        } else if (what.text == "no-subnormals") {
+            duplicate(dom.no_subnormals);
+            no_more(2);
+            dom.no_subnormals = true;
+        } else if (what.text == "waive") {
+            expected_ = "a convention: touching";
+            const Token& c = arg(2, "convention");
+            if (c.text != "touching") fail(c, fmt::format("unknown convention '{}' (touching)", shown(c.text)));
+            duplicate(dom.waive_touching);
+            no_more(3);
+            dom.waive_touching = true;
+        } else {
+            fail(what, fmt::format("unknown domain '{}' (coordinates, speed, wall-length, no-subnormals or waive)",
+                                   shown(what.text)));
+        }
+    }
+
     void count(std::size_t size, std::size_t limit, std::string_view kind) {
         if (size >= limit) fail(tokens_[0], fmt::format("too many {}: the limit is {}", kind, limit));
     }
@@ -230,6 +295,14 @@ private:
             count(scene_.walls.size(), k_max_entities, "walls");
             Wall w{{number(1, "X0"), number(2, "Y0")}, {number(3, "X1"), number(4, "Y1")}};
             no_more(5);
+            settle_domain();
+            in_domain(1, w.p0.x, false), in_domain(2, w.p0.y, false), in_domain(3, w.p1.x, false), in_domain(4, w.p1.y, false);
+            if (scene_.domain.wall_length) {
+                Scene one;
+                one.walls = {w};
+                if (outside_domain(one, Domain{.wall_length = scene_.domain.wall_length}))
+                    fail(d, fmt::format("the wall is shorter than the log's domain (wall-length {})", *scene_.domain.wall_length));
+            }
             scene_.walls.push_back(w);
         } else if (name == "ball") {
             expected_ = "X Y VX VY [R]";
@@ -238,6 +311,9 @@ private:
             // The radius is optional: without it the ball is a point, as before radii existed.
             if (tokens_.size() > 5) b.r = radius(5);
             no_more(6);
+            settle_domain();
+            in_domain(1, b.pos.x, false), in_domain(2, b.pos.y, false), in_domain(3, b.vel.x, true), in_domain(4, b.vel.y, true);
+            if (tokens_.size() > 5) in_domain(5, b.r, false);
             if (is_disc(b) && !first_disc_) first_disc_ = Place{line_, tokens_[5].col};
             scene_.balls.push_back(b);
         } else if (name == "circle") {
@@ -245,12 +321,16 @@ private:
             count(scene_.circles.size(), k_max_entities, "circles");
             Circle c{{number(1, "X"), number(2, "Y")}, radius(3)};
             no_more(4);
+            settle_domain();
+            in_domain(1, c.c.x, false), in_domain(2, c.c.y, false), in_domain(3, c.r, false);
             scene_.circles.push_back(c);
         } else if (name == "bumper") {
             expected_ = "X Y R";
             count(scene_.bumpers.size(), k_max_entities, "bumpers");
             Bumper c{{number(1, "X"), number(2, "Y")}, radius(3)};
             no_more(4);
+            settle_domain();
+            in_domain(1, c.c.x, false), in_domain(2, c.c.y, false), in_domain(3, c.r, false);
             if (!first_bumper_) first_bumper_ = Place{line_, tokens_[0].col};
             scene_.bumpers.push_back(c);
         } else if (name == "rect") {
@@ -262,6 +342,8 @@ private:
             if (r.bottom > r.top)
                 fail(tokens_[2], fmt::format("bottom {} is greater than top {}", shown(tokens_[2].text), shown(tokens_[4].text)));
             no_more(5);
+            settle_domain();
+            in_domain(1, r.left, false), in_domain(2, r.bottom, false), in_domain(3, r.right, false), in_domain(4, r.top, false);
             scene_.rects.push_back(r);
         } else if (name == "check") {
             expected_ = "a check name";
@@ -276,6 +358,11 @@ private:
             for (Check have : scene_.checks)
                 if (have == *c) fail(t, fmt::format("duplicate check '{}'", shown(t.text)));
             no_more(2);
+            settle_domain();
+            for (Check waived : waived_checks(scene_.domain))
+                if (waived == *c)
+                    fail(t, fmt::format("check '{}' is waived by the log's 'domain waive touching': its kernel does "
+                                        "not promise that touching is a hit", shown(t.text)));
             scene_.checks.push_back(*c);
             check_places_.push_back({line_, t.col});
         } else if (name == "expect") {
@@ -331,6 +418,8 @@ private:
             no_more(4);
             scene_.found = Found{*c, f, static_cast<std::uint32_t>(ball)};
             found_place_ = {line_, tokens_[1].col, tokens_[2].col, tokens_[3].col};
+        } else if (name == "domain") {
+            domain_line();
         } else if (name == "from") {
             expected_ = "provenance words";
             arg(1, "provenance");
@@ -426,6 +515,7 @@ private:
     bool seen_header_ = false;
     bool seen_kernel_ = false;
     bool seen_frames_ = false;
+    bool seen_entity_ = false;  // a wall, ball, circle, rect, bumper or check line: no `domain` line after it
 };
 
 }  // namespace
@@ -447,6 +537,12 @@ void write_body(std::string& out, const Scene& s, bool with_provenance_and_expec
         for (const std::string& p : s.provenance) fmt::format_to(it, "from {}\n", p);
     fmt::format_to(it, "kernel {}\n", s.kernel);
     fmt::format_to(it, "frames {}\n", s.frames);
+    const Domain& d = s.domain;
+    if (d.coordinates) fmt::format_to(it, "domain coordinates {}\n", *d.coordinates);
+    if (d.speed) fmt::format_to(it, "domain speed {}\n", *d.speed);
+    if (d.wall_length) fmt::format_to(it, "domain wall-length {}\n", *d.wall_length);
+    if (d.no_subnormals) out += "domain no-subnormals\n";
+    if (d.waive_touching) out += "domain waive touching\n";
     for (const Wall& w : s.walls) fmt::format_to(it, "wall {}\n", w);
     for (const Ball& b : s.balls) fmt::format_to(it, "ball {}\n", b);
     for (const Circle& c : s.circles) fmt::format_to(it, "circle {}\n", c);

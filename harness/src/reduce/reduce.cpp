@@ -43,6 +43,7 @@ std::variant<ReducedLog, ReduceRefusal> reduce_log(const Scene& log, const Reduc
     bare.rects = log.rects;
     bare.bumpers = log.bumpers;
     bare.checks = target.checks;
+    bare.domain = log.domain;  // every smaller case stays in the log's domain, and the reduced log states it
     std::optional<Failing> start = judge(bare, kernel, target);
     // A guard: a check's verdict does not depend on the other checks listed, so C alone breaks where it broke
     // among them (checks.hpp; a trace that differs is the first tracing check's failure either way), and a

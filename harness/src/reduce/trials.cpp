@@ -64,7 +64,9 @@ bool Trials::attempt(Scene candidate, std::string_view pass) {
     candidate.checks = target_.checks;
     // Never past the frame that fails now: a later failure would be a larger case.
     candidate.frames = std::min(candidate.frames, current_.frame());
-    std::optional<Failing> failing = judge(candidate, kernel_, target_);
+    // A smaller case outside the log's domain (a wall made shorter than its wall-length, say) is no case of it.
+    std::optional<Failing> failing;
+    if (!outside_domain(candidate, candidate.domain)) failing = judge(candidate, kernel_, target_);
     if (failing) {
         current_ = std::move(*failing);
         ++kept_;

@@ -36,7 +36,7 @@ struct Target {
 
 /// A scene that fails the target, and what its run showed.
 struct Failing {
-    Scene scene;  ///< kernel, frames cut to the failure, the entities, target.checks; nothing else
+    Scene scene;  ///< kernel, frames cut to the failure, the entities, target.checks, the domain; nothing else
     std::optional<CheckFailure> failure;  ///< a check target: the failure its run shows
     std::optional<StepError> error;       ///< a step-error target: where its run stops
     /// The frame of the failure or the error.

@@ -23,6 +23,7 @@
 // - the failure message ends with the one command that reproduces it;
 // - every call into your table runs under the plug-in guard: a crash or a hang ends the process with a report and
 //   the case kept as a scene log.
+// RICOCHET_DOMAIN overrides the domain (RICOCHET_TEST_KERNEL_IN), for every kernel under test.
 // RICOCHET_KERNEL (names, comma-separated) overrides the kernels under test; without it they are the kernels
 // registered with RICOCHET_TEST_KERNEL, or robust and exact when there are none.
 //
@@ -37,8 +38,13 @@ namespace ricochet::props {
 /// Puts table's kernel under test: it is registered (register_plugin, plugin_loader.hpp) when the test program's
 /// parameterized tests are set up, after every static initializer has run. A table the loader refuses ends the
 /// program then, with status 2 and the loader's message. table must outlive the program (a static is fine).
+/// domain: what your world is, as RICOCHET_DOMAIN spells it (ricochet/domain.hpp, docs/scene-log.md "Domain"),
+/// e.g. "coordinates=1e6,no-subnormals,waive=touching"; empty: ricochet's whole range and every convention. Every
+/// property then draws its scenes inside it, skips the checks a waived convention switches off, and saves its
+/// failures with the domain's lines, so that replay judges them the same way. A domain that does not read ends
+/// the program with status 2 when the tests are set up.
 /// Returns true, so that RICOCHET_TEST_KERNEL can call it from a static initializer.
-bool test_kernel(const ricochet_plugin& table);
+bool test_kernel(const ricochet_plugin& table, const char* domain = "");
 
 }  // namespace ricochet::props
 
@@ -49,3 +55,8 @@ bool test_kernel(const ricochet_plugin& table);
 #define RICOCHET_TEST_KERNEL(TABLE)                                                                      \
     [[maybe_unused]] static const bool RICOCHET_PROPERTIES_CONCAT(ricochet_test_kernel_, __LINE__) = \
         ::ricochet::props::test_kernel(TABLE)
+/// The same, in the domain DOMAIN (a string, as RICOCHET_DOMAIN spells it): RICOCHET_TEST_KERNEL_IN(kTable,
+/// "coordinates=1e6,no-subnormals").
+#define RICOCHET_TEST_KERNEL_IN(TABLE, DOMAIN)                                                           \
+    [[maybe_unused]] static const bool RICOCHET_PROPERTIES_CONCAT(ricochet_test_kernel_, __LINE__) = \
+        ::ricochet::props::test_kernel(TABLE, DOMAIN)
