@@ -29,9 +29,15 @@ Big units(double x) {
         ++shift;
     }
     Big out(static_cast<std::size_t>(shift / 32) + 3, 0);
+    // mant · 2^(shift mod 32) in three limbs, from mant's 32-bit halves (no 128-bit type on 32-bit targets).
     const unsigned s = static_cast<unsigned>(shift % 32);
-    const unsigned __int128 v = static_cast<unsigned __int128>(mant) << s;
-    for (int i = 0; i < 3; ++i) out[static_cast<std::size_t>(shift / 32 + i)] = static_cast<std::uint32_t>(v >> (32 * i));
+    const std::uint64_t a = (mant & 0xffffffffu) << s;  // < 2^63
+    const std::uint64_t b = (mant >> 32) << s;          // < 2^52
+    const std::uint64_t mid = (a >> 32) + (b & 0xffffffffu);
+    const std::size_t at = static_cast<std::size_t>(shift / 32);
+    out[at] = static_cast<std::uint32_t>(a);
+    out[at + 1] = static_cast<std::uint32_t>(mid);
+    out[at + 2] = static_cast<std::uint32_t>((b >> 32) + (mid >> 32));
     trim(out);
     return out;
 }
