@@ -60,12 +60,11 @@ private:
             if (!finite(leg.from) || !finite(leg.to)) break;
             const Wall* keep_now = kept;
             const int keep_now_from = kept_from;
-            if (hit.index < scene_.walls.size()) {
-                const int from = truth::side(leg.from, scene_.walls[hit.index]);
-                if (from != 0) {
-                    kept = &scene_.walls[hit.index];
-                    kept_from = from;
-                }
+            // The exact side of the leg's start on the hit wall's line (0: on it, or no such wall).
+            const int from = hit.index < scene_.walls.size() ? truth::side(leg.from, scene_.walls[hit.index]) : 0;
+            if (from != 0) {
+                kept = &scene_.walls[hit.index];
+                kept_from = from;
             }
             if (hit.index != *leg.hit) break;
             // t_i: the fraction of the leg the kernel put the crossing at (the trace's, since a log does not
@@ -92,7 +91,6 @@ private:
             // Judged where v goes into the wall from the side the leg starts on (or the leg starts on its line):
             // a leg whose rounded end reaches the line while v itself moves away (|v| under an ulp of M, say)
             // meets it by rounding alone, and the exact reflection of v is no answer there.
-            const int from = truth::side(leg.from, scene_.walls[hit.index]);
             if (from != 0 && truth::direction_side(leg.vel, scene_.walls[hit.index]) != -from) continue;
             const truth::HitAccuracy rb =
                 truth::bounce_accuracy(leg.vel, scene_.walls[hit.index], v_out, bound_.rel, bound_.abs);
