@@ -7,6 +7,9 @@
 //                                            ..., my_sweep, ...};   // ricochet/plugin.h: your functions
 //     RICOCHET_TEST_KERNEL(kTable);
 //
+// or, for a kernel written as a C++ class of static members on ricochet's types (kernel_table below),
+// RICOCHET_TEST_KERNEL_CLASS(MyKernel);
+//
 // and link the test program with ricochet::properties (find_package(ricochet COMPONENTS properties)) and
 // GTest::gtest_main, or a main of your own that calls ::testing::InitGoogleTest. Every property then runs as a
 // GoogleTest test per kernel, `Kernels/SUITE.PROPERTY/KERNEL` (e.g. Kernels/Scenes.NoTunnelWalls/my_kernel): all of
@@ -31,9 +34,89 @@
 // `ricochet fuzz --kernel plugin:PATH` (docs/testing-your-code.md says why and how).
 #pragma once
 
+#include <cstdint>
+#include <optional>
+
 #include "ricochet/plugin.h"
+#include "ricochet/shapes.hpp"
+#include "ricochet/sweep.hpp"
+#include "ricochet/vec2.hpp"
 
 namespace ricochet::props {
+
+/// A disc's first contact, as a kernel class's sweep_disc and sweep_disc_bumper answer it (plugin.h's
+/// ricochet_disc_result): t in [0, 1], the centre B_i there, the normal from the obstacle to the disc.
+struct DiscHit {
+    double t = 0;
+    Vec2 point;
+    Vec2 normal;
+};
+
+namespace detail {
+inline Vec2 vec(ricochet_vec2 v) { return {v.x, v.y}; }
+inline ricochet_vec2 vec(Vec2 v) { return {v.x, v.y}; }
+inline Wall wall(const ricochet_wall* w) { return {vec(w->p0), vec(w->p1)}; }
+inline void disc_result(const std::optional<DiscHit>& hit, ricochet_disc_result* out) {
+    out->miss = hit ? RICOCHET_HIT : RICOCHET_MISS;
+    if (!hit) return;
+    out->t = hit->t;
+    out->point = vec(hit->point);
+    out->normal = vec(hit->normal);
+}
+}  // namespace detail
+
+/// The plugin.h table of a kernel written as a C++ class of static members on ricochet's own types:
+///     static constexpr const char* name = "my-kernel";                                      required
+///     static Sweep sweep(Vec2 bs, Vec2 v, const Wall& w);                                   required (sweep.hpp)
+///     static Vec2 reflect(Vec2 v, const Wall& w);                                           optional
+///     static std::optional<DiscHit> sweep_disc(Vec2 bs, Vec2 v, double r, const Wall& w);   optional
+///     static std::optional<DiscHit> sweep_disc_bumper(Vec2 bs, Vec2 v, double r, const Circle& bumper);
+///                                                                                           optional, with sweep_disc
+///     static Vec2 reflect_disc(Vec2 v, Vec2 normal);                                        optional
+///     static constexpr double speed_rel_bound = ..., speed_abs_bound = ...;                 optional
+/// What it leaves out ricochet supplies, as for any table (plugin.h). A whole-frame step is the table's alone.
+template <class K>
+const ricochet_plugin& kernel_table() {
+    static const ricochet_plugin table = [] {
+        ricochet_plugin t{};
+        t.abi_version = RICOCHET_PLUGIN_ABI_VERSION;
+        t.struct_size = sizeof(ricochet_plugin);
+        t.name = K::name;
+        t.sweep = [](void*, ricochet_vec2 bs, ricochet_vec2 v, const ricochet_wall* w, ricochet_sweep_result* out) {
+            const Sweep r = K::sweep(detail::vec(bs), detail::vec(v), detail::wall(w));
+            // Miss's values are plugin.h's codes, in the same order (RICOCHET_HIT is Miss::none).
+            out->miss = static_cast<std::int32_t>(r.miss);
+            out->t = r.t;
+            out->point = detail::vec(r.point);
+        };
+        if constexpr (requires { &K::reflect; })
+            t.reflect = [](void*, ricochet_vec2 v, const ricochet_wall* w) {
+                return detail::vec(K::reflect(detail::vec(v), detail::wall(w)));
+            };
+        if constexpr (requires { &K::sweep_disc; }) {
+            t.sweep_disc = [](void*, ricochet_vec2 bs, ricochet_vec2 v, double r, const ricochet_wall* w,
+                              ricochet_disc_result* out) {
+                detail::disc_result(K::sweep_disc(detail::vec(bs), detail::vec(v), r, detail::wall(w)), out);
+            };
+            if constexpr (requires { &K::sweep_disc_bumper; })
+                t.sweep_disc_bumper = [](void*, ricochet_vec2 bs, ricochet_vec2 v, double r, const ricochet_circle* c,
+                                         ricochet_disc_result* out) {
+                    detail::disc_result(
+                        K::sweep_disc_bumper(detail::vec(bs), detail::vec(v), r, Circle{detail::vec(c->c), c->r}), out);
+                };
+        }
+        if constexpr (requires { &K::reflect_disc; })
+            t.reflect_disc = [](void*, ricochet_vec2 v, ricochet_vec2 n) {
+                return detail::vec(K::reflect_disc(detail::vec(v), detail::vec(n)));
+            };
+        if constexpr (requires { K::speed_rel_bound; K::speed_abs_bound; }) {
+            t.speed_rel_bound = K::speed_rel_bound;
+            t.speed_abs_bound = K::speed_abs_bound;
+        }
+        return t;
+    }();
+    return table;
+}
 
 /// Puts table's kernel under test: it is registered (register_plugin, plugin_loader.hpp) when the test program's
 /// parameterized tests are set up, after every static initializer has run. A table the loader refuses ends the
@@ -55,6 +138,8 @@ bool test_kernel(const ricochet_plugin& table, const char* domain = "");
 #define RICOCHET_TEST_KERNEL(TABLE)                                                                      \
     [[maybe_unused]] static const bool RICOCHET_PROPERTIES_CONCAT(ricochet_test_kernel_, __LINE__) = \
         ::ricochet::props::test_kernel(TABLE)
+/// Runs every property against the kernel class K (kernel_table<K>()): RICOCHET_TEST_KERNEL_CLASS(MyKernel).
+#define RICOCHET_TEST_KERNEL_CLASS(K) RICOCHET_TEST_KERNEL(::ricochet::props::kernel_table<K>())
 /// The same, in the domain DOMAIN (a string, as RICOCHET_DOMAIN spells it): RICOCHET_TEST_KERNEL_IN(kTable,
 /// "coordinates=1e6,no-subnormals").
 #define RICOCHET_TEST_KERNEL_IN(TABLE, DOMAIN)                                                           \
