@@ -15,6 +15,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <variant>
 
 #include <fmt/format.h>
@@ -22,6 +23,7 @@
 #include "commands.hpp"
 #include "number_option.hpp"
 #include "ricochet/checks.hpp"
+#include "ricochet/domain.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/kernel.hpp"
 #include "ricochet/plugin_loader.hpp"
@@ -201,6 +203,7 @@ void register_check(CLI::App& app) {
         std::string replay_dir;
         std::vector<std::string> plugins;
         std::string kernel;
+        std::optional<std::string> domain;
         bool json = false;
         app::ReportFiles reports;
         std::uint64_t max_work = k_default_max_work;
@@ -219,6 +222,10 @@ void register_check(CLI::App& app) {
     sub->add_option("--kernel", opt->kernel,
                     "run the pinball example, the property suite and the campaign under this kernel alone: a kernel's "
                     "name, or plugin:PATH (ricochet/plugin.h); the corpus's logs run under their own kernels");
+    sub->add_option("--domain", opt->domain,
+                    "the kernel's world for the property suite and the campaign (RICOCHET_DOMAIN, e.g. "
+                    "coordinates=1e6,no-subnormals,waive=touching; docs/scene-log.md \"Domain\")")
+        ->type_name("SPEC");
     sub->add_flag("--no-properties", opt->no_properties, "skip the property suite");
     sub->add_option("--replay-dir", opt->replay_dir,
                     "the corpus to replay, and where the properties and the fuzz campaign save failures "
@@ -230,6 +237,15 @@ void register_check(CLI::App& app) {
     sub->callback([opt] {
         if (opt->fuzz_time < 0) opt->fuzz_time = env_fuzz_seconds();
         check_report_files_or_exit(opt->reports);
+        // The children (properties, fuzz) read the domain from RICOCHET_DOMAIN, inherited.
+        if (opt->domain) {
+            std::string error;
+            if (!parse_domain_spec(*opt->domain, &error)) {
+                fmt::print(stderr, "ricochet check: error: --domain: {}\n", error);
+                throw Exit{2};
+            }
+            ::setenv("RICOCHET_DOMAIN", opt->domain->c_str(), 1);
+        }
         // Plug-ins before the corpus: their failure logs there name their kernels (the --kernel one's too).
         load_plugins_or_exit(opt->plugins);
         const std::optional<KernelId> kernel = opt->kernel.empty() ? std::nullopt : std::optional(kernel_or_exit(opt->kernel));

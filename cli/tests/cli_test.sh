@@ -184,6 +184,9 @@ case "$case" in
                      has out "replay      skipped (no scene logs in $dir/new yet)"
                      run 2 check --replay-dir "$dir/none/new" --no-properties --fuzz-runs 0
                      first_line err "ricochet check: error: cannot make the replay folder $dir/none/new: No such file or directory" ;;
+  check-bad-domain)  # A domain that does not read is refused before anything runs.
+                     mkproj; cd "$proj"; run 2 check --domain waive=corners --no-properties --fuzz-runs 0
+                     first_line err "ricochet check: error: --domain: unknown domain item 'waive=corners' (coordinates=C, speed=V, wall-length=L, no-subnormals, waive=touching)" ;;
   fuzz-bad-domain)   # A domain that does not read is refused before any worker starts, saying which item.
                      run 2 fuzz --domain coordinates=1e6,speed=0 --runs 1 --cache-dir "$dir/cache"
                      first_line err "ricochet fuzz: error: --domain: 'speed' needs a number above 0 and at most 2^256: speed=0"
