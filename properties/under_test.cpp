@@ -1,6 +1,7 @@
 // What the properties run against and where their logs live, as the program running them sets it
 // (harness.hpp): the kernels under test (RICOCHET_KERNEL, else the tables of RICOCHET_TEST_KERNEL, else robust
-// and exact), their domains (RICOCHET_DOMAIN, else RICOCHET_TEST_KERNEL_IN's) and the runner's defaults (ricochet's own runner: the corpus and the peers).
+// and exact), their domains (RICOCHET_DOMAIN, else RICOCHET_TEST_KERNEL_IN's) and the runner's defaults
+// (ricochet's own runner: the corpus and the peers).
 #include <cstdio>
 #include <cstdlib>
 #include <optional>

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "ricochet/check.hpp"
+#include "ricochet/shapes.hpp"
 
 namespace ricochet {
 
@@ -38,6 +39,9 @@ struct Domain {
 /// The checks a domain's waived conventions switch off (boundary and oracle for `waive touching`); empty for the
 /// full domain.
 std::span<const Check> waived_checks(const Domain& domain);
+
+/// True if w is at least length long: |p1 − p0| ≥ length, decided exactly (`domain wall-length`).
+bool wall_at_least(const Wall& w, double length);
 
 /// Why scene lies outside domain ("ball 0's VX 2000 is outside the domain's speed 1000"), or nothing.
 std::optional<std::string> outside_domain(const Scene& scene, const Domain& domain);

@@ -22,10 +22,6 @@ constexpr std::array<Check, 2> k_touching_checks = {Check::boundary, Check::orac
 
 bool subnormal(double x) { return std::fpclassify(x) == FP_SUBNORMAL; }
 
-/// True if the wall is at least length long: |p1 − p0|² ≥ length², decided exactly (p1 on or outside the circle of
-/// radius length about p0).
-bool long_enough(const Wall& w, double length) { return exact::point_circle(w.p1, Circle{w.p0, length}) >= 0; }
-
 /// Every number of the scene that is a coordinate or a radius (what `coordinates` bounds), with its name.
 template <class F>
 void each_length(const Scene& s, F&& f) {
@@ -57,6 +53,9 @@ int halvings(double largest, double bound) {
 
 }  // namespace
 
+// |p1 − p0|² ≥ length², decided exactly: p1 on or outside the circle of radius length about p0.
+bool wall_at_least(const Wall& w, double length) { return exact::point_circle(w.p1, Circle{w.p0, length}) >= 0; }
+
 std::span<const Check> waived_checks(const Domain& domain) {
     if (domain.waive_touching) return k_touching_checks;
     return {};
@@ -80,7 +79,7 @@ std::optional<std::string> outside_domain(const Scene& s, const Domain& d) {
         }
     if (d.wall_length)
         for (std::size_t i = 0; i < s.walls.size(); ++i)
-            if (!long_enough(s.walls[i], *d.wall_length))
+            if (!wall_at_least(s.walls[i], *d.wall_length))
                 note(fmt::format("wall {} is shorter than the domain's wall-length {}", i, *d.wall_length));
     return why;
 }

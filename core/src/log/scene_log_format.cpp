@@ -297,12 +297,8 @@ private:
             no_more(5);
             settle_domain();
             in_domain(1, w.p0.x, false), in_domain(2, w.p0.y, false), in_domain(3, w.p1.x, false), in_domain(4, w.p1.y, false);
-            if (scene_.domain.wall_length) {
-                Scene one;
-                one.walls = {w};
-                if (outside_domain(one, Domain{.wall_length = scene_.domain.wall_length}))
-                    fail(d, fmt::format("the wall is shorter than the log's domain (wall-length {})", *scene_.domain.wall_length));
-            }
+            if (scene_.domain.wall_length && !wall_at_least(w, *scene_.domain.wall_length))
+                fail(d, fmt::format("the wall is shorter than the log's domain (wall-length {})", *scene_.domain.wall_length));
             scene_.walls.push_back(w);
         } else if (name == "ball") {
             expected_ = "X Y VX VY [R]";
