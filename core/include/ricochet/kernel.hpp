@@ -46,6 +46,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -73,6 +74,16 @@ struct Obstacles {
     /// A bumper within R of a leg has its centre within R + bumper_reach of it.
     const WallIndex* bumper_index = nullptr;
     double bumper_reach = 0.0;  ///< the largest bumper radius (with bumper_index)
+    /// The scene's balls are solid to each other (`balls collide`): every ball, a point ball among walls alone too,
+    /// is stepped by step_disc, whose paths the meets are searched on (meet.hpp).
+    bool balls_meet = false;
+};
+
+/// How a kernel steps balls that meet (`balls collide`, docs/scene-log.md "Balls that meet").
+enum class MeetRule : std::uint8_t {
+    none,         ///< it does not: World refuses a scene with `balls collide`
+    end_of_frame, ///< the lecture's static circle/circle test at the frame's end, then push apart (meet_at_end)
+    swept,        ///< in exact time order on the balls' paths, every decision exact (meet.hpp), v′ from respond
 };
 
 /// A scene a kernel cannot step (a disc or a bumper for a kernel that steps point balls among walls only): World
@@ -116,6 +127,16 @@ struct KernelOps {
     /// false, is for kernels held to the guarantees: robust, exact and the user's own (plug-ins), whose saved
     /// failures are regressions that fail until fixed.
     bool failures_documented = false;
+    /// How the kernel steps balls that meet; K::k_meet_rule, with K::respond (swept) or K::meet_at_end (end_of_frame).
+    MeetRule meet_rule = MeetRule::none;
+    /// swept: the elastic response at the printed centres a.pos, b.pos, masses ma, mb (docs/scene-log.md, "Balls
+    /// that meet", 5): sets a.vel and b.vel and returns true, or returns false and changes nothing where the
+    /// centres do not approach.
+    bool (*respond)(Ball& a, Ball& b, double ma, double mb) = nullptr;
+    /// end_of_frame: the lecture's static test |B_a − B_b|² ≤ (R_a + R_b)² in the kernel's precision; where the
+    /// balls overlap and approach, pushes them apart to R_a + R_b along the line of centres, sets the response's
+    /// velocities and returns true; else returns false and changes nothing.
+    bool (*meet_at_end)(Ball& a, Ball& b, double ma, double mb) = nullptr;
 };
 
 /// A kernel type: static member functions with exactly KernelOps's signatures (one of each, no overloads).
@@ -137,6 +158,9 @@ constexpr KernelOps make_kernel_ops(std::string_view name) {
     if constexpr (requires { K::k_failures_documented; }) ops.failures_documented = K::k_failures_documented;
     if constexpr (requires { &K::step_disc; }) ops.step_disc = &K::step_disc;
     if constexpr (requires { K::k_steps_bumpers; }) ops.steps_bumpers = K::k_steps_bumpers;
+    if constexpr (requires { K::k_meet_rule; }) ops.meet_rule = K::k_meet_rule;
+    if constexpr (requires { &K::respond; }) ops.respond = &K::respond;
+    if constexpr (requires { &K::meet_at_end; }) ops.meet_at_end = &K::meet_at_end;
     return ops;
 }
 
@@ -180,6 +204,10 @@ Vec2 reflect(KernelId k, Vec2 v, const Wall& w);
 /// Why kernel k cannot step these balls among walls and `bumpers` bumpers ("kernel 'box2d' steps point balls
 /// only: ball 0 has radius 0.5"), or nothing if it can.
 std::optional<std::string> unsupported_scene(KernelId k, std::span<const Ball> balls, std::size_t bumpers);
+/// The same, for a scene whose balls meet (`balls collide`): also "kernel 'box2d' does not step balls that meet
+/// ('balls collide')" when the kernel has no MeetRule.
+std::optional<std::string> unsupported_scene(KernelId k, std::span<const Ball> balls, std::size_t bumpers,
+                                             bool balls_meet);
 
 /// Steps one ball through one frame among walls and bumpers: a point ball with no bumpers exactly as step_ball
 /// below (the same bits), anything else with the kernel's step_disc. Throws UnsupportedScene if the kernel

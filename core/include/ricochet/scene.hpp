@@ -3,6 +3,7 @@
 // (world.hpp); the same scene gives the same events, bit for bit, on every run.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -29,6 +30,11 @@ struct Scene {
     std::vector<Circle> circles;
     std::vector<Rect> rects;
     std::vector<Bumper> bumpers;                ///< solid circles balls bounce off
+    /// `balls collide`: every pair of balls with R_i + R_j > 0 is solid to each other (docs/scene-log.md, "Balls
+    /// that meet"); false, balls pass through each other.
+    bool balls_collide = false;
+    /// Each ball's mass (`ball X Y VX VY R M`), one per ball; empty where no ball line gave one (every mass 1).
+    std::vector<double> masses;
     std::vector<Check> checks;                  ///< in order of appearance, no duplicates
     std::optional<std::uint64_t> expect_hash;
     std::vector<ExpectState> expect_states;
@@ -38,6 +44,9 @@ struct Scene {
     Domain domain;                              ///< what the scene is drawn from and judged in (`domain` lines)
     friend bool operator==(const Scene&, const Scene&) = default;  ///< by value (same_bits compares bits)
 };
+
+/// Ball i's mass: masses[i], or 1 where the scene gives none.
+inline double mass_of(const Scene& scene, std::size_t i) { return scene.masses.empty() ? 1.0 : scene.masses[i]; }
 
 /// True if the scene has a disc (a ball of radius > 0) or a bumper: some checks read differently for it
 /// (checks.hpp, "Discs and bumpers").

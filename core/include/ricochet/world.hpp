@@ -20,6 +20,7 @@
 
 #include "ricochet/bvh.hpp"
 #include "ricochet/kernel.hpp"
+#include "ricochet/meet.hpp"
 #include "ricochet/scene.hpp"
 #include "ricochet/static_index.hpp"
 #include "ricochet/wall_grid.hpp"
@@ -107,6 +108,15 @@ public:
     Obstacles obstacles() const;
     /// What this world skips for its scene, one clause each, for a run to print.
     std::string skipped() const;
+    /// True if the scene's balls meet (`balls collide`).
+    bool balls_meet() const { return balls_meet_; }
+    /// The balls' masses, one per ball.
+    std::span<const double> masses() const { return masses_; }
+    /// The last frame's meets in the order they were taken (empty unless balls_meet()).
+    std::span<const MeetRecord> meets() const { return meets_; }
+    /// Ball i's path in the last frame: its printed points with their frame times, from the state before the frame
+    /// (t = 0) to its state (t = 1) (empty unless balls_meet()).
+    std::span<const PathPoint> path(std::size_t i) const;
 
 private:
     void append_overlaps(std::vector<Event>& out) const;
@@ -127,6 +137,10 @@ private:
     bool prefetch_ = false;  // the grid is past the size where cache hints pay (world.cpp)
     std::unique_ptr<detail::ParallelStepper> stepper_;
     std::int64_t frame_ = 0;
+    bool balls_meet_ = false;
+    std::vector<double> masses_;
+    std::vector<MeetRecord> meets_;
+    std::vector<std::vector<PathPoint>> paths_;
 };
 
 /// Every event of frames 0..frames under kernel. Throws StepFailure if a ball leaves the accepted range, and

@@ -122,6 +122,14 @@ std::optional<std::string> unsupported_scene(KernelId k, std::span<const Ball> b
     return std::nullopt;
 }
 
+std::optional<std::string> unsupported_scene(KernelId k, std::span<const Ball> balls, std::size_t bumpers,
+                                             bool balls_meet) {
+    const KernelOps& ops = kernel_ops(k);
+    if (balls_meet && (ops.meet_rule == MeetRule::none || ops.step_disc == nullptr))
+        return fmt::format("kernel '{}' does not step balls that meet ('balls collide')", ops.name);
+    return unsupported_scene(k, balls, bumpers);
+}
+
 namespace {
 
 /// One frame of ball by step, on copies, so that a frame which leaves the range changes nothing.
@@ -157,8 +165,9 @@ FrameStatus step_ball(KernelId k, Ball& ball, BallMemory& memory, std::span<cons
 
 FrameStatus step_ball(KernelId k, Ball& ball, BallMemory& memory, const Obstacles& obstacles,
                       std::vector<HitEvent>& hits, StepScratch& scratch) {
-    // A point ball among walls alone: the point kernels' own step, bit for bit as before radii existed.
-    if (!is_disc(ball) && obstacles.bumpers.empty())
+    // A point ball among walls alone: the point kernels' own step, bit for bit as before radii existed. Balls
+    // that meet are all stepped by the disc frame, whose paths the meets are searched on.
+    if (!is_disc(ball) && obstacles.bumpers.empty() && !obstacles.balls_meet)
         return step_ball(k, ball, memory, obstacles.walls, hits, scratch, obstacles.index);
     if (auto why = unsupported_scene(k, std::span<const Ball>(&ball, 1), obstacles.bumpers.size()))
         throw UnsupportedScene(*why);

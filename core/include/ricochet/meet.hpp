@@ -1,0 +1,35 @@
+// Balls that meet (`balls collide`, docs/scene-log.md "Balls that meet"): what a frame's meets were, for the
+// checks, the renderer and anyone who wants more than the printed `meet` lines; and the frame's paths they were
+// searched on.
+#pragma once
+
+#include <cstdint>
+
+#include "ricochet/vec2.hpp"
+
+namespace ricochet {
+
+/// A frame's meets at most, per ball of the scene (16·N for N balls): at the limit every ball stops where its
+/// path is at the last meet's time (the safe stop of docs/scene-log.md, "Balls that meet", 7).
+inline constexpr int k_max_meets_per_ball = 16;
+
+/// One meet of two balls during a frame, as the World took it.
+struct MeetRecord {
+    std::uint32_t a = 0, b = 0;  ///< the two balls, a < b
+    double t = 0.0;              ///< the frame time of the meet (rounded; the lecture kernels: 1)
+    Vec2 pos_a, pos_b;           ///< their printed centres there
+    Vec2 vel_a, vel_b;           ///< their velocities arriving
+    Vec2 out_a, out_b;           ///< the velocities they leave with (printed in the `meet` lines)
+    bool responded = false;      ///< false where the centres did not approach and the velocities stayed
+    friend bool operator==(const MeetRecord&, const MeetRecord&) = default;
+};
+
+/// A printed point of a ball's path in a frame and its frame time: the path moves uniformly between consecutive
+/// ones (docs/scene-log.md, "Balls that meet", 1).
+struct PathPoint {
+    double t = 0.0;
+    Vec2 p;
+    friend bool operator==(const PathPoint&, const PathPoint&) = default;
+};
+
+}  // namespace ricochet
