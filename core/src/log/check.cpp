@@ -25,6 +25,10 @@ std::string_view check_name(Check c) {
         case Check::penetration: return "penetration";
         case Check::ghost_bounce: return "ghost-bounce";
         case Check::plan: return "plan";
+        case Check::ball_overlap: return "ball-overlap";
+        case Check::pass_through: return "pass-through";
+        case Check::momentum: return "momentum";
+        case Check::relabel: return "relabel";
     }
     return "?";
 }
