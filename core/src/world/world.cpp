@@ -148,6 +148,11 @@ std::optional<StepError> World::step(std::vector<Event>& out) {
     return error;
 }
 
+std::span<const PathPoint> World::path(std::size_t i) const {
+    if (i >= paths_.size()) return {};
+    return paths_[i];
+}
+
 std::string World::skipped() const {
     std::string s;
     const auto add = [&](const char* clause) {
