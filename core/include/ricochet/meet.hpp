@@ -4,7 +4,12 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
+#include <vector>
 
+#include "ricochet/ball_memory.hpp"
+#include "ricochet/kernel.hpp"
+#include "ricochet/step.hpp"
 #include "ricochet/vec2.hpp"
 
 namespace ricochet {
@@ -31,5 +36,21 @@ struct PathPoint {
     Vec2 p;
     friend bool operator==(const PathPoint&, const PathPoint&) = default;
 };
+
+/// One ball's frame as the World hands it to step_meets and takes it back.
+struct BallFrame {
+    Ball before;                   ///< its state before the frame
+    BallMemory memory;             ///< its memory before the frame (kept: the disc frame remembers nothing)
+    Ball state;                    ///< in: stepped alone through the frame; out: its state at the frame's end
+    FrameStatus status = FrameStatus::ok;  ///< in: that step's; out: the frame's last step's
+    std::vector<HitEvent> events;  ///< in: that step's hits; out: its hits, bumps and meets in the order they happened
+    std::vector<PathPoint> path;   ///< out: its path, from `before` at t = 0 to `state` at t = 1
+};
+
+/// The meets of one frame among balls each already stepped alone through it (balls[i].state, .status, .events),
+/// by kernel k's MeetRule (docs/scene-log.md, "Balls that meet"): rewrites each ball's state, status and events,
+/// fills its path, and appends the frame's meets, in the order taken, to meets. masses: one per ball.
+void step_meets(KernelId k, const Obstacles& obstacles, std::span<const double> masses, std::span<BallFrame> balls,
+                std::vector<MeetRecord>& meets, StepScratch& scratch);
 
 }  // namespace ricochet

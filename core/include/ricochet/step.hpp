@@ -11,12 +11,15 @@
 
 namespace ricochet {
 
-/// A bounce during a frame: the wall (or bumper), the frame time t_i and the point B_i (the ball's centre).
+/// A bounce during a frame: the wall (or bumper, or ball), the frame time t_i and the point B_i (the ball's centre).
 struct HitEvent {
-    std::uint32_t wall = 0;  ///< the wall, or the bumper when bumper is set
+    std::uint32_t wall = 0;  ///< the wall, or the bumper when bumper is set, or the other ball when ball is set
     double t = 0.0;
     Vec2 point;
     bool bumper = false;     ///< the ball bounced off bumper `wall`, not a wall (a `bump` event)
+    bool ball = false;       ///< the ball met ball `wall` (a `meet` event, meet.hpp)
+    /// The velocity the ball leaves the contact with: set by the disc frame and for a meet; zero elsewhere.
+    Vec2 out{};
 };
 
 /// How a frame ended for one ball.
@@ -40,6 +43,9 @@ struct StepScratch {
     /// The plan of the walls last stepped among (wall_plan.hpp), made on the first step among them and again
     /// only when a step names other walls: a scene is looked at once per scratch, not once per frame.
     WallPlan plan;
+    /// The frame time the step starts at: 0 for a whole frame; a ball stepped on after a meet at t starts at t, its
+    /// first leg q → q + (1 − t)·v (the disc frame reads it; meet.hpp). Hit times are frame times either way.
+    double start = 0.0;
 };
 
 /// scratch.plan, made afresh first if it does not describe these walls.

@@ -120,6 +120,8 @@ public:
 
 private:
     void append_overlaps(std::vector<Event>& out) const;
+    /// step() for a scene whose balls meet.
+    std::optional<StepError> step_meeting(std::vector<Event>& out);
 
     KernelId kernel_;
     std::vector<Wall> walls_;
@@ -141,6 +143,8 @@ private:
     std::vector<double> masses_;
     std::vector<MeetRecord> meets_;
     std::vector<std::vector<PathPoint>> paths_;
+    std::vector<BallFrame> frames_;  // the frame's balls as step_meets works them
+    StepScratch meet_scratch_;
 };
 
 /// Every event of frames 0..frames under kernel. Throws StepFailure if a ball leaves the accepted range, and

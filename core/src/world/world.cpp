@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "ricochet/format.hpp"
+#include "ricochet/meet.hpp"
 #include "ricochet/wall_plan.hpp"
 #include "world/parallel.hpp"
 
@@ -35,8 +36,12 @@ World::World(const Scene& scene, KernelId kernel, WorldOptions options)
       bumpers_(scene.bumpers),
       balls_(scene.balls),
       memories_(scene.balls.size()),
-      stepper_(std::make_unique<detail::ParallelStepper>(options.threads)) {
-    if (auto why = unsupported_scene(kernel, balls_, bumpers_.size())) throw UnsupportedScene(*why);
+      stepper_(std::make_unique<detail::ParallelStepper>(options.threads)),
+      balls_meet_(scene.balls_collide) {
+    if (auto why = unsupported_scene(kernel, balls_, bumpers_.size(), balls_meet_)) throw UnsupportedScene(*why);
+    masses_.resize(balls_.size());
+    for (std::size_t i = 0; i < balls_.size(); ++i) masses_[i] = mass_of(scene, i);
+    if (balls_meet_) paths_.resize(balls_.size());
     // The scene is looked at once, here. Without a plan every decision takes the general path: a plan that
     // describes the walls and found none axis-aligned (the same bits, wall_plan.hpp).
     stepper_->set_plan(options.plan ? plan_walls(walls_) : WallPlan{walls_.data(), walls_.size(), 0});
@@ -71,7 +76,7 @@ World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
 Obstacles World::obstacles() const {
-    return {walls_, bumpers_, wall_index(), bumper_grid_ ? &*bumper_grid_ : nullptr, bumper_reach_};
+    return {walls_, bumpers_, wall_index(), bumper_grid_ ? &*bumper_grid_ : nullptr, bumper_reach_, balls_meet_};
 }
 
 const WallIndex* World::wall_index() const {
@@ -132,6 +137,7 @@ void World::start(std::vector<Event>& out) const {
 
 std::optional<StepError> World::step(std::vector<Event>& out) {
     ++frame_;
+    if (balls_meet_) return step_meeting(out);
     stepper_->step(kernel_, balls_, memories_, obstacles(), prefetch_ ? &*grid_ : nullptr);
     std::optional<StepError> error;
     for (std::size_t i = 0; i < balls_.size(); ++i) {
@@ -143,6 +149,45 @@ std::optional<StepError> World::step(std::vector<Event>& out) {
             out.push_back({h.bumper ? Event::Kind::bump : Event::Kind::hit, frame_, ball, Event::Shape::none, h.wall,
                            h.point, {}});
         out.push_back({Event::Kind::state, frame_, ball, Event::Shape::none, 0, balls_[i].pos, balls_[i].vel});
+    }
+    append_overlaps(out);
+    return error;
+}
+
+std::optional<StepError> World::step_meeting(std::vector<Event>& out) {
+    // Each ball alone through the frame (in parallel), then the frame's meets among them (meet.hpp), which re-step
+    // the balls that meet from their meets on.
+    frames_.resize(balls_.size());
+    for (std::size_t i = 0; i < balls_.size(); ++i) {
+        frames_[i].before = balls_[i];
+        frames_[i].memory = memories_[i];
+    }
+    stepper_->step(kernel_, balls_, memories_, obstacles(), prefetch_ ? &*grid_ : nullptr);
+    for (std::size_t i = 0; i < balls_.size(); ++i) {
+        BallFrame& f = frames_[i];
+        f.state = balls_[i];
+        f.status = stepper_->status(i);
+        const auto hits = stepper_->hits(i);
+        f.events.assign(hits.begin(), hits.end());
+    }
+    meets_.clear();
+    step_meets(kernel_, obstacles(), masses_, frames_, meets_, meet_scratch_);
+    std::optional<StepError> error;
+    for (std::size_t i = 0; i < balls_.size(); ++i) {
+        const auto ball = static_cast<std::uint32_t>(i);
+        BallFrame& f = frames_[i];
+        // A step that would leave the range left its ball where that step began.
+        if (f.status == FrameStatus::out_of_range && !error) error = StepError{frame_, ball, f.status, f.state};
+        balls_[i] = f.state;
+        for (const HitEvent& h : f.events) {
+            if (h.ball)
+                out.push_back({Event::Kind::meet, frame_, ball, Event::Shape::none, h.wall, h.point, h.out});
+            else
+                out.push_back({h.bumper ? Event::Kind::bump : Event::Kind::hit, frame_, ball, Event::Shape::none,
+                               h.wall, h.point, {}});
+        }
+        out.push_back({Event::Kind::state, frame_, ball, Event::Shape::none, 0, balls_[i].pos, balls_[i].vel});
+        paths_[i].swap(f.path);
     }
     append_overlaps(out);
     return error;

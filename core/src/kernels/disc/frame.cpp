@@ -127,9 +127,9 @@ std::optional<Vec2> nearest_allowed_neighbour(Vec2 q, Vec2 x, Vec2 d, double R, 
     return tied ? std::nullopt : best;
 }
 
-/// x, or the first point on the way back towards q whose piece from q is allowed (q itself at worst): the walk
-/// of path.hpp's make_safe, 1, 2, 4, … ulps of the piece's largest coordinate, then half the piece, then q.
-Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles, StepScratch& scratch) {
+}  // namespace
+
+Vec2 disc::walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles, StepScratch& scratch) {
     if (piece_allowed(q, x, R, obstacles, scratch)) return x;
     const Vec2 d = x - q;
     const double m = std::max({std::fabs(q.x), std::fabs(q.y), std::fabs(x.x), std::fabs(x.y)});
@@ -145,15 +145,14 @@ Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles, StepScratch
     return piece_allowed(q, half, R, obstacles, scratch) ? half : q;
 }
 
-}  // namespace
-
 FrameStatus disc::step_frame(Ball& ball, const Obstacles& obstacles, std::vector<HitEvent>& hits,
                              StepScratch& scratch, const Constructions& make) {
     // Degenerate: a ball at rest does no sweep.
     if (ball.vel == Vec2{}) return FrameStatus::ok;
     const double R = ball.r;
     Vec2 q = ball.pos, v = ball.vel;
-    double rest = 1.0, now = 0.0;
+    // A whole frame starts at 0; the rest of a frame after a meet at its time (StepScratch::start).
+    double rest = 1.0 - scratch.start, now = scratch.start;
     FrameStatus status = FrameStatus::ok;
     std::vector<Met> met;
     for (int bounce = 0;; ++bounce) {
@@ -205,7 +204,7 @@ FrameStatus disc::step_frame(Ball& ball, const Obstacles& obstacles, std::vector
             (first.bumper ? traced->bumped : traced->hit) = first.index;
             traced->hit_t = t;
         }
-        const Vec2 x = walk_back(q, at.x, R, obstacles, scratch);
+        const Vec2 x = disc::walk_back(q, at.x, R, obstacles, scratch);
         now += t * rest;
         hits.push_back({first.index, now, x, first.bumper});
         // Bounce about the first contact's normal at x, then about each other one met now that v′ goes into; if
@@ -224,6 +223,7 @@ FrameStatus disc::step_frame(Ball& ball, const Obstacles& obstacles, std::vector
                 break;
             }
         v = w;
+        hits.back().out = v;
         rest *= 1.0 - t;
         q = x;
     }

@@ -33,6 +33,11 @@ Constructions::Point nearest_contact_point(const Leg& leg, const Obstacle& o, co
 /// obstacle.
 Vec2 nearest_reflection(Vec2 v, Vec2 x, const Obstacle& o);
 
+/// x, or the first point on the way back towards q whose printed piece from q keeps a ball of radius R clear (the
+/// clearance rule of frame.cpp; q itself at worst): 1, 2, 4, … ulps of the piece's largest coordinate, x's
+/// neighbours, then half the piece, then q. A meet's rounded centre is placed by it too (meet.hpp).
+Vec2 walk_back(Vec2 q, Vec2 x, double R, const Obstacles& obstacles, StepScratch& scratch);
+
 /// One frame of a disc (or of a point ball in a scene with bumpers) among the obstacles: every decision exact,
 /// the constructions from make, every rounded contact point walked back until the piece to it keeps the disc
 /// clear (frame.cpp).

@@ -1,6 +1,7 @@
 // Internal: the exact kernel as a Kernel type (kernel.hpp), for the registry (registry.cpp).
 #pragma once
 
+#include "kernels/meet/response.hpp"
 #include "kernels/rect_tests.hpp"
 #include "ricochet/kernel.hpp"
 
@@ -38,6 +39,10 @@ struct ExactKernel {
                                  std::vector<HitEvent>& hits, StepScratch& scratch);
     /// step_disc bounces balls off bumpers too.
     static constexpr bool k_steps_bumpers = true;
+    /// Balls that meet: in exact time order on their paths (meet.hpp, docs/scene-log.md "Balls that meet").
+    static constexpr MeetRule k_meet_rule = MeetRule::swept;
+    /// The elastic response at a meet, each component the double nearest its exact value (response.hpp).
+    static bool respond(Ball& a, Ball& b, double ma, double mb) { return meet::respond_nearest(a, b, ma, mb); }
 };
 
 }  // namespace ricochet

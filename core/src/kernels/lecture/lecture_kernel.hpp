@@ -3,6 +3,7 @@
 // These kernels are the baseline that the harness must expose: do not fix them.
 #pragma once
 
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -78,6 +79,37 @@ struct LectureKernel {
     }
     /// step_disc bounces balls off bumpers too.
     static constexpr bool k_steps_bumpers = true;
+
+    /// Balls that meet, the lecture's way: the static test at the frame's end (meet_at_end).
+    static constexpr MeetRule k_meet_rule = MeetRule::end_of_frame;
+
+    /// Two balls at the frame's end through the lecture's static circle/circle test, in Real; overlapping and
+    /// approaching, they are pushed apart along the line of centres and bounce elastically (docs/scene-log.md,
+    /// "Balls that meet"). A pair that crossed within the frame never overlaps here: it passed through.
+    static bool meet_at_end(Ball& a, Ball& b, double ma, double mb) {
+        V pa = vec_cast<Real>(a.pos), pb = vec_cast<Real>(b.pos);
+        const V va = vec_cast<Real>(a.vel), vb = vec_cast<Real>(b.vel);
+        const Real S = static_cast<Real>(a.r) + static_cast<Real>(b.r);
+        const V n = pa - pb;
+        const Real d2 = dot(n, n);
+        // |B_a − B_b|² ≤ (R_a + R_b)², no square root; and approaching: (v_a − v_b)·(B_a − B_b) < 0.
+        if (!(d2 <= S * S) || !(dot(va - vb, n) < Real(0))) return false;
+        // Degenerate: coincident centres have no line between them.
+        const Real d = std::sqrt(d2);
+        if (!(d > Real(0))) return false;
+        const V nh{n.x / d, n.y / d};
+        const Real m_a = static_cast<Real>(ma), m_b = static_cast<Real>(mb), M = m_a + m_b;
+        // Push apart to distance S, each by its share of the overlap S − d.
+        const Real overlap = S - d;
+        pa = pa + nh * (overlap * (m_b / M));
+        pb = pb - nh * (overlap * (m_a / M));
+        // u = (v_a − v_b)·n̂;  v_a′ = v_a − 2·m_b/M·u·n̂,  v_b′ = v_b + 2·m_a/M·u·n̂
+        const Real u = dot(va - vb, nh);
+        const V wa = va - nh * (Real(2) * (m_b / M) * u), wb = vb + nh * (Real(2) * (m_a / M) * u);
+        a = {vec_cast<double>(pa), vec_cast<double>(wa), a.r};
+        b = {vec_cast<double>(pb), vec_cast<double>(wb), b.r};
+        return true;
+    }
 
 private:
     /// The animated point's answer against one wall, in Real.

@@ -2,6 +2,7 @@
 // kernels, which fall back on it for what a plug-in leaves out (plugin/plugin_kernel.cpp).
 #pragma once
 
+#include "kernels/meet/response.hpp"
 #include "kernels/rect_tests.hpp"
 #include "ricochet/kernel.hpp"
 
@@ -26,6 +27,10 @@ struct RobustKernel {
                                  std::vector<HitEvent>& hits, StepScratch& scratch);
     /// step_disc bounces balls off bumpers too.
     static constexpr bool k_steps_bumpers = true;
+    /// Balls that meet: in exact time order on their paths (meet.hpp, docs/scene-log.md "Balls that meet").
+    static constexpr MeetRule k_meet_rule = MeetRule::swept;
+    /// The elastic response at a meet, in doubles (response.hpp).
+    static bool respond(Ball& a, Ball& b, double ma, double mb) { return meet::respond_rounded(a, b, ma, mb); }
 };
 
 /// v reflected about the direction n ≠ 0: v − 2(v·n̂)n̂, robust's reflection (the speed bound of limits.hpp).

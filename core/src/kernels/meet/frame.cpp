@@ -1,0 +1,291 @@
+// One frame's meets (meet.hpp's step_meets; docs/scene-log.md, "Balls that meet"): the swept rule of robust and
+// exact, every decision exact (root.hpp), and the lecture's static test at the frame's end.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "kernels/disc/frame.hpp"
+#include "kernels/meet/root.hpp"
+#include "ricochet/meet.hpp"
+
+namespace ricochet {
+namespace {
+
+/// A box around a ball's path, widened by its radius.
+struct Box {
+    Vec2 lo, hi;
+};
+
+Box path_box(std::span<const PathPoint> path, double R) {
+    Box b{path.front().p, path.front().p};
+    for (const PathPoint& p : path) {
+        b.lo = {std::min(b.lo.x, p.p.x), std::min(b.lo.y, p.p.y)};
+        b.hi = {std::max(b.hi.x, p.p.x), std::max(b.hi.y, p.p.y)};
+    }
+    // Widened by R and a relative margin, so that a rounded box never leaves out a pair whose exact paths come
+    // within R_a + R_b (the exact decision is first_meet's).
+    const double m = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
+    const double pad = R + R * 0x1p-40 + m * 0x1p-40;
+    return {{b.lo.x - pad, b.lo.y - pad}, {b.hi.x + pad, b.hi.y + pad}};
+}
+
+bool boxes_overlap(const Box& a, const Box& b) {
+    return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
+}
+
+/// The path of a step from (t0, p0): its start, each contact at its time (never before the previous one, never
+/// after 1: rounded times), its end at 1.
+void build_path(std::vector<PathPoint>& path, double t0, Vec2 p0, std::span<const HitEvent> hits, Vec2 end) {
+    path.clear();
+    path.push_back({t0, p0});
+    for (const HitEvent& h : hits) path.push_back({std::clamp(h.t, path.back().t, 1.0), h.point});
+    path.push_back({1.0, end});
+}
+
+/// A meet found between two balls at some version of their paths.
+struct Candidate {
+    std::uint32_t a = 0, b = 0;
+    std::uint32_t version_a = 0, version_b = 0;
+    meet::Root root;
+};
+
+/// The heap's order: a comes out after b (later time; on an exact tie the higher pair).
+bool later(const Candidate& x, const Candidate& y) {
+    const int c = meet::compare(x.root, y.root);
+    if (c != 0) return c > 0;
+    return std::pair(x.a, x.b) > std::pair(y.a, y.b);
+}
+
+/// The swept rule: meets in exact time order on the balls' paths.
+class SweptFrame {
+public:
+    SweptFrame(KernelId k, const Obstacles& obstacles, std::span<const double> masses, std::span<BallFrame> balls,
+               std::vector<MeetRecord>& meets, StepScratch& scratch)
+        : k_(k), obstacles_(obstacles), masses_(masses), balls_(balls), meets_(meets), scratch_(scratch),
+          n_(balls.size()), seg_t_(n_, 0.0), seg_vel_(n_), version_(n_, 0), committed_(n_), done_(n_), box_(n_) {}
+
+    void run() {
+        for (std::size_t i = 0; i < n_; ++i) {
+            BallFrame& f = balls_[i];
+            seg_vel_[i] = f.before.vel;
+            build_path(f.path, 0.0, f.before.pos, f.events, f.state.pos);
+            box_[i] = path_box(f.path, f.before.r);
+        }
+        // Every pair whose boxes overlap, found by sorting the boxes along x.
+        order_.resize(n_);
+        for (std::uint32_t i = 0; i < n_; ++i) order_[i] = i;
+        std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
+            return box_[a].lo.x < box_[b].lo.x || (box_[a].lo.x == box_[b].lo.x && a < b);
+        });
+        for (std::size_t x = 0; x < n_; ++x)
+            for (std::size_t y = x + 1; y < n_ && box_[order_[y]].lo.x <= box_[order_[x]].hi.x; ++y)
+                consider(std::min(order_[x], order_[y]), std::max(order_[x], order_[y]), false);
+        const std::size_t limit = static_cast<std::size_t>(k_max_meets_per_ball) * n_;
+        std::size_t taken = 0;
+        while (!heap_.empty()) {
+            std::pop_heap(heap_.begin(), heap_.end(), later);
+            const Candidate c = std::move(heap_.back());
+            heap_.pop_back();
+            if (c.version_a != version_[c.a] || c.version_b != version_[c.b]) continue;  // a path it was found on changed
+            if (taken == limit) {
+                safe_stop(c.root.estimate);
+                break;
+            }
+            ++taken;
+            take(c);
+        }
+        for (std::size_t i = 0; i < n_; ++i) finish(i);
+    }
+
+private:
+    double radius(std::size_t i) const { return balls_[i].before.r; }
+
+    /// Searches the pair's next meet on the current paths; `just_met`: they met at the start of these paths, so a
+    /// meet at that very start is the one taken already (its response decided).
+    void consider(std::uint32_t a, std::uint32_t b, bool just_met) {
+        const double S = radius(a) + radius(b);
+        if (!(S > 0.0) || !boxes_overlap(box_[a], box_[b])) return;
+        const double from = std::max(seg_t_[a], seg_t_[b]);
+        std::optional<meet::Root> root = meet::first_meet(balls_[a].path, balls_[b].path, S, from);
+        if (root && just_met && bignum::sign(root->q) == 0 && meet::compare(*root, from) == 0) {
+            // The start-in-reach rule at the meet itself: search past it, from the next printed time on.
+            root.reset();
+            double next = 1.0;
+            for (const auto* p : {&balls_[a].path, &balls_[b].path})
+                for (const PathPoint& q : *p)
+                    if (q.t > from) {
+                        next = std::min(next, q.t);
+                        break;
+                    }
+            if (next > from) root = meet::first_meet(balls_[a].path, balls_[b].path, S, next);
+        }
+        if (!root) return;
+        heap_.push_back({a, b, version_[a], version_[b], std::move(*root)});
+        std::push_heap(heap_.begin(), heap_.end(), later);
+    }
+
+    /// Ball i's centre at frame time t on its current path, placed clear of the walls (walked back toward the
+    /// printed point the piece starts from), and the index of that point.
+    meet::PointOnPath place(std::size_t i, double t) {
+        const std::vector<PathPoint>& path = balls_[i].path;
+        meet::PointOnPath at = meet::point_at(path, t);
+        const Vec2 q = path[at.from].p;
+        if (at.x != q) at.x = disc::walk_back(q, at.x, radius(i), obstacles_, scratch_);
+        return at;
+    }
+
+    /// The velocity ball i has on the piece of its current path that starts at printed point k.
+    Vec2 velocity_on(std::size_t i, std::size_t k) const {
+        const BallFrame& f = balls_[i];
+        if (k == 0) return seg_vel_[i];
+        if (k <= f.events.size()) return f.events[k - 1].out;
+        return f.state.vel;
+    }
+
+    /// Ends ball i's current path at (t, x), reached from printed point k: its contacts up to k are kept, its path's
+    /// points up to k committed.
+    void cut(std::size_t i, std::size_t k) {
+        BallFrame& f = balls_[i];
+        const std::size_t kept = std::min(k, f.events.size());
+        done_[i].insert(done_[i].end(), f.events.begin(), f.events.begin() + static_cast<std::ptrdiff_t>(kept));
+        committed_[i].insert(committed_[i].end(), f.path.begin(),
+                             f.path.begin() + static_cast<std::ptrdiff_t>(std::min(k + 1, f.path.size())));
+    }
+
+    /// Ball i steps on from x at frame time t with velocity v: a new path.
+    void restart(std::size_t i, double t, Vec2 x, Vec2 v) {
+        BallFrame& f = balls_[i];
+        Ball ball{x, v, radius(i)};
+        BallMemory memory = f.memory;
+        f.events.clear();
+        scratch_.start = t;
+        f.status = step_ball(k_, ball, memory, obstacles_, f.events, scratch_);
+        scratch_.start = 0.0;
+        f.state = ball;
+        seg_t_[i] = t;
+        seg_vel_[i] = v;
+        build_path(f.path, t, x, f.events, ball.pos);
+        box_[i] = path_box(f.path, radius(i));
+        ++version_[i];
+    }
+
+    void take(const Candidate& c) {
+        const std::uint32_t a = c.a, b = c.b;
+        const double S = radius(a) + radius(b);
+        const double lo = std::max(seg_t_[a], seg_t_[b]);
+        double t = std::clamp(c.root.estimate, lo, 1.0);
+        // The printed centres, no closer than S (exactly): t taken earlier, 1, 2, 4, … ulps, then lo.
+        meet::PointOnPath pa = place(a, t), pb = place(b, t);
+        for (double step = std::max(std::fabs(t) * 0x1p-52, 0x1p-1074); meet::closer_than(pa.x, pb.x, S) && t > lo;
+             step *= 2.0) {
+            t = t - step > lo ? t - step : lo;
+            pa = place(a, t);
+            pb = place(b, t);
+        }
+        Ball ba{pa.x, velocity_on(a, pa.from), radius(a)}, bb{pb.x, velocity_on(b, pb.from), radius(b)};
+        MeetRecord record{a, b, t, pa.x, pb.x, ba.vel, bb.vel, {}, {}, false};
+        record.responded = kernel_ops(k_).respond(ba, bb, masses_[a], masses_[b]);
+        record.out_a = ba.vel;
+        record.out_b = bb.vel;
+        meets_.push_back(record);
+        cut(a, pa.from);
+        cut(b, pb.from);
+        done_[a].push_back({b, t, pa.x, false, true, ba.vel});
+        done_[b].push_back({a, t, pb.x, false, true, bb.vel});
+        restart(a, t, pa.x, ba.vel);
+        restart(b, t, pb.x, bb.vel);
+        for (std::uint32_t k = 0; k < n_; ++k) {
+            if (k != a) consider(std::min(a, k), std::max(a, k), k == b);
+            if (k != b && k != a) consider(std::min(b, k), std::max(b, k), false);
+        }
+    }
+
+    /// The bound of meets reached: every ball stops where its path is at time t (placed as a meet's centre is),
+    /// keeping the velocity it has there.
+    void safe_stop(double t) {
+        for (std::size_t i = 0; i < n_; ++i) {
+            const double at = std::max(t, seg_t_[i]);
+            const meet::PointOnPath p = place(i, at);
+            const Vec2 v = velocity_on(i, p.from);
+            cut(i, p.from);
+            BallFrame& f = balls_[i];
+            f.events.clear();
+            f.state = {p.x, v, radius(i)};
+            build_path(f.path, at, p.x, {}, p.x);
+        }
+    }
+
+    /// The frame's whole story of ball i: its committed contacts and points, then its current path's.
+    void finish(std::size_t i) {
+        BallFrame& f = balls_[i];
+        if (done_[i].empty() && committed_[i].empty()) return;
+        done_[i].insert(done_[i].end(), f.events.begin(), f.events.end());
+        f.events = std::move(done_[i]);
+        committed_[i].insert(committed_[i].end(), f.path.begin(), f.path.end());
+        f.path = std::move(committed_[i]);
+    }
+
+    KernelId k_;
+    const Obstacles& obstacles_;
+    std::span<const double> masses_;
+    std::span<BallFrame> balls_;
+    std::vector<MeetRecord>& meets_;
+    StepScratch& scratch_;
+    std::size_t n_;
+    std::vector<double> seg_t_;                    // the frame time each ball's current path starts at
+    std::vector<Vec2> seg_vel_;                    // the velocity it starts with
+    std::vector<std::uint32_t> version_;           // bumped when its path changes
+    std::vector<std::vector<PathPoint>> committed_;  // its path's points before the current path
+    std::vector<std::vector<HitEvent>> done_;      // its contacts before the current path, meets included
+    std::vector<Box> box_;
+    std::vector<std::uint32_t> order_;
+    std::vector<Candidate> heap_;
+};
+
+/// The lecture's rule: each ball stepped alone, then every pair whose boxes at the frame's end overlap, in index
+/// order, through the kernel's static test and push apart (meet_at_end).
+void end_of_frame(KernelId k, std::span<const double> masses, std::span<BallFrame> balls,
+                  std::vector<MeetRecord>& meets) {
+    const std::size_t n = balls.size();
+    for (BallFrame& f : balls) build_path(f.path, 0.0, f.before.pos, f.events, f.state.pos);
+    std::vector<std::uint32_t> order(n);
+    for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
+    const auto lo = [&](std::uint32_t i) { return balls[i].state.pos.x - balls[i].state.r; };
+    const auto hi = [&](std::uint32_t i) { return balls[i].state.pos.x + balls[i].state.r; };
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return lo(a) < lo(b) || (lo(a) == lo(b) && a < b);
+    });
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    for (std::size_t x = 0; x < n; ++x)
+        for (std::size_t y = x + 1; y < n && lo(order[y]) <= hi(order[x]); ++y)
+            pairs.emplace_back(std::min(order[x], order[y]), std::max(order[x], order[y]));
+    std::sort(pairs.begin(), pairs.end());
+    const KernelOps& ops = kernel_ops(k);
+    for (const auto& [a, b] : pairs) {
+        Ball& ba = balls[a].state;
+        Ball& bb = balls[b].state;
+        if (!(ba.r + bb.r > 0.0)) continue;
+        const Vec2 va = ba.vel, vb = bb.vel;
+        if (!ops.meet_at_end(ba, bb, masses[a], masses[b])) continue;
+        meets.push_back({a, b, 1.0, ba.pos, bb.pos, va, vb, ba.vel, bb.vel, true});
+        balls[a].events.push_back({b, 1.0, ba.pos, false, true, ba.vel});
+        balls[b].events.push_back({a, 1.0, bb.pos, false, true, bb.vel});
+        balls[a].path.push_back({1.0, ba.pos});
+        balls[b].path.push_back({1.0, bb.pos});
+    }
+}
+
+}  // namespace
+
+void step_meets(KernelId k, const Obstacles& obstacles, std::span<const double> masses, std::span<BallFrame> balls,
+                std::vector<MeetRecord>& meets, StepScratch& scratch) {
+    switch (kernel_ops(k).meet_rule) {
+        case MeetRule::none: return;
+        case MeetRule::end_of_frame: end_of_frame(k, masses, balls, meets); return;
+        case MeetRule::swept: SweptFrame(k, obstacles, masses, balls, meets, scratch).run(); return;
+    }
+}
+
+}  // namespace ricochet

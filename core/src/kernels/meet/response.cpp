@@ -1,0 +1,59 @@
+// The response at a meet (response.hpp).
+#include "kernels/meet/response.hpp"
+
+#include <cmath>
+
+#include "base/bignum.hpp"
+#include "base/round.hpp"
+
+namespace ricochet::meet {
+namespace {
+
+using bignum::Rational;
+
+double nearest(const Rational& q) { return bignum::round_quotient(bignum::numerator(q), bignum::denominator(q), 0); }
+
+}  // namespace
+
+bool approaching(const Ball& a, const Ball& b) {
+    const Rational nx = Rational(a.pos.x) - Rational(b.pos.x), ny = Rational(a.pos.y) - Rational(b.pos.y);
+    const Rational wx = Rational(a.vel.x) - Rational(b.vel.x), wy = Rational(a.vel.y) - Rational(b.vel.y);
+    return bignum::sign(Rational(wx * nx + wy * ny)) < 0;
+}
+
+bool respond_nearest(Ball& a, Ball& b, double ma, double mb) {
+    if (!approaching(a, b)) return false;
+    const Rational nx = Rational(a.pos.x) - Rational(b.pos.x), ny = Rational(a.pos.y) - Rational(b.pos.y);
+    const Rational wx = Rational(a.vel.x) - Rational(b.vel.x), wy = Rational(a.vel.y) - Rational(b.vel.y);
+    // u = (v_a − v_b)·n / (n·n); the impulse per unit mass, 2·u/(m_a + m_b), times the other's mass.
+    const Rational u = (wx * nx + wy * ny) / (nx * nx + ny * ny);
+    const Rational k = Rational(2) * u / (Rational(ma) + Rational(mb));
+    const Rational ka = k * Rational(mb), kb = k * Rational(ma);
+    a.vel = {nearest(Rational(a.vel.x) - ka * nx), nearest(Rational(a.vel.y) - ka * ny)};
+    b.vel = {nearest(Rational(b.vel.x) + kb * nx), nearest(Rational(b.vel.y) + kb * ny)};
+    return true;
+}
+
+bool respond_rounded(Ball& a, Ball& b, double ma, double mb) {
+    if (!approaching(a, b)) return false;
+    // n = X_a − X_b: exact where the centres are within a factor 2 of each other (Sterbenz), as meeting balls are
+    // unless one is near the origin.
+    const Vec2 n = a.pos - b.pos;
+    const double nn = dot(n, n);
+    const double M = ma + mb;
+    if (std::isnormal(nn) && std::isfinite(M)) {
+        const double u = dot(a.vel - b.vel, n) / nn;
+        // v_a′ = v_a − (2·m_b/M)·u·n, v_b′ = v_b + (2·m_a/M)·u·n.
+        const double ka = 2.0 * (mb / M) * u, kb = 2.0 * (ma / M) * u;
+        const Vec2 va = a.vel - ka * n, vb = b.vel + kb * n;
+        if (std::isfinite(va.x) && std::isfinite(va.y) && std::isfinite(vb.x) && std::isfinite(vb.y)) {
+            a.vel = va;
+            b.vel = vb;
+            return true;
+        }
+    }
+    // Degenerate: n·n under- or overflows in doubles: the exact response, rounded.
+    return respond_nearest(a, b, ma, mb);
+}
+
+}  // namespace ricochet::meet

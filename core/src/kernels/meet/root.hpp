@@ -1,0 +1,45 @@
+// Internal: when two balls' paths first come within S = R_i + R_j of each other (docs/scene-log.md, "Balls that
+// meet", 2 and 3), decided exactly on the printed doubles, and the order of two such times. A path is printed
+// points at frame times, the centre moving uniformly between consecutive ones, so on a common time interval the
+// relative position is linear in t with rational coefficients and the meet time a root of a quadratic.
+#pragma once
+
+#include <optional>
+#include <span>
+
+#include "base/bignum.hpp"
+#include "ricochet/meet.hpp"
+
+namespace ricochet::meet {
+
+/// A meet time, exactly: t = p + q·√r (r ≥ 0; q = 0 for a meet at the start of an interval), and its double
+/// estimate (within an ulp or two of the exact value; decisions never rest on it alone).
+struct Root {
+    bignum::Rational p, q, r;
+    double estimate = 0.0;
+};
+
+/// The first time at or after `from` at which paths a and b (each at least one point, times non-decreasing, the
+/// last at 1) come within S of each other while approaching: on each common interval [a, b] of a piece of one and
+/// a piece of the other, D(u) = D_a + W·u, the smaller root of |D(u)|² = S² with a + u in [a, b] (a double root,
+/// the tangent, is none), or a itself where |D_a| ≤ S and D_a·W < 0. Nothing if they do not meet by t = 1.
+std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const PathPoint> b, double S, double from);
+
+/// The sign of x − y, exactly.
+int compare(const Root& x, const Root& y);
+
+/// The sign of x − t for a double t, exactly.
+int compare(const Root& x, double t);
+
+/// The ball's centre at frame time t on its path (t within the path's times), correctly rounded: the piece holding
+/// t (the last one starting at or before t), and the index of the printed point it starts from.
+struct PointOnPath {
+    Vec2 x;
+    std::size_t from = 0;
+};
+PointOnPath point_at(std::span<const PathPoint> path, double t);
+
+/// |a − b|² < S², exactly.
+bool closer_than(Vec2 a, Vec2 b, double S);
+
+}  // namespace ricochet::meet

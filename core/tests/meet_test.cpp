@@ -1,0 +1,250 @@
+// Balls that meet (docs/scene-log.md, "Balls that meet"; kernels/meet/): the swept rule of robust and exact on
+// scenes worked by hand — head-on, unequal masses, a Newton's cradle, a glancing meet, fast balls that the lecture's
+// static test lets pass through, balls boxed in by walls — and the exact root order (root.hpp) on its own.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "kernels/meet/root.hpp"
+#include "ricochet/format.hpp"
+#include "ricochet/world.hpp"
+
+namespace ricochet {
+namespace {
+
+Scene meeting(std::vector<Ball> balls, std::int64_t frames = 1) {
+    Scene s;
+    s.frames = frames;
+    s.balls = std::move(balls);
+    s.balls_collide = true;
+    return s;
+}
+
+std::vector<Event> kinds(const std::vector<Event>& events, Event::Kind kind) {
+    std::vector<Event> out;
+    for (const Event& e : events)
+        if (e.kind == kind) out.push_back(e);
+    return out;
+}
+
+/// The balls' states at the end of the run.
+std::vector<Ball> last_states(const Scene& s, KernelId k) {
+    World w(s, k);
+    std::vector<Event> events;
+    w.start(events);
+    for (std::int64_t f = 0; f < s.frames; ++f) EXPECT_FALSE(w.step(events));
+    return {w.balls().begin(), w.balls().end()};
+}
+
+TEST(Meet, HeadOnEqualMassesExchangeVelocities) {
+    // Two unit discs 4 apart closing at 4 per frame: they touch (distance 2) at t = 0.5, at x = −1 and 1, and
+    // exchange velocities; the rest of the frame takes each back to where it started.
+    for (const KernelId k : {KernelId::robust, KernelId::exact}) {
+        const Scene s = meeting({{{-2, 0}, {2, 0}, 1}, {{2, 0}, {-2, 0}, 1}});
+        const std::vector<Event> events = run_scene(s, k, 1);
+        const std::vector<Event> meets = kinds(events, Event::Kind::meet);
+        ASSERT_EQ(meets.size(), 2u) << kernel_name(k);
+        EXPECT_EQ(meets[0].ball, 0u);
+        EXPECT_EQ(meets[0].index, 1u);
+        EXPECT_EQ(meets[0].pos, (Vec2{-1, 0}));
+        EXPECT_EQ(meets[0].vel, (Vec2{-2, 0}));
+        EXPECT_EQ(meets[1].ball, 1u);
+        EXPECT_EQ(meets[1].index, 0u);
+        EXPECT_EQ(meets[1].pos, (Vec2{1, 0}));
+        const std::vector<Ball> end = last_states(s, k);
+        EXPECT_EQ(end[0].pos, (Vec2{-2, 0}));
+        EXPECT_EQ(end[0].vel, (Vec2{-2, 0}));
+        EXPECT_EQ(end[1].pos, (Vec2{2, 0}));
+        EXPECT_EQ(end[1].vel, (Vec2{2, 0}));
+    }
+}
+
+TEST(Meet, WithoutBallsCollideTheyPassThrough) {
+    Scene s = meeting({{{-2, 0}, {2, 0}, 1}, {{2, 0}, {-2, 0}, 1}});
+    s.balls_collide = false;
+    const std::vector<Event> events = run_scene(s, KernelId::robust, 1);
+    EXPECT_TRUE(kinds(events, Event::Kind::meet).empty());
+    EXPECT_EQ(last_states(s, KernelId::robust)[0].pos, (Vec2{0, 0}));
+}
+
+TEST(Meet, UnequalMassesKeepMomentumAndEnergy) {
+    // m_a = 3 at 1, m_b = 1 at rest, head-on: v_a′ = (m_a − m_b)/(m_a + m_b)·1 = 0.5, v_b′ = 2m_a/(m_a + m_b) = 1.5.
+    Scene s = meeting({{{0, 0}, {1, 0}, 0.5}, {{1.5, 0}, {0, 0}, 0.5}});
+    s.masses = {3, 1};
+    for (const KernelId k : {KernelId::robust, KernelId::exact}) {
+        World w(s, k);
+        std::vector<Event> events;
+        w.start(events);
+        ASSERT_FALSE(w.step(events));
+        ASSERT_EQ(w.meets().size(), 1u);
+        const MeetRecord& m = w.meets()[0];
+        EXPECT_EQ(m.t, 0.5);
+        EXPECT_TRUE(m.responded);
+        EXPECT_EQ(m.out_a, (Vec2{0.5, 0}));
+        EXPECT_EQ(m.out_b, (Vec2{1.5, 0}));
+    }
+}
+
+TEST(Meet, NewtonsCradlePassesTheMomentumDownTheLine) {
+    // Five unit discs, four touching in a row, the first one arriving at 1 per frame: it meets the row at the end of
+    // frame 1 and stops there; the last one leaves at 1, within the same time; the middle ones do not move.
+    std::vector<Ball> balls{{{-3, 0}, {1, 0}, 1}};
+    for (int i = 0; i < 4; ++i) balls.push_back({{2.0 * i, 0}, {0, 0}, 1});
+    const Scene s = meeting(balls, 3);
+    for (const KernelId k : {KernelId::robust, KernelId::exact}) {
+        const std::vector<Ball> end = last_states(s, k);
+        EXPECT_EQ(end[0].vel, (Vec2{0, 0})) << kernel_name(k);
+        EXPECT_EQ(end[0].pos, (Vec2{-2, 0}));
+        for (int i = 1; i < 4; ++i) {
+            EXPECT_EQ(end[i].vel, (Vec2{0, 0})) << i;
+            EXPECT_EQ(end[i].pos, (Vec2{2.0 * (i - 1), 0})) << i;
+        }
+        EXPECT_EQ(end[4].vel, (Vec2{1, 0}));
+        EXPECT_EQ(end[4].pos, (Vec2{8, 0}));  // left ball 3's place (6) at the end of frame 1
+    }
+}
+
+TEST(Meet, GlancingMeetTurnsBothAlongTheLineOfCentres) {
+    // Ball 0 moving along x meets ball 1 at rest offset by 1 in y (S = 2): at contact the line of centres is at 30°
+    // to the motion; afterwards both move, their velocities at right angles (equal masses), momentum kept.
+    const Scene s = meeting({{{-4, 1}, {4, 0}, 1}, {{0, 0}, {0, 0}, 1}});
+    World w(s, KernelId::robust);
+    std::vector<Event> events;
+    w.start(events);
+    ASSERT_FALSE(w.step(events));
+    ASSERT_EQ(w.meets().size(), 1u);
+    const MeetRecord& m = w.meets()[0];
+    EXPECT_NEAR(m.out_a.x + m.out_b.x, 4.0, 1e-12);
+    EXPECT_NEAR(m.out_a.y + m.out_b.y, 0.0, 1e-12);
+    EXPECT_NEAR(dot(m.out_a, m.out_b), 0.0, 1e-12);
+    // The printed centres are no closer than S.
+    EXPECT_FALSE(meet::closer_than(m.pos_a, m.pos_b, 2.0));
+}
+
+TEST(Meet, FastBallsMeetUnderRobustAndPassThroughTheLecturesTest) {
+    // Two small discs crossing each other within one frame: robust meets them; the lecture's static test at the
+    // frame's end sees them far apart and lets them through.
+    const Scene s = meeting({{{-10, 0}, {20, 0}, 0.5}, {{10, 0}, {-20, 0}, 0.5}});
+    EXPECT_EQ(kinds(run_scene(s, KernelId::robust, 1), Event::Kind::meet).size(), 2u);
+    for (const KernelId k : {KernelId::lecture_double, KernelId::lecture_float}) {
+        EXPECT_TRUE(kinds(run_scene(s, k, 1), Event::Kind::meet).empty()) << kernel_name(k);
+        EXPECT_EQ(last_states(s, k)[0].pos, (Vec2{10, 0}));
+    }
+}
+
+TEST(Meet, LectureOverlapAtTheFrameEndIsPushedApart) {
+    // Slow balls that overlap at the frame's end: the lecture pushes them apart to S and bounces them.
+    const Scene s = meeting({{{-1.3, 0}, {0.5, 0}, 1}, {{1.3, 0}, {-0.5, 0}, 1}});
+    for (const KernelId k : {KernelId::lecture_double, KernelId::lecture_float}) {
+        const std::vector<Ball> end = last_states(s, k);
+        EXPECT_NEAR(end[0].pos.x, -1.0, 1e-6) << kernel_name(k);
+        EXPECT_NEAR(end[1].pos.x, 1.0, 1e-6);
+        EXPECT_EQ(end[0].vel, (Vec2{-0.5, 0}));
+        EXPECT_EQ(end[1].vel, (Vec2{0.5, 0}));
+    }
+}
+
+TEST(Meet, BallsInACorridorBounceBetweenWallsAndEachOther) {
+    // Two discs in a corridor closed at x = ±10, fast: over many frames they stay inside, never closer than S,
+    // and the total momentum along x changes only at the walls.
+    Scene s = meeting({{{-5, 0}, {3.7, 0}, 1}, {{5, 0}, {-2.3, 0}, 1}}, 200);
+    s.walls = {{{-10, -5}, {-10, 5}}, {{10, 5}, {10, -5}}, {{-10, 5}, {10, 5}}, {{10, -5}, {-10, -5}}};
+    for (const KernelId k : {KernelId::robust, KernelId::exact}) {
+        World w(s, k);
+        std::vector<Event> events;
+        w.start(events);
+        int meets = 0;
+        for (std::int64_t f = 0; f < s.frames; ++f) {
+            ASSERT_FALSE(w.step(events));
+            meets += static_cast<int>(w.meets().size());
+            const auto b = w.balls();
+            ASSERT_FALSE(meet::closer_than(b[0].pos, b[1].pos, 2.0)) << kernel_name(k) << " frame " << f + 1;
+            for (const Ball& ball : b) ASSERT_LE(std::fabs(ball.pos.x), 9.0) << f + 1;
+            for (const MeetRecord& m : w.meets()) ASSERT_FALSE(meet::closer_than(m.pos_a, m.pos_b, 2.0));
+        }
+        EXPECT_GT(meets, 20) << kernel_name(k);
+    }
+}
+
+TEST(Meet, TheSameRunOnEveryThreadCountAndBroadPhase) {
+    std::vector<Ball> balls;
+    for (int i = 0; i < 40; ++i) balls.push_back({{i * 2.5 - 50, (i % 7) * 3.0}, {(i % 5) - 2.0, (i % 3) - 1.0}, 1});
+    Scene s = meeting(balls, 30);
+    s.walls = {{{-60, -30}, {-60, 40}}, {{60, 40}, {60, -30}}, {{-60, 40}, {60, 40}}, {{60, -30}, {-60, -30}}};
+    const std::vector<Event> plain = run_scene(s, KernelId::robust, s.frames, {BroadPhase::none, 1});
+    EXPECT_FALSE(kinds(plain, Event::Kind::meet).empty());
+    EXPECT_EQ(run_scene(s, KernelId::robust, s.frames, {BroadPhase::grid, 2}), plain);
+}
+
+TEST(Meet, KernelsWithoutARuleRefuseTheScene) {
+    // The four built-in kernels step it; a kernel with no MeetRule refuses it before stepping anything.
+    const Scene s = meeting({{{-2, 0}, {2, 0}, 1}, {{2, 0}, {-2, 0}, 1}});
+    for (const KernelId k : k_all_kernels) EXPECT_NO_THROW(World(s, k)) << kernel_name(k);
+    KernelOps ops = kernel_ops(KernelId::robust);
+    ops.name = "test-no-meets";
+    ops.meet_rule = MeetRule::none;
+    const std::optional<KernelId> k = register_kernel(ops);
+    ASSERT_TRUE(k);
+    try {
+        World w(s, *k);
+        ADD_FAILURE() << "no refusal";
+    } catch (const UnsupportedScene& e) {
+        EXPECT_STREQ(e.what(), "kernel 'test-no-meets' does not step balls that meet ('balls collide')");
+    }
+    Scene apart = s;
+    apart.balls_collide = false;
+    EXPECT_NO_THROW(World(apart, *k));
+}
+
+TEST(MeetRoot, MeetTimesAreDecidedExactly) {
+    // Ball 0 from (−4, 0) to (0, 0), ball 1 at rest at the origin, S = 2: they touch at t = 1/2 exactly.
+    const std::vector<PathPoint> a0{{0, {-4, 0}}, {1, {0, 0}}}, still{{0, {0, 0}}, {1, {0, 0}}};
+    const auto ra = meet::first_meet(a0, still, 2.0, 0.0);
+    ASSERT_TRUE(ra);
+    EXPECT_EQ(ra->estimate, 0.5);
+    EXPECT_EQ(meet::compare(*ra, 0.5), 0);
+    EXPECT_EQ(meet::compare(*ra, std::nextafter(0.5, 1.0)), -1);
+    EXPECT_EQ(meet::compare(*ra, std::nextafter(0.5, 0.0)), 1);
+    // Searched from 3/4, where ball 0 is already within S and still approaching: a meet there (a scene that
+    // places balls overlapping).
+    const auto late = meet::first_meet(a0, still, 2.0, 0.75);
+    ASSERT_TRUE(late);
+    EXPECT_EQ(meet::compare(*late, 0.75), 0);
+    // A tangent is no meet: a path passing at exactly S.
+    const std::vector<PathPoint> b0{{0, {-2, 2}}, {1, {2, 2}}};
+    EXPECT_FALSE(meet::first_meet(b0, still, 2.0, 0.0));
+    // One ulp inside it: a meet, at t = 1/2 − √(4 − y²)/4, an irrational time just before 1/2.
+    const double y = std::nextafter(2.0, 0.0);
+    const std::vector<PathPoint> c0{{0, {-2, y}}, {1, {2, y}}};
+    const auto rc = meet::first_meet(c0, still, 2.0, 0.0);
+    ASSERT_TRUE(rc);
+    EXPECT_EQ(meet::compare(*rc, *ra), -1);
+    EXPECT_EQ(meet::compare(*ra, *rc), 1);
+    EXPECT_EQ(meet::compare(*rc, *rc), 0);
+    EXPECT_LT(rc->estimate, 0.5);
+    // Two balls touching and approaching meet at once; touching and leaving, never.
+    const std::vector<PathPoint> d0{{0, {-2, 0}}, {1, {-1, 0}}}, e0{{0, {-2, 0}}, {1, {-3, 0}}};
+    const auto rd = meet::first_meet(d0, still, 2.0, 0.0);
+    ASSERT_TRUE(rd);
+    EXPECT_EQ(meet::compare(*rd, 0.0), 0);
+    EXPECT_FALSE(meet::first_meet(e0, still, 2.0, 0.0));
+}
+
+TEST(MeetRoot, PointsOnAPathAreCorrectlyRounded) {
+    const std::vector<PathPoint> p{{0, {0, 0}}, {0.25, {1, 0}}, {1, {1, 3}}};
+    EXPECT_EQ(meet::point_at(p, 0.25).x, (Vec2{1, 0}));
+    EXPECT_EQ(meet::point_at(p, 0.25).from, 1u);
+    EXPECT_EQ(meet::point_at(p, 0.125).x, (Vec2{0.5, 0}));
+    // t = 0.5 on the second piece: 1/3 of the way, y = 1 exactly.
+    EXPECT_EQ(meet::point_at(p, 0.5).x, (Vec2{1, 1}));
+    EXPECT_EQ(meet::point_at(p, 1.0).x, (Vec2{1, 3}));
+    EXPECT_TRUE(meet::closer_than({0, 0}, {std::nextafter(2.0, 0.0), 0}, 2.0));
+    EXPECT_FALSE(meet::closer_than({0, 0}, {2, 0}, 2.0));
+}
+
+}  // namespace
+}  // namespace ricochet
