@@ -7,17 +7,17 @@
 #include <vector>
 
 #include "kernels/disc/frame.hpp"
+#include "kernels/meet/box_grid.hpp"
 #include "kernels/meet/root.hpp"
 #include "ricochet/meet.hpp"
 
 namespace ricochet {
 namespace {
 
-/// A box around a ball's path, widened by its radius.
-struct Box {
-    Vec2 lo, hi;
-};
+using meet::Box;
+using meet::boxes_overlap;
 
+/// A box around a ball's path, widened by its radius.
 Box path_box(std::span<const PathPoint> path, double R) {
     Box b{path.front().p, path.front().p};
     for (const PathPoint& p : path) {
@@ -29,10 +29,6 @@ Box path_box(std::span<const PathPoint> path, double R) {
     const double m = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
     const double pad = R + R * 0x1p-40 + m * 0x1p-40;
     return {{b.lo.x - pad, b.lo.y - pad}, {b.hi.x + pad, b.hi.y + pad}};
-}
-
-bool boxes_overlap(const Box& a, const Box& b) {
-    return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
 }
 
 /// The path of a step from (t0, p0): its start, each contact at its time (never before the previous one, never
@@ -73,15 +69,13 @@ public:
             build_path(f.path, 0.0, f.before.pos, f.events, f.state.pos);
             box_[i] = path_box(f.path, f.before.r);
         }
-        // Every pair whose boxes overlap, found by sorting the boxes along x.
-        order_.resize(n_);
-        for (std::uint32_t i = 0; i < n_; ++i) order_[i] = i;
-        std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
-            return box_[a].lo.x < box_[b].lo.x || (box_[a].lo.x == box_[b].lo.x && a < b);
-        });
-        for (std::size_t x = 0; x < n_; ++x)
-            for (std::size_t y = x + 1; y < n_ && box_[order_[y]].lo.x <= box_[order_[x]].hi.x; ++y)
-                consider(std::min(order_[x], order_[y]), std::max(order_[x], order_[y]), false);
+        // Every pair whose boxes overlap, found through a grid of the boxes.
+        grid_.emplace(box_);
+        for (std::uint32_t i = 0; i < n_; ++i) grid_->insert(i, box_[i]);
+        seen_.assign(n_, 0);
+        for (std::uint32_t i = 0; i < n_; ++i) neighbours(i, [&](std::uint32_t j) {
+                if (j > i) consider(i, j, false);
+            });
         const std::size_t limit = static_cast<std::size_t>(k_max_meets_per_ball) * n_;
         std::size_t taken = 0;
         while (!heap_.empty()) {
@@ -101,6 +95,18 @@ public:
 
 private:
     double radius(std::size_t i) const { return balls_[i].before.r; }
+
+    /// Calls f(j) once for every other ball j the grid lists near ball i's box.
+    template <class F>
+    void neighbours(std::uint32_t i, F&& f) {
+        ++stamp_;
+        seen_[i] = stamp_;
+        grid_->query(box_[i], [&](std::uint32_t j) {
+            if (seen_[j] == stamp_) return;
+            seen_[j] = stamp_;
+            f(j);
+        });
+    }
 
     /// Searches the pair's next meet on the current paths; `just_met`: they met at the start of these paths, so a
     /// meet at that very start is the one taken already (its response decided).
@@ -196,10 +202,15 @@ private:
         done_[b].push_back({a, t, pb.x, false, true, bb.vel});
         restart(a, t, pa.x, ba.vel);
         restart(b, t, pb.x, bb.vel);
-        for (std::uint32_t k = 0; k < n_; ++k) {
-            if (k != a) consider(std::min(a, k), std::max(a, k), k == b);
-            if (k != b && k != a) consider(std::min(b, k), std::max(b, k), false);
-        }
+        grid_->insert(a, box_[a]);
+        grid_->insert(b, box_[b]);
+        consider(a, b, true);
+        neighbours(a, [&](std::uint32_t k) {
+            if (k != b) consider(std::min(a, k), std::max(a, k), false);
+        });
+        neighbours(b, [&](std::uint32_t k) {
+            if (k != a) consider(std::min(b, k), std::max(b, k), false);
+        });
     }
 
     /// The bound of meets reached: every ball stops where its path is at time t (placed as a meet's centre is),
@@ -240,7 +251,9 @@ private:
     std::vector<std::vector<PathPoint>> committed_;  // its path's points before the current path
     std::vector<std::vector<HitEvent>> done_;      // its contacts before the current path, meets included
     std::vector<Box> box_;
-    std::vector<std::uint32_t> order_;
+    std::optional<meet::BoxGrid> grid_;
+    std::vector<std::uint32_t> seen_;  // the stamp of the last neighbours() call that listed the ball
+    std::uint32_t stamp_ = 0;
     std::vector<Candidate> heap_;
 };
 
