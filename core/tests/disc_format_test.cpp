@@ -86,8 +86,8 @@ TEST(DiscFormat, BadRadiiNameTheirPlace) {
     EXPECT_EQ(diag("ricochet 1\nball 0 0 1 1 0x1p257\n"),
               "t.scene:2:14: error: R 0x1p257 is outside the accepted range (finite, magnitude at most 2^256)");
     EXPECT_EQ(diag("ricochet 1\nball 0 0 1 1 1e999\n"), "t.scene:2:14: error: bad R: '1e999' is out of the range of a double");
-    EXPECT_EQ(diag("ricochet 1\nball 0 0 1 1 1 1\n"),
-              "t.scene:2:16: error: unexpected '1' after 'ball' (X Y VX VY [R] expected)");
+    EXPECT_EQ(diag("ricochet 1\nball 0 0 1 1 1 1 1\n"),
+              "t.scene:2:18: error: unexpected '1' after 'ball' (X Y VX VY [R [M]] expected)");
     EXPECT_EQ(diag("ricochet 1\nbumper 0 0 -1e-300\n"), "t.scene:2:12: error: negative radius -1e-300");
     EXPECT_EQ(diag("ricochet 1\nbumper 0 0\n"), "t.scene:2:11: error: 'bumper' needs X Y R: missing R");
     EXPECT_EQ(diag("ricochet 1\nbumper 0 0 1 2\n"), "t.scene:2:14: error: unexpected '2' after 'bumper' (X Y R expected)");

@@ -22,8 +22,8 @@ TEST(SceneLogDiagnostics, EscapeSequencesCannotReachTheTerminal) {
     EXPECT_EQ(diag("ricochet 1\nkernel \x7f\x08\n"),
               "t.scene:2:8: error: unknown kernel '\\x7f\\x08' (lecture-float, lecture-double, robust, exact)");
     // A lone CR inside a token is a separator, never shown: the token is cut there.
-    EXPECT_EQ(diag("ricochet 1\nball 0 0 1 1 1\r7\n"),
-              "t.scene:2:16: error: unexpected '7' after 'ball' (X Y VX VY [R] expected)");
+    EXPECT_EQ(diag("ricochet 1\nball 0 0 1 1 1 1\r7\n"),
+              "t.scene:2:18: error: unexpected '7' after 'ball' (X Y VX VY [R [M]] expected)");
 }
 
 TEST(SceneLogDiagnostics, ValidUtf8IsKeptEverythingElseEscaped) {
@@ -93,8 +93,8 @@ TEST(SceneLogDiagnostics, CrlfColumnsAreLfColumns) {
               "t.scene:2:12: error: 'rect' needs LEFT BOTTOM RIGHT TOP: missing TOP");  // the tab is a character
     EXPECT_EQ(diag("ricochet 1\r\nwall 0 0 1 # c\r\n"), "t.scene:2:12: error: 'wall' needs X0 Y0 X1 Y1: missing Y1");
     // Late in a line, on the last line without a line end, and at a token.
-    EXPECT_EQ(diag("ricochet 1\r\nball 0 0 1 1 1 7\r\n"),
-              "t.scene:2:16: error: unexpected '7' after 'ball' (X Y VX VY [R] expected)");
+    EXPECT_EQ(diag("ricochet 1\r\nball 0 0 1 1 1 1 7\r\n"),
+              "t.scene:2:18: error: unexpected '7' after 'ball' (X Y VX VY [R [M]] expected)");
     EXPECT_EQ(diag("ricochet 1\r\nwall 0 0 1\r"), "t.scene:2:11: error: 'wall' needs X0 Y0 X1 Y1: missing Y1");
     // A lone CR before a comment ends no line: it is a separator, a character of the line like the tab.
     EXPECT_EQ(diag("ricochet 1\nwall 0 0 1\r# c\n"), "t.scene:2:12: error: 'wall' needs X0 Y0 X1 Y1: missing Y1");

@@ -96,7 +96,7 @@ TEST(SceneLog, EveryMalformedKindNamesItsPlace) {
     const std::vector<Bad> cases = {
         {"unknown directive", "ricochet 1\nwal 0 0 1 1\n", "2:1: error: unknown directive 'wal'"},
         {"missing token", "ricochet 1\nwall 0 0 1\n", "2:11: error: 'wall' needs X0 Y0 X1 Y1: missing Y1"},
-        {"extra token", "ricochet 1\nball 0 0 1 1 1 7\n", "2:16: error: unexpected '7' after 'ball' (X Y VX VY [R] expected)"},
+        {"extra token", "ricochet 1\nball 0 0 1 1 1 1 7\n", "2:18: error: unexpected '7' after 'ball' (X Y VX VY [R [M]] expected)"},
         {"bad number", "ricochet 1\nball 0 0x 1 1\n", "2:8: error: bad Y: '0x' is not a number"},
         {"plus sign", "ricochet 1\nball +1 0 1 1\n", "2:6: error: bad X: '+1' is not a number"},
         {"double minus", "ricochet 1\nball --1 0 1 1\n", "2:6: error: bad X: '--1' is not a number"},
@@ -119,7 +119,7 @@ TEST(SceneLog, EveryMalformedKindNamesItsPlace) {
         {"unknown kernel", "ricochet 1\nkernel fast\n",
          "2:8: error: unknown kernel 'fast' (lecture-float, lecture-double, robust, exact)"},
         {"unknown check", "ricochet 1\ncheck speedy\n",
-         "2:7: error: unknown check 'speedy' (no-tunnel, symmetry, boundary, speed, deterministic, oracle, swap, translation, broad-phase, round-trip, no-escape, bounce-side, accuracy, event-order, penetration, ghost-bounce, plan)"},
+         "2:7: error: unknown check 'speedy' (no-tunnel, symmetry, boundary, speed, deterministic, oracle, swap, translation, broad-phase, round-trip, no-escape, bounce-side, accuracy, event-order, penetration, ghost-bounce, plan, ball-overlap, pass-through, momentum, relabel)"},
         {"duplicate check", "ricochet 1\ncheck speed\ncheck speed\n", "3:7: error: duplicate check 'speed'"},
         {"future version", "ricochet 2\n", "1:10: error: format version 2 is newer than this reader (it reads version 1)"},
         {"bad version", "ricochet one\n", "1:10: error: unknown format version 'one' (this reader reads version 1)"},

@@ -21,10 +21,10 @@ constexpr std::size_t k_from_limit = 64;
 constexpr std::int64_t k_frame_limit = 10'000'000;
 
 constexpr std::array<std::string_view, 4> k_kernels = {"lecture-float", "lecture-double", "robust", "exact"};
-constexpr std::array<std::string_view, 17> k_checks = {
+constexpr std::array<std::string_view, 21> k_checks = {
     "no-tunnel",   "symmetry",    "boundary",   "speed",     "deterministic", "oracle",   "swap",       "translation",
     "broad-phase", "round-trip",  "no-escape",  "bounce-side", "accuracy",    "event-order", "penetration",
-    "ghost-bounce", "plan"};
+    "ghost-bounce", "plan",       "ball-overlap", "pass-through", "momentum", "relabel"};
 
 template <std::size_t N>
 bool one_of(const std::array<std::string_view, N>& names, std::string_view s) {
@@ -140,14 +140,23 @@ private:
         } else if (d == "ball") {
             entity(balls_, "balls");
             // "Discs and bumpers": X Y VX VY and an optional radius R ≥ 0; R > 0 makes the ball a disc.
-            if (t.size() == 6) {
-                numbers(t, 5);
+            // "Balls that meet": then an optional mass M, 2^−256 ≤ M ≤ 2^256, which no domain line bounds.
+            if (t.size() >= 6) {
+                numbers(t, t.size() == 7 ? 6 : 5);
                 if (number(t[5]) < 0.0) reject("negative radius");
                 in_domain(t[5], false);
+                if (t.size() == 7 && !(number(t[6]) >= 0x1p-256 && number(t[6]) <= 0x1p256))
+                    reject("a mass outside [2^-256, 2^256]");
             } else {
                 numbers(t, 4);
             }
             in_domain(t[1], false), in_domain(t[2], false), in_domain(t[3], true), in_domain(t[4], true);
+        } else if (d == "balls") {
+            // "Balls that meet": exactly `balls collide`, once.
+            if (t.size() < 2) reject("'balls': the word collide is missing");
+            if (t[1] != "collide") reject("'balls' takes only 'collide'");
+            once(balls_collide_, "balls collide");
+            arity(t, 1);
         } else if (d == "circle") {
             entity(circles_, "circles");
             numbers(t, 3);
@@ -277,7 +286,7 @@ private:
 
     int line_ = 0;
     bool header_ = false, kernel_ = false, frames_seen_ = false, hash_seen_ = false, failure_seen_ = false,
-         found_seen_ = false;
+         found_seen_ = false, balls_collide_ = false;
     std::int64_t frames_ = 0;
     std::size_t walls_ = 0, balls_ = 0, circles_ = 0, rects_ = 0, bumpers_ = 0, froms_ = 0, states_seen_ = 0;
     std::vector<std::string_view> checks_;

@@ -75,7 +75,8 @@ TEST(GrammarAcceptor, Arities) {
     accepted(h + "wall 0 0 1 1\nball 0 0 1 1\ncircle 0 0 0\nrect 0 0 0 0\n");
     rejected_at(h + "wall 0 0 1\n", 2);
     accepted(h + "ball 0 0 1 1 7\n");  // a disc of radius 7
-    rejected_at(h + "ball 0 0 1 1 7 8\n", 2);
+    accepted(h + "ball 0 0 1 1 7 8\n");  // of mass 8
+    rejected_at(h + "ball 0 0 1 1 7 8 9\n", 2);
     rejected_at(h + "bumper 0 0\n", 2);
     rejected_at(h + "bumper 0 0 1 1\n", 2);
     rejected_at(h + "circle 0 0\n", 2);
@@ -101,7 +102,7 @@ TEST(GrammarAcceptor, CheckNames) {
     std::string all = h;
     for (const char* c : {"no-tunnel", "symmetry", "boundary", "speed", "deterministic", "oracle", "swap", "translation",
                           "broad-phase", "round-trip", "no-escape", "bounce-side", "accuracy", "event-order", "penetration",
-                          "ghost-bounce", "plan"})
+                          "ghost-bounce", "plan", "ball-overlap", "pass-through", "momentum", "relabel"})
         all += std::string("check ") + c + "\n";
     accepted(all);
     rejected_at(h + "check speedy\n", 2);
@@ -202,6 +203,31 @@ TEST(GrammarAcceptor, DiscsAndBumpers) {
     accepted(h + "check accuracy\nball 0 0 1 1 0.5\n");
     accepted(h + "check round-trip\ncheck oracle\nbumper 0 0 1\ncheck accuracy\n");
     rejected_at(h + "check accuracy\nbumper 0 0 1\nexpect state 0 1 0 0 0 0\n", 4);
+}
+
+TEST(GrammarAcceptor, BallsThatMeet) {
+    // `balls collide` once, anywhere after the header (before or after the domain lines and the entities).
+    accepted(h + "balls collide\nball 0 0 1 0 1\nball 5 0 -1 0 1\n");
+    accepted(h + "domain speed 1\nballs collide\nball 0 0 1 0\n");
+    accepted(h + "balls collide\ndomain speed 1\nball 0 0 1 0\n");  // it is no entity: a domain line may follow
+    accepted(h + "ball 0 0 1 0\nballs collide # solid\n");
+    rejected_at(h + "balls collide\nballs collide\n", 3);
+    rejected_at(h + "balls\n", 2);
+    rejected_at(h + "balls collide x\n", 2);
+    rejected_at(h + "balls collides\n", 2);
+    rejected_at(h + "balls Collide\n", 2);
+    rejected_at(h + "ball collide\n", 2);
+    // The mass: the sixth number, 2^−256 ≤ M ≤ 2^256, after R; balls without one have mass 1.
+    accepted(h + "ball 0 0 1 0 0 2\nball 0 0 1 0\nball 0 0 1 0 -0 0.5\n");
+    accepted(h + "ball 0 0 1 0 1 0x1p-256\nball 0 0 1 0 1 0x1p256\nball 0 0 1 0 1 1e-77\n");
+    for (const char* bad : {"0", "-0", "-1", "inf", "nan", "1e300", "4e-324", "0x1p-257", "0x1.0000000000001p256",
+                            "8e-78", "1e400", "x"})
+        rejected_at(h + "ball 0 0 1 0 1 " + bad + "\n", 2);
+    rejected_at(h + "ball 0 0 1 0 -1 1\n", 2);  // a negative radius, mass or not
+    // No domain line bounds a mass: it is no length.
+    accepted(h + "domain coordinates 1\ndomain no-subnormals\nball 0 0 1 0 1 1e70\n");
+    // The new checks are names like any other.
+    accepted(h + "balls collide\ncheck ball-overlap\ncheck pass-through\ncheck momentum\ncheck relabel\n");
 }
 
 TEST(GrammarAcceptor, RectCorners) {

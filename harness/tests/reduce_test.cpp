@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <variant>
@@ -165,6 +166,63 @@ TEST(Reduce, StaticShapesAreFoundAmongHundredsWithoutHints) {
     EXPECT_EQ(r.log.scene.circles[1], (Circle{{2.000000001, 0}, 1}));
     // Delta debugging over 600 circles for 2: tens of tries, not hundreds.
     EXPECT_LT(r.tries, 200u);
+    expect_reproduces(r);
+}
+
+// --- Balls that meet: a mass goes with its ball, `balls collide` stays
+
+/// ATunnelThroughOneOfManyWallsKeepsThatWallAndThatBall's scene, each ball with a mass (ball 3, the one that
+/// tunnels, has mass 5).
+Scene tunnel_among_masses() {
+    Scene s;
+    s.kernel = KernelId::lecture_double;
+    s.frames = 10;
+    for (int i = 0; i < 40; ++i) {
+        if (i == 20) s.walls.push_back({{0, 0}, {0, 4}});
+        s.walls.push_back({{100.0 + 3 * i, 50}, {100.0 + 3 * i, 51}});
+    }
+    for (int i = 0; i < 6; ++i) {
+        if (i == 3) s.balls.push_back({{-2, 6}, {1, -1}});
+        s.balls.push_back({{500.0 + i, 500}, {0, 0.5}});
+    }
+    s.masses = {2, 3, 4, 5, 6, 7, 8};
+    s.checks = {Check::no_tunnel};
+    return s;
+}
+
+TEST(Reduce, ABallCutOutTakesItsMassWithIt) {
+    using namespace detail::reduce;
+    const Scene s = tunnel_among_masses();
+    const Target target{Check::no_tunnel, {Check::no_tunnel}, std::nullopt};
+    std::optional<Failing> start = judge(s, s.kernel, target);
+    ASSERT_TRUE(start);
+    ReduceOptions options;
+    Trials trials(s.kernel, target, std::move(*start), options, 1);
+    cut_balls(trials);
+    // The failing ball alone, with its own mass: the masses stay one per ball.
+    EXPECT_EQ(trials.current().scene.balls, (std::vector<Ball>{{{-2, 6}, {1, -1}}}));
+    EXPECT_EQ(trials.current().scene.masses, std::vector<double>{5});
+}
+
+TEST(Reduce, MassesThatDoNotMatterAreDropped) {
+    // Without `balls collide` no mass changes the run: the reduced log is the one without masses.
+    const ReducedLog r = reduced(tunnel_among_masses());
+    EXPECT_EQ(r.log.scene.walls, (std::vector<Wall>{{{0, 0}, {0, 1}}}));
+    EXPECT_EQ(r.log.scene.balls, (std::vector<Ball>{{{-1, 0}, {1, 0}}}));
+    EXPECT_TRUE(r.log.scene.masses.empty());
+    EXPECT_NE(r.log.text().find("\nball -1 0 1 0\n"), std::string::npos) << r.log.text();
+    expect_reproduces(r);
+}
+
+TEST(Reduce, BallsCollideIsKept) {
+    // replays/lecture/float-statics-no-balls.scene's circles (oracle at frame 0, no ball to meet), the balls solid:
+    // the reduced log is still a case of solid balls.
+    Scene s = parse_ok("ricochet 1\nkernel lecture-float\nballs collide\ncircle 0 0 1\ncircle 2.000000001 0 1\n"
+                       "circle 50 50 1\ncheck oracle\n");
+    const ReducedLog r = reduced(s);
+    EXPECT_TRUE(r.log.scene.balls_collide);
+    EXPECT_EQ(r.after.circles, 2u);
+    EXPECT_NE(r.log.text().find("\nballs collide\n"), std::string::npos) << r.log.text();
     expect_reproduces(r);
 }
 

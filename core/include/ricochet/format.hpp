@@ -9,7 +9,7 @@
 //   Bumper   x y r              the `bumper` arguments
 //   Rect     left bottom right top
 //   Event    its `ricochet run` line, no newline: state F I X Y VX VY | hit F I W X Y | bump F I K X Y |
-//            overlap F I circle|rect K
+//            meet F I J X Y VX VY | overlap F I circle|rect K
 //   Side     outside | inside | on
 //   KernelId, Miss, Check       kernel_name, miss_name, check_name (width and fill specs work: "{:15}")
 #pragma once
@@ -127,6 +127,10 @@ struct fmt::formatter<ricochet::Event> : ricochet::detail::PlainFormatter {
             return fmt::format_to(ctx.out(), "hit {} {} {} {} {}", e.frame, e.ball, e.index, e.pos.x, e.pos.y);
         if (e.kind == Kind::bump)
             return fmt::format_to(ctx.out(), "bump {} {} {} {} {}", e.frame, e.ball, e.index, e.pos.x, e.pos.y);
+        // Ball I met ball J (index) with its centre at pos, and left with vel.
+        if (e.kind == Kind::meet)
+            return fmt::format_to(ctx.out(), "meet {} {} {} {} {} {} {}", e.frame, e.ball, e.index, e.pos.x, e.pos.y,
+                                  e.vel.x, e.vel.y);
         return fmt::format_to(ctx.out(), "overlap {} {} {} {}", e.frame, e.ball,
                               e.shape == ricochet::Event::Shape::circle ? "circle" : "rect", e.index);
     }

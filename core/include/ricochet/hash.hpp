@@ -1,15 +1,15 @@
 // The run hash: XXH64 (seed 0, libxxhash) over a fixed 56-byte little-endian record per event, in
 // event order. Record layout, byte offsets:
-//    0  u8   kind   (0 state, 1 hit, 2 overlap, 3 bump)
+//    0  u8   kind   (0 state, 1 hit, 2 overlap, 3 bump, 4 meet)
 //    1  u8   shape  (0 none, 1 circle, 2 rect)
 //    2  u16  zero
 //    4  u32  ball
 //    8  i64  frame  (two's complement)
-//   16  u32  index  (hit: the wall; bump: the bumper; overlap: the circle or rect; state: 0)
+//   16  u32  index  (hit: the wall; bump: the bumper; overlap: the circle or rect; meet: the other ball; state: 0)
 //   20  u32  zero
 //   24  u64  pos.x  IEEE-754 binary64 bit pattern (so -0 and +0 differ)
 //   32  u64  pos.y
-//   40  u64  vel.x  (hit, bump and overlap: 0.0)
+//   40  u64  vel.x  (meet: the velocity the ball leaves with; hit, bump and overlap: 0.0)
 //   48  u64  vel.y
 // Fields an event kind does not use are zero in Event and hashed as such.
 #pragma once

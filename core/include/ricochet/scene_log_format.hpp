@@ -50,8 +50,9 @@ enum class ExpectLines {
 SceneOrDiagnostic parse_scene_log(std::string_view text, std::string_view filename,
                                   ExpectLines expect_lines = ExpectLines::checked);
 
-/// The canonical text of a scene: header, `from` lines, kernel, frames, walls, balls, circles, rects, bumpers,
-/// checks, found, expect hash, expect failure, expect states; numbers in shortest round-trip form.
+/// The canonical text of a scene: header, `from` lines, kernel, frames, domain lines, `balls collide`, walls,
+/// balls (with R and M on every line when the scene has masses), circles, rects, bumpers, checks, found, expect
+/// hash, expect failure, expect states; numbers in shortest round-trip form.
 /// parse_scene_log(write_scene_log(s)) gives s back bit for bit.
 std::string write_scene_log(const Scene& scene);
 

@@ -94,6 +94,7 @@ public:
         }
         // A log with no directive at all: point at its start.
         if (!seen_header_) throw ParseError{1, 1, "empty log: expected the header 'ricochet 1'"};
+        if (any_mass_) scene_.masses = std::move(masses_);
         validate();
         if (expect_lines_ == ExpectLines::replaced) {
             scene_.expect_hash.reset();
@@ -170,6 +171,15 @@ private:
         return r;
     }
 
+    /// A ball's mass M in [2^−256, 2^256]: neither zero nor negative, and far from the ends of a double, so that
+    /// the meet's m_j/(m_i + m_j) neither overflows nor underflows. An error at its token otherwise.
+    double mass(std::size_t n) {
+        const double m = number(n, "M");
+        if (!(m >= 0x1p-256 && m <= 0x1p256))
+            fail(tokens_[n], fmt::format("mass {} is outside [2^-256, 2^256]", shown(tokens_[n].text)));
+        return m;
+    }
+
     std::int64_t integer(std::size_t n, std::string_view what) {
         const Token& t = arg(n, what);
         std::int64_t v = 0;
@@ -192,15 +202,19 @@ private:
             fail(tokens_[n], fmt::format("{} {} is subnormal, outside the log's domain (no-subnormals)", expected_word(n),
                                          shown(tokens_[n].text)));
     }
-    /// The name of argument n in the current directive's expected_ ("X0 Y0 X1 Y1": 1 is X0).
+    /// The name of argument n in the current directive's expected_ ("X0 Y0 X1 Y1": 1 is X0; "X Y VX VY [R [M]]": 5
+    /// is R, 6 is M).
     std::string_view expected_word(std::size_t n) const {
         std::string_view rest = expected_;
         for (std::size_t i = 1; i < n && !rest.empty(); ++i) {
             const auto space = rest.find(' ');
             rest = space == std::string_view::npos ? std::string_view{} : rest.substr(space + 1);
         }
-        const std::string_view word = rest.substr(0, rest.find(' '));
-        return word.starts_with('[') ? word.substr(1, word.size() - 2) : word;
+        std::string_view word = rest.substr(0, rest.find(' '));
+        // An optional argument's brackets are no part of its name.
+        while (word.starts_with('[')) word.remove_prefix(1);
+        while (word.ends_with(']')) word.remove_suffix(1);
+        return word;
     }
     /// An entity or check line: the domain is settled from here on.
     void settle_domain() { seen_entity_ = true; }
@@ -301,17 +315,30 @@ private:
                 fail(d, fmt::format("the wall is shorter than the log's domain (wall-length {})", *scene_.domain.wall_length));
             scene_.walls.push_back(w);
         } else if (name == "ball") {
-            expected_ = "X Y VX VY [R]";
+            expected_ = "X Y VX VY [R [M]]";
             count(scene_.balls.size(), k_max_entities, "balls");
             Ball b{{number(1, "X"), number(2, "Y")}, {number(3, "VX"), number(4, "VY")}};
             // The radius is optional: without it the ball is a point, as before radii existed.
             if (tokens_.size() > 5) b.r = radius(5);
-            no_more(6);
+            // So is the mass after it (balls that meet): without it the ball's mass is 1.
+            const double m = tokens_.size() > 6 ? mass(6) : 1.0;
+            no_more(7);
             settle_domain();
             in_domain(1, b.pos.x, false), in_domain(2, b.pos.y, false), in_domain(3, b.vel.x, true), in_domain(4, b.vel.y, true);
             if (tokens_.size() > 5) in_domain(5, b.r, false);
             if (is_disc(b) && !first_disc_) first_disc_ = Place{line_, tokens_[5].col};
             scene_.balls.push_back(b);
+            // Every ball's mass, kept until the end: the scene holds them only if some ball line gave one (a ball
+            // before the first mass has mass 1 too).
+            masses_.push_back(m);
+            any_mass_ = any_mass_ || tokens_.size() > 6;
+        } else if (name == "balls") {
+            expected_ = "collide";
+            const Token& what = arg(1, "the word collide");
+            if (what.text != "collide") fail(what, fmt::format("unknown '{}' after 'balls' (collide)", shown(what.text)));
+            if (scene_.balls_collide) fail(d, "duplicate 'balls collide'");
+            no_more(2);
+            scene_.balls_collide = true;
         } else if (name == "circle") {
             expected_ = "X Y R";
             count(scene_.circles.size(), k_max_entities, "circles");
@@ -497,6 +524,8 @@ private:
 
     std::string_view text_;
     Scene scene_;
+    std::vector<double> masses_;  // every ball's mass so far, 1 where its line gives none
+    bool any_mass_ = false;       // some ball line gave a mass: the scene gets masses_
     std::vector<Token> tokens_;
     std::vector<Place> state_places_;
     std::vector<Place> check_places_;    // each `check` line's name token, in scene_.checks' order
@@ -539,8 +568,19 @@ void write_body(std::string& out, const Scene& s, bool with_provenance_and_expec
     if (d.wall_length) fmt::format_to(it, "domain wall-length {}\n", *d.wall_length);
     if (d.no_subnormals) out += "domain no-subnormals\n";
     if (d.waive_touching) out += "domain waive touching\n";
+    if (s.balls_collide) out += "balls collide\n";
     for (const Wall& w : s.walls) fmt::format_to(it, "wall {}\n", w);
-    for (const Ball& b : s.balls) fmt::format_to(it, "ball {}\n", b);
+    if (s.masses.empty()) {
+        for (const Ball& b : s.balls) fmt::format_to(it, "ball {}\n", b);
+    } else {
+        // With masses every ball line gives R (+0 too: M is the sixth number) and M.
+        for (std::size_t i = 0; i < s.balls.size(); ++i) {
+            const Ball& b = s.balls[i];
+            // A guard: a Scene keeps one mass per ball; one that lost count writes the default for the rest.
+            const double m = i < s.masses.size() ? s.masses[i] : 1.0;
+            fmt::format_to(it, "ball {} {} {} {} {} {}\n", b.pos.x, b.pos.y, b.vel.x, b.vel.y, b.r, m);
+        }
+    }
     for (const Circle& c : s.circles) fmt::format_to(it, "circle {}\n", c);
     for (const Rect& r : s.rects) fmt::format_to(it, "rect {}\n", r);
     for (const Bumper& b : s.bumpers) fmt::format_to(it, "bumper {}\n", b);
@@ -577,6 +617,8 @@ bool same_bits(const Scene& a, const Scene& b) {
     if (!all(a.walls, b.walls) || !all(a.balls, b.balls) || !all(a.circles, b.circles) || !all(a.rects, b.rects) ||
         !all(a.bumpers, b.bumpers))
         return false;
+    for (std::size_t i = 0; i < a.masses.size(); ++i)
+        if (!same_bits(a.masses[i], b.masses[i])) return false;
     for (std::size_t i = 0; i < a.expect_states.size(); ++i)
         if (!same_bits(a.expect_states[i].state, b.expect_states[i].state)) return false;
     return true;

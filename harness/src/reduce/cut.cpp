@@ -7,11 +7,23 @@
 // each try runs a scene no larger than the last one that failed.
 #include <algorithm>
 #include <set>
+#include <type_traits>
 
 #include "reduce/passes.hpp"
 
 namespace ricochet::detail::reduce {
 namespace {
+
+/// Removes entities [i, end) of items; a ball takes its mass with it, so that masses stay one per ball.
+template <class T>
+void erase_range(Scene& s, std::vector<T> Scene::*items, std::size_t i, std::size_t end) {
+    std::vector<T>& v = s.*items;
+    v.erase(v.begin() + static_cast<std::ptrdiff_t>(i), v.begin() + static_cast<std::ptrdiff_t>(end));
+    if constexpr (std::is_same_v<T, Ball>)
+        if (!s.masses.empty())
+            s.masses.erase(s.masses.begin() + static_cast<std::ptrdiff_t>(i),
+                           s.masses.begin() + static_cast<std::ptrdiff_t>(end));
+}
 
 template <class T>
 void cut_chunks(Trials& trials, std::vector<T> Scene::*items, std::string_view pass) {
@@ -20,9 +32,8 @@ void cut_chunks(Trials& trials, std::vector<T> Scene::*items, std::string_view p
         for (std::size_t i = 0; i < (trials.current().scene.*items).size();) {
             if (trials.spent()) return;
             Scene candidate = trials.current().scene;
-            std::vector<T>& v = candidate.*items;
-            const std::size_t end = std::min(i + chunk, v.size());
-            v.erase(v.begin() + static_cast<std::ptrdiff_t>(i), v.begin() + static_cast<std::ptrdiff_t>(end));
+            const std::size_t end = std::min(i + chunk, (candidate.*items).size());
+            erase_range(candidate, items, i, end);
             // Kept: the entities after the chunk are now at i. Not kept: on past the chunk.
             if (!trials.attempt(std::move(candidate), pass)) i = end;
         }
@@ -43,6 +54,7 @@ void cut_balls(Trials& trials) {
     if (now.scene.balls.size() > 1 && b < now.scene.balls.size()) {
         Scene candidate = now.scene;
         candidate.balls = {now.scene.balls[b]};
+        if (!now.scene.masses.empty()) candidate.masses = {now.scene.masses[b]};
         trials.attempt(std::move(candidate), "balls");
     }
     cut_chunks(trials, &Scene::balls, "balls");

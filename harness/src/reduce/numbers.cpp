@@ -41,9 +41,11 @@ double to_digits(double x, int digits) {
     return v;
 }
 
-/// The entities whose numbers the pass simplifies, each with its numbers' count.
-enum class Kind { ball, wall, circle, rect, bumper };
-constexpr std::array k_kinds = {Kind::ball, Kind::wall, Kind::circle, Kind::rect, Kind::bumper};
+/// The entities whose numbers the pass simplifies, each with its numbers' count. A ball's mass is a kind of its
+/// own (one number per ball, while the scene has masses): rounding every mass at once is a candidate of its
+/// own, and a mass that cannot be rounded does not keep the balls' other numbers from it.
+enum class Kind { ball, wall, circle, rect, bumper, mass };
+constexpr std::array k_kinds = {Kind::ball, Kind::wall, Kind::circle, Kind::rect, Kind::bumper, Kind::mass};
 
 std::size_t count(const Scene& s, Kind kind) {
     switch (kind) {
@@ -52,13 +54,14 @@ std::size_t count(const Scene& s, Kind kind) {
         case Kind::circle: return s.circles.size();
         case Kind::rect: return s.rects.size();
         case Kind::bumper: return s.bumpers.size();
+        case Kind::mass: return s.masses.size();
     }
     return 0;
 }
 
 /// Number j of entity i of kind, in the log's order (`ball X Y VX VY R`, `wall X0 Y0 X1 Y1`, `circle X Y R`,
-/// `rect LEFT BOTTOM RIGHT TOP`, `bumper X Y R`); j < arity(kind). A ball's R is 0 for a point ball, which
-/// nothing simplifies further.
+/// `rect LEFT BOTTOM RIGHT TOP`, `bumper X Y R`, a ball's M); j < arity(kind). A ball's R is 0 for a point
+/// ball, which nothing simplifies further.
 /// (S: Scene or const Scene.)
 template <class S>
 auto& number(S& s, Kind kind, std::size_t i, int j) {
@@ -79,16 +82,21 @@ auto& number(S& s, Kind kind, std::size_t i, int j) {
             auto& c = s.bumpers[i];
             return j == 0 ? c.c.x : j == 1 ? c.c.y : c.r;
         }
+        case Kind::mass: return s.masses[i];
         case Kind::rect: break;
     }
     auto& r = s.rects[i];
     return j == 0 ? r.left : j == 1 ? r.bottom : j == 2 ? r.right : r.top;
 }
 
-int arity(Kind kind) { return kind == Kind::circle || kind == Kind::bumper ? 3 : kind == Kind::ball ? 5 : 4; }
+int arity(Kind kind) {
+    return kind == Kind::mass ? 1 : kind == Kind::circle || kind == Kind::bumper ? 3 : kind == Kind::ball ? 5 : 4;
+}
 
-/// True if entity i of kind is one a log may hold: R ≥ 0, LEFT ≤ RIGHT and BOTTOM ≤ TOP (docs/scene-log.md).
+/// True if entity i of kind is one a log may hold: R ≥ 0, LEFT ≤ RIGHT and BOTTOM ≤ TOP, a mass in [2^−256, 2^256]
+/// (docs/scene-log.md).
 bool valid(const Scene& s, Kind kind, std::size_t i) {
+    if (kind == Kind::mass) return s.masses[i] >= 0x1p-256 && s.masses[i] <= 0x1p256;
     if (kind == Kind::circle) return s.circles[i].r >= 0.0;
     if (kind == Kind::bumper) return s.bumpers[i].r >= 0.0;
     if (kind == Kind::ball) return s.balls[i].r >= 0.0;
@@ -146,9 +154,18 @@ void round_kind(Trials& trials, Kind kind) {
     }
 }
 
+/// Every mass 1: the scene without masses, a log whose ball lines say none (docs/scene-log.md, "Balls that meet").
+void drop_masses(Trials& trials) {
+    if (trials.current().scene.masses.empty() || trials.spent()) return;
+    Scene candidate = trials.current().scene;
+    candidate.masses.clear();
+    trials.attempt(std::move(candidate), "numbers");
+}
+
 }  // namespace
 
 void simplify_numbers(Trials& trials) {
+    drop_masses(trials);
     for (const Kind kind : k_kinds) round_kind(trials, kind);
     if (SceneSize::of(trials.current().scene).entities() > k_one_by_one_entities) return;
     for (const Kind kind : k_kinds) {

@@ -21,8 +21,8 @@ void cut_statics(Trials& trials);
 /// failing frame F, the first that fails kept (front.cpp).
 void cut_front_frames(Trials& trials);
 
-/// Numbers: each coordinate of each ball, wall, circle and rect in turn replaced by the first of its simpler
-/// numbers that keeps the failure (numbers.cpp).
+/// Numbers: the masses dropped (every mass 1), then each coordinate of each ball, wall, circle and rect, and
+/// each mass, in turn replaced by the first of its simpler numbers that keeps the failure (numbers.cpp).
 void simplify_numbers(Trials& trials);
 
 /// The numbers simpler than x, simplest first: fewer characters as the log prints them (shortest round

@@ -39,6 +39,8 @@ std::variant<ReducedLog, ReduceRefusal> reduce_log(const Scene& log, const Reduc
     bare.frames = run.failure ? run.failure->frame : run.error->frame;
     bare.walls = log.walls;
     bare.balls = log.balls;
+    bare.masses = log.masses;                // one per ball, or none
+    bare.balls_collide = log.balls_collide;  // kept: without it the balls pass through each other, another case
     bare.circles = log.circles;
     bare.rects = log.rects;
     bare.bumpers = log.bumpers;

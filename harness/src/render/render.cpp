@@ -188,6 +188,12 @@ std::vector<std::uint32_t> drawn_balls(std::size_t balls, std::uint32_t max, std
     return drawn;
 }
 
+/// True for a point of a ball's path inside a frame: a hit, a bump or a meet (docs/scene-log.md: a path is the state
+/// before the frame, these in order, then the state).
+bool bounce_point(const Event& e) {
+    return e.kind == Event::Kind::hit || e.kind == Event::Kind::bump || e.kind == Event::Kind::meet;
+}
+
 /// Keeps, frame by frame, the points of the drawn balls in frames first..last and the frame before the
 /// current one's positions of every ball (so the failing frame's path can start where it did): memory
 /// in the drawn points and the balls, not in the events.
@@ -220,8 +226,7 @@ public:
         if (!window_ || f <= window_->second) {
             for (const Event& e : events) {
                 if (e.kind == Event::Kind::overlap || e.ball >= slot_.size() || slot_[e.ball] < 0) continue;
-                recent_[static_cast<std::size_t>(slot_[e.ball])].push(
-                    e.pos, e.kind == Event::Kind::hit || e.kind == Event::Kind::bump, f);
+                recent_[static_cast<std::size_t>(slot_[e.ball])].push(e.pos, bounce_point(e), f);
             }
             if (!window_)
                 for (Path& p : recent_) p.keep_from(f - k_context_frames);
@@ -229,8 +234,8 @@ public:
         if (f < first_ || f > last_) return;
         for (const Event& e : events) {
             if (e.kind == Event::Kind::overlap || e.ball >= slot_.size() || slot_[e.ball] < 0) continue;
-            // The first frame's hits and bumps lie before its state, where the path starts.
-            const bool bounce = e.kind == Event::Kind::hit || e.kind == Event::Kind::bump;
+            // The first frame's hits, bumps and meets lie before its state, where the path starts.
+            const bool bounce = bounce_point(e);
             if (f == first_ && bounce) continue;
             Path& p = paths_[static_cast<std::size_t>(slot_[e.ball])];
             if (p.points.size() >= budget_) {
@@ -849,11 +854,16 @@ RenderResult render_run(const Scene& scene, KernelId kernel, const RenderOptions
     if (of_a_ball && !rec.draws(run.failure->ball)) {
         // The failing ball was not known while its path went by: step it again alone, without checks and
         // as run_checked's World did (CheckOptions' default WorldOptions), and draw it in place of the
-        // last ball drawn. The same bits: balls are independent and options change no event (world.hpp).
+        // last ball drawn. The same bits: balls that do not meet are independent and options change no event (world.hpp).
         const std::uint32_t failing = run.failure->ball;
+        // Balls that meet are not independent: then every ball is stepped again and the failing one drawn.
+        const bool together = scene.balls_collide;
         Scene alone = scene;
-        alone.balls = {scene.balls[failing]};
-        Recorder solo(alone, first, last, {0}, static_cast<std::uint32_t>(rec.budget()));
+        if (!together) {
+            alone.balls = {scene.balls[failing]};
+            if (!scene.masses.empty()) alone.masses = {scene.masses[failing]};
+        }
+        Recorder solo(alone, first, last, {together ? failing : 0u}, static_cast<std::uint32_t>(rec.budget()));
         World world(alone, kernel, CheckOptions{}.world);
         std::vector<Event> events;
         world.start(events);
