@@ -96,6 +96,15 @@ TEST(Meet, NewtonsCradlePassesTheMomentumDownTheLine) {
     for (int i = 0; i < 4; ++i) balls.push_back({{2.0 * i, 0}, {0, 0}, 1});
     const Scene s = meeting(balls, 3);
     for (const KernelId k : {KernelId::robust, KernelId::exact}) {
+        // The meet is at the very end of frame 1 (t = 1): the whole cascade happens then, and ball 4 ends frame 1
+        // already moving.
+        World w(s, k);
+        std::vector<Event> events;
+        w.start(events);
+        ASSERT_FALSE(w.step(events));
+        EXPECT_EQ(w.meets().size(), 4u) << kernel_name(k);
+        EXPECT_EQ(w.balls()[4].vel, (Vec2{1, 0}));
+        EXPECT_EQ(w.balls()[0].vel, (Vec2{0, 0}));
         const std::vector<Ball> end = last_states(s, k);
         EXPECT_EQ(end[0].vel, (Vec2{0, 0})) << kernel_name(k);
         EXPECT_EQ(end[0].pos, (Vec2{-2, 0}));

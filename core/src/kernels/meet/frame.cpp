@@ -114,7 +114,8 @@ private:
         const double S = radius(a) + radius(b);
         if (!(S > 0.0) || !boxes_overlap(box_[a], box_[b])) return;
         const double from = std::max(seg_t_[a], seg_t_[b]);
-        std::optional<meet::Root> root = meet::first_meet(balls_[a].path, balls_[b].path, S, from);
+        const Vec2 end_a = balls_[a].state.vel, end_b = balls_[b].state.vel;
+        std::optional<meet::Root> root = meet::first_meet(balls_[a].path, balls_[b].path, S, from, end_a, end_b);
         if (root && just_met && bignum::sign(root->q) == 0 && meet::compare(*root, from) == 0) {
             // The start-in-reach rule at the meet itself: search past it, from the next printed time on.
             root.reset();
@@ -125,7 +126,7 @@ private:
                         next = std::min(next, q.t);
                         break;
                     }
-            if (next > from) root = meet::first_meet(balls_[a].path, balls_[b].path, S, next);
+            if (next > from) root = meet::first_meet(balls_[a].path, balls_[b].path, S, next, end_a, end_b);
         }
         if (!root) return;
         heap_.push_back({a, b, version_[a], version_[b], std::move(*root)});

@@ -85,13 +85,14 @@ bool clearly_apart(const Piece& a, const Piece& b, double S, double c, double c2
     return dist > S + 0x1p-40 * m;
 }
 
-/// The piece's velocity and its point at c, exactly.
-void exact_motion(const Piece& s, double c, Rational& px, Rational& py, Rational& vx, Rational& vy) {
+/// The piece's velocity and its point at c, exactly; a piece of no duration (a ball at the end of its path) moves
+/// with `end`.
+void exact_motion(const Piece& s, double c, Rational& px, Rational& py, Rational& vx, Rational& vy, Vec2 end = {}) {
     if (s.t1 == s.t0) {
         px = Rational(s.p0.x);
         py = Rational(s.p0.y);
-        vx = 0;
-        vy = 0;
+        vx = Rational(end.x);
+        vy = Rational(end.y);
         return;
     }
     const Rational dt = Rational(s.t1) - Rational(s.t0);
@@ -104,7 +105,8 @@ void exact_motion(const Piece& s, double c, Rational& px, Rational& py, Rational
 
 }  // namespace
 
-std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const PathPoint> b, double S, double from) {
+std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const PathPoint> b, double S, double from,
+                               Vec2 end_a, Vec2 end_b) {
     if (a.empty() || b.empty() || !(S > 0.0)) return std::nullopt;
     double lo = std::max({from, a.front().t, b.front().t});
     // The common breakpoints after lo: every printed time of either path in (lo, 1].
@@ -123,8 +125,8 @@ std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const Pat
         const Piece pa = piece_at(a, c), pb = piece_at(b, c);
         if (clearly_apart(pa, pb, S, c, c2)) continue;
         Rational ax, ay, avx, avy, bx, by, bvx, bvy;
-        exact_motion(pa, c, ax, ay, avx, avy);
-        exact_motion(pb, c, bx, by, bvx, bvy);
+        exact_motion(pa, c, ax, ay, avx, avy, end_a);
+        exact_motion(pb, c, bx, by, bvx, bvy, end_b);
         // D(u) = D_a + W·u, u = t − c in [0, L].
         const Rational dx = ax - bx, dy = ay - by, wx = avx - bvx, wy = avy - bvy;
         const Rational qa = dx * dx + dy * dy - S2, B = dx * wx + dy * wy, A = wx * wx + wy * wy;

@@ -22,8 +22,11 @@ struct Root {
 /// The first time at or after `from` at which paths a and b (each at least one point, times non-decreasing, the
 /// last at 1) come within S of each other while approaching: on each common interval [a, b] of a piece of one and
 /// a piece of the other, D(u) = D_a + W·u, the smaller root of |D(u)|² = S² with a + u in [a, b] (a double root,
-/// the tangent, is none), or a itself where |D_a| ≤ S and D_a·W < 0. Nothing if they do not meet by t = 1.
-std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const PathPoint> b, double S, double from);
+/// the tangent, is none), or a itself where |D_a| ≤ S and D_a·W < 0. Nothing if they do not meet by t = 1. A path
+/// that ends at its start (a ball stepped on from a meet at t = 1) has no piece to take a velocity from: end_a and
+/// end_b, the velocities the balls end the frame with, stand for it there.
+std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const PathPoint> b, double S, double from,
+                               Vec2 end_a = {}, Vec2 end_b = {});
 
 /// The sign of x − y, exactly.
 int compare(const Root& x, const Root& y);
