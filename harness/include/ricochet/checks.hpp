@@ -217,6 +217,16 @@ inline constexpr double k_hit_accuracy_ulps = 256.0;
 /// the point back along the leg by at most about as much again (it doubles its step); 2^16 leaves a factor of 2.
 inline constexpr double k_disc_accuracy_ulps = 65536.0;
 
+/// The `momentum` check's bound on a meet's momentum, relative: each component of m_a·v_a′ + m_b·v_b′ − (m_a·v_a +
+/// m_b·v_b) at most this times m_a·|v_a|∞ + m_b·|v_b|∞ + m_a·|v_a′|∞ + m_b·|v_b′|∞. Robust computes the response in
+/// doubles, u = (Δv·n)/(n·n) and v′ = v − 2·m_b/(m_a + m_b)·u·n: a handful of roundings of ε = 2^−53 each, on terms no
+/// larger than those of the sum (m_a·2·m_b/(m_a + m_b) ≤ 2·min(m_a, m_b), |u·n| ≤ |Δv|); 2^−40 leaves a factor of
+/// 2^13 over ε.
+inline constexpr double k_meet_momentum_rel = 0x1p-40;
+/// The same for a meet's kinetic energy: (1 − this)·E ≤ E′ ≤ (1 + this)·E, E = m_a·|v_a|² + m_b·|v_b|² (the elastic
+/// response keeps it exactly; the rounded one errs by a few ε of E, as |v′|·|v| ≤ E/m).
+inline constexpr double k_meet_energy_rel = 0x1p-40;
+
 /// Where a path broke: the printed piece from → to and the wall it went through (no-tunnel).
 struct FailurePiece {
     Vec2 from;               ///< the piece's start

@@ -60,6 +60,10 @@ std::unique_ptr<FrameCheck> make_event_order(const Scene& scene, KernelId kernel
 std::unique_ptr<FrameCheck> make_penetration(const Scene& scene, KernelId kernel, const WorldOptions& world);
 std::unique_ptr<FrameCheck> make_ghost_bounce(const Scene& scene, KernelId kernel, const WorldOptions& world);
 std::unique_ptr<FrameCheck> make_plan(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_ball_overlap(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_pass_through(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_momentum(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_relabel(const Scene& scene, KernelId kernel, const WorldOptions& world);
 
 /// A failure of check c at frame f for ball.
 inline CheckFailure failure(Check c, std::int64_t f, std::uint32_t ball, std::string message) {

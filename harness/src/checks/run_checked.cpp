@@ -57,6 +57,10 @@ std::unique_ptr<FrameCheck> make_check(Check c, const Scene& scene, KernelId ker
         case Check::penetration: return make_penetration(scene, kernel, world);
         case Check::ghost_bounce: return make_ghost_bounce(scene, kernel, world);
         case Check::plan: return make_plan(scene, kernel, world);
+        case Check::ball_overlap: return make_ball_overlap(scene, kernel, world);
+        case Check::pass_through: return make_pass_through(scene, kernel, world);
+        case Check::momentum: return make_momentum(scene, kernel, world);
+        case Check::relabel: return make_relabel(scene, kernel, world);
     }
     return nullptr;
 }
