@@ -239,6 +239,22 @@ TEST(PassThrough, APairCloserThanSAtAnIntervalsStartIsNotJudgedThere) {
               "");
 }
 
+TEST(PassThrough, AThousandBallsAreSortedNotPaired) {
+    // 32 × 32 discs of radius 0.25 on a grid 1 apart, all moving (0.5, 0.25) in the frame; then ball 5, at (0, 5),
+    // moving across to (2, 5) through ball 37 at (1, 5).
+    std::vector<Vec2> at;
+    for (int i = 0; i < 32; ++i)
+        for (int j = 0; j < 32; ++j) at.push_back({1.0 * i, 1.0 * j});
+    const Scene s = discs(at, std::vector<double>(at.size(), 0.25));
+    std::vector<Event> along, across;
+    for (std::uint32_t b = 0; b < at.size(); ++b) {
+        along.push_back(state(1, b, {at[b].x + 0.5, at[b].y + 0.25}));
+        across.push_back(state(1, b, b == 5 ? Vec2{2, 5} : at[b]));
+    }
+    EXPECT_EQ(pass_verdict(s, {s.balls, along, {}}), "");
+    EXPECT_TRUE(has(pass_verdict(s, {s.balls, across, {}}), "ball 5: balls 5 and 37"));
+}
+
 // momentum: a frame's meets as the World records them, and the lines it printed.
 std::string momentum_verdict(const Scene& s, const std::vector<MeetRecord>& meets, std::vector<Event> events = {}) {
     // By default the lines the records say: ball a's meet and state, then ball b's (each leaves as it left the meet).
