@@ -17,6 +17,9 @@ Event hit(std::int64_t f, std::uint32_t ball, std::uint32_t wall) {
 Event bump(std::int64_t f, std::uint32_t ball, std::uint32_t bumper) {
     return {Event::Kind::bump, f, ball, Event::Shape::none, bumper, {}, {}};
 }
+Event meet(std::int64_t f, std::uint32_t ball, std::uint32_t other) {
+    return {Event::Kind::meet, f, ball, Event::Shape::none, other, {}, {}};
+}
 Event overlap(std::int64_t f, std::uint32_t ball, Event::Shape shape, std::uint32_t k) {
     return {Event::Kind::overlap, f, ball, shape, k, {}, {}};
 }
@@ -92,6 +95,41 @@ TEST(EventOrder, EachBreakIsNamed) {
     EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), state(1, 1), overlap(1, 0, K::rect, 1)}), "a circle or rect of the scene"));
     EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), state(1, 1), overlap(1, 2, K::circle, 0)}), "a circle or rect of the scene"));
     EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), state(1, 1), overlap(1, 0, K::none, 0)}), "a circle or rect of the scene"));
+}
+
+TEST(EventOrder, MeetsGoWithHitsAndPrintUnderBothBalls) {
+    Scene s = two_balls();
+    s.balls[0].r = 0.125;
+    s.balls_collide = true;
+    const auto has = [](const std::string& m, const char* what) { return m.find(what) != std::string::npos; };
+    // A meet among a ball's hits, in the order they happened; the same meet under the other ball.
+    EXPECT_EQ(verdict(s, 2, {hit(2, 0, 1), meet(2, 0, 1), hit(2, 0, 0), state(2, 0), meet(2, 1, 0), state(2, 1)}), "");
+    EXPECT_EQ(verdict(s, 2, {meet(2, 0, 1), meet(2, 0, 1), state(2, 0), meet(2, 1, 0), meet(2, 1, 0), state(2, 1)}), "");
+    // Printed under one ball only, or once under one and twice under the other.
+    EXPECT_TRUE(has(verdict(s, 1, {meet(1, 0, 1), state(1, 0), state(1, 1)}),
+                    "ball 0 prints 1 meet(s) with ball 1, ball 1 prints 0 with ball 0"));
+    EXPECT_TRUE(has(verdict(s, 1, {state(1, 0), meet(1, 1, 0), state(1, 1)}),
+                    "ball 0 prints 0 meet(s) with ball 1, ball 1 prints 1 with ball 0"));
+    EXPECT_TRUE(has(verdict(s, 1, {meet(1, 0, 1), meet(1, 0, 1), state(1, 0), meet(1, 1, 0), state(1, 1)}),
+                    "every meet prints under both its balls"));
+    // A meet naming its own ball, a ball the scene lacks, or with a shape; at frame 0; the wrong ball's turn.
+    EXPECT_TRUE(has(verdict(s, 1, {meet(1, 0, 0), state(1, 0), state(1, 1)}), "a meet names another ball of the scene"));
+    EXPECT_TRUE(has(verdict(s, 1, {meet(1, 0, 2), state(1, 0), state(1, 1)}), "a meet names another ball of the scene"));
+    Event shaped = meet(1, 0, 1);
+    shaped.shape = K::circle;
+    EXPECT_TRUE(has(verdict(s, 1, {shaped, state(1, 0), meet(1, 1, 0), state(1, 1)}), "and no shape"));
+    EXPECT_TRUE(has(verdict(s, 0, {meet(0, 0, 1), state(0, 0), meet(0, 1, 0), state(0, 1)}), "frame 0 has no meets"));
+    EXPECT_TRUE(has(verdict(s, 1, {meet(1, 1, 0), state(1, 0), state(1, 1)}), "ball 0's events come next"));
+    EXPECT_TRUE(has(verdict(s, 1, {meet(2, 0, 1), state(1, 0), meet(1, 1, 0), state(1, 1)}), "not this frame's number"));
+    // Balls that do not collide never meet; nor do two point balls.
+    Scene apart = s;
+    apart.balls_collide = false;
+    EXPECT_TRUE(has(verdict(apart, 1, {meet(1, 0, 1), state(1, 0), meet(1, 1, 0), state(1, 1)}),
+                    "a meet in a scene whose balls do not collide"));
+    Scene points = s;
+    points.balls[0].r = 0;
+    EXPECT_TRUE(has(verdict(points, 1, {meet(1, 0, 1), state(1, 0), meet(1, 1, 0), state(1, 1)}),
+                    "two point balls never meet"));
 }
 
 }  // namespace

@@ -135,6 +135,27 @@ TEST(Render, APathRunsThroughEveryStateAndHitInOrder) {
     EXPECT_TRUE(has(svg, "<circle cx=\"72.727\" cy=\"72.727\" r=\"5\" fill=\"#1f77b4\"/>"));
 }
 
+TEST(Render, AMeetIsARingOnThePathAndAHitADot) {
+    // Discs of radius 0.5 (their outlines stay inside the box, so the mapping is the box's): ball 0 meets ball 1 at
+    // (4, 1) in frame 1 and turns up to (4, 5); ball 1 meets it at (5, 1), bounces off wall 0 at (7, 0.5), ends at (9, 1).
+    Scene s = box_scene();
+    s.balls = {{{1, 1}, {4, 0}, 0.5}, {{9, 1}, {-4, 0}, 0.5}};
+    s.balls_collide = true;
+    CheckedRun run;
+    run.frames_run = 1;
+    run.events = {state(0, 0, {1, 1}), state(0, 1, {9, 1}),
+                  {Event::Kind::meet, 1, 0, Event::Shape::none, 1, {4, 1}, {0, 4}}, state(1, 0, {4, 5}),
+                  {Event::Kind::meet, 1, 1, Event::Shape::none, 0, {5, 1}, {4, 0}}, hit(1, 1, 0, {7, 0.5}),
+                  state(1, 1, {9, 1})};
+    const std::string svg = render_svg(s, run);
+    // A ring in each ball's colour where it met: (4, 1) ↦ (334.545, 661.818), (5, 1) ↦ (400, 661.818); ball 1's hit
+    // at (7, 0.5) ↦ (530.909, 694.545) a dot.
+    EXPECT_TRUE(has(svg, "<circle cx=\"334.545\" cy=\"661.818\" r=\"4\" fill=\"white\" stroke=\"#1f77b4\"")) << svg;
+    EXPECT_TRUE(has(svg, "<circle cx=\"400.000\" cy=\"661.818\" r=\"4\" fill=\"white\" stroke=\"#d62728\"")) << svg;
+    EXPECT_TRUE(has(svg, "<circle cx=\"530.909\" cy=\"694.545\" r=\"3\" fill=\"#d62728\"/>")) << svg;
+    EXPECT_EQ(count(svg, "r=\"4\""), 2u);
+}
+
 TEST(Render, AFrameRangeDrawsFromTheFirstFramesStateToTheLastFrames) {
     // Frames 1..2: frame 1's hit lies before its state (the ball reached it in frame 1), so the path
     // starts at frame 1's state (5, 5) and ends at frame 2's (10, 5); frame 3 is not drawn.

@@ -168,12 +168,59 @@
 //   plan           The scene stepped with every decision on the general exact path (WorldOptions::plan off, the
 //                  run's other options) prints the checked run's events bit for bit: the path a scene's plan picks
 //                  (wall_plan.hpp) changes the time a decision takes, never its answer.
+//   ball-overlap   In a scene whose balls collide: for each pair of balls i < j with S = R_i + R_j > 0, once the pair
+//                  has been at least S apart at a common printed time — the frame's end states (frame 0: the initial
+//                  ones), or the two centres of one of their meets (the k-th `meet F i j` line with the k-th `meet F
+//                  j i`) — it is at no later common printed time closer than S: |p_i − p_j|² ≥ S², exactly on the
+//                  printed doubles, S not rounded (truth::circle_reach_side). A pair the scene places closer than S is
+//                  held to it from its first common printed time at least S apart. Other scenes pass.
+//   pass-through   In a scene whose balls collide: for each frame and each pair i < j with S > 0, over each common
+//                  time interval [lo, hi] of a piece of each path (World::path: the ball's printed points — its state
+//                  before the frame at t = 0, its hit, bump and meet points in order, its state at t = 1 — at their
+//                  frame times, moving uniformly between; pieces of zero duration left out), a pair at least S apart
+//                  at lo stays at least S apart: with D(lo + u) = D + W·u (W the difference of the pieces'
+//                  velocities), |D + W·u|² ≥ S² for u in [0, hi − lo], its least at u* = −D·W/(W·W) where that lies
+//                  inside ((D × W)² ≥ S²·(W·W)), exactly in rationals (truth::pieces_clearance). The World's path
+//                  must be the ball's printed path, else the check fails for that ball; where the World gives none,
+//                  a ball that printed no contact in the frame moves along the straight piece from its state before to
+//                  its state after, and one that did is not judged. Other scenes pass. The lecture kernels fail it:
+//                  two balls that cross each other within a frame never overlap at its end.
+//   momentum       In a scene whose balls collide: for each meet the World took (World::meets(); masses m_a, m_b the
+//                  scene's, mass_of): the record is what the frame printed (its centres and the velocities it leaves
+//                  with are the two `meet` lines', the k-th record of a pair the k-th meet each ball printed with the
+//                  other; every printed meet is recorded), and so are its arriving velocities where the frame printed
+//                  them (a ball's state before the frame at its first contact, the velocity it left a meet with just
+//                  before). A meet with a response keeps momentum, each component of m_a·v_a′ + m_b·v_b′ − (m_a·v_a
+//                  + m_b·v_b) at most k_meet_momentum_rel (2^−40) times m_a·|v_a|∞ + m_b·|v_b|∞ + m_a·|v_a′|∞ +
+//                  m_b·|v_b′|∞, and kinetic energy, (1 − k)·E ≤ E′ ≤ (1 + k)·E with E = m_a·|v_a|² + m_b·|v_b|², k =
+//                  k_meet_energy_rel (2^−40), exactly (truth::meet_conservation); one without (the printed centres
+//                  did not approach) leaves both velocities as they were, exactly. Other scenes pass.
+//   relabel        In a scene whose balls collide: the scene with its balls, and their masses, in reverse order,
+//                  stepped in lockstep, prints per ball the run's events with ball i as ball N − 1 − i (a meet's
+//                  other ball too), by value (−0 = +0). Meets at the same time are taken pair by pair in index
+//                  order, so from a frame where two of the World's meets at the same (rounded) time share a ball, in
+//                  either run, the two may part: that frame and every later one are not compared. Other scenes pass.
 //
 // Discs and bumpers: every check is defined in a scene with a disc or a bumper: no-tunnel, speed, no-escape (each
 // as written above, read for the disc's centre: its printed path, its velocity; m counts the bounces off bumpers
 // and the corner reflections too), deterministic, broad-phase, round-trip, event-order (a bump names a bumper of
 // the scene and no shape), penetration, ghost-bounce, plan, and symmetry, swap, translation, boundary, bounce-side,
 // oracle and accuracy as read for discs above.
+//
+// Balls that meet: every check is defined in a scene whose balls collide (`balls collide`). A meet is a printed point
+// of the ball's path, as a bump is (no-tunnel, penetration and no-escape read it; bounce-side judges it and ends its
+// rule there, a ball having no side; ghost-bounce judges no hit a meet came before). event-order puts a ball's meets
+// among its hits and bumps (in the order they happened, which the lines cannot show), from frame 1 on, each naming
+// another ball of the scene, not two point balls, in a scene whose balls collide, and ball I printing as many meets
+// with J as J with I. Every ball is stepped by the disc frame (a point ball as a disc of radius 0): the disc readings
+// of oracle, accuracy, bounce-side and translation apply. A ball that met another in a frame (every ball, in a frame
+// whose meets reached the limit of 16·N) is not stepped again alone: its frame is not the one it makes alone, so it
+// has no trace, and speed, oracle (its legs and first contact) and accuracy do not judge it; ball-overlap,
+// pass-through and momentum do. The images of symmetry and swap and translation's moved scenes carry `balls collide`
+// and the masses (the balls in reverse order take theirs along, and relabel's exception holds for that image); a
+// meet's other ball maps like its ball; where first contacts are compared (swap, translation), a ball whose first
+// contact is a meet, in either run, is not, a meet being decided on paths of rounded contact points; and translation
+// counts a meet as a contact.
 //
 // speed, oracle and accuracy read the frame's StepTrace: each ball is stepped again from its state and memory before
 // the frame with a trace (the same wall index); that step must end in the run's state bit for bit, else
@@ -216,6 +263,16 @@ inline constexpr double k_hit_accuracy_ulps = 256.0;
 /// |d|∞ ≤ 2M that is 2^14·ε·M; B_i = q + t_i·d adds a few ε·M, and the walk back that keeps the piece clear moves
 /// the point back along the leg by at most about as much again (it doubles its step); 2^16 leaves a factor of 2.
 inline constexpr double k_disc_accuracy_ulps = 65536.0;
+
+/// The `momentum` check's bound on a meet's momentum, relative: each component of m_a·v_a′ + m_b·v_b′ − (m_a·v_a +
+/// m_b·v_b) at most this times m_a·|v_a|∞ + m_b·|v_b|∞ + m_a·|v_a′|∞ + m_b·|v_b′|∞. Robust computes the response in
+/// doubles, u = (Δv·n)/(n·n) and v′ = v − 2·m_b/(m_a + m_b)·u·n: a handful of roundings of ε = 2^−53 each, on terms no
+/// larger than those of the sum (m_a·2·m_b/(m_a + m_b) ≤ 2·min(m_a, m_b), |u·n| ≤ |Δv|); 2^−40 leaves a factor of
+/// 2^13 over ε.
+inline constexpr double k_meet_momentum_rel = 0x1p-40;
+/// The same for a meet's kinetic energy: (1 − this)·E ≤ E′ ≤ (1 + this)·E, E = m_a·|v_a|² + m_b·|v_b|² (the elastic
+/// response keeps it exactly; the rounded one errs by a few ε of E, as |v′|·|v| ≤ E/m).
+inline constexpr double k_meet_energy_rel = 0x1p-40;
 
 /// Where a path broke: the printed piece from → to and the wall it went through (no-tunnel).
 struct FailurePiece {

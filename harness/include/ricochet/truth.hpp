@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ricochet/kernel.hpp"
+#include "ricochet/meet.hpp"
 
 namespace ricochet::truth {
 
@@ -191,6 +192,32 @@ HitAccuracy disc_bounce_accuracy(Vec2 v, Vec2 x, const Wall* w, const Bumper* u,
 /// M = max(|from|∞, |to|∞, |R·v|∞): R rounded twice per hit (1 − t, then the product), R·v and the sum once
 /// each, and the underflow of those roundings. error: max |to − (from + R·v)| per component in units of ε·M.
 HitAccuracy leg_end_accuracy(Vec2 from, Vec2 v, std::span<const double> ts, Vec2 to);
+
+/// Two balls over a common time interval of their paths (`pass-through`): ball a on the piece a0 → a1, ball b on
+/// b0 → b1 (printed points with their frame times, each piece of positive duration, moving uniformly), over
+/// [lo, hi] = [max(a0.t, b0.t), min(a1.t, b1.t)] (lo < hi). There D(lo + u) = D + W·u, D = P_a(lo) − P_b(lo) and W the
+/// difference of the pieces' velocities, and with S = Ra + Rb (not rounded), exactly:
+struct PairClearance {
+    int start = 1;  ///< sign(|D|² − S²): the distance at lo against S
+    /// sign(min |D + W·u|² − S²) over u in [0, hi − lo]: at u* = −D·W/(W·W) where it lies inside, the minimum is
+    /// (D × W)²/(W·W); else at an end.
+    int least = 1;
+};
+PairClearance pieces_clearance(PathPoint a0, PathPoint a1, PathPoint b0, PathPoint b1, double Ra, double Rb);
+
+/// A meet's response against the laws it keeps (`momentum`): masses ma, mb arriving with va, vb, leaving with oa, ob;
+/// p = ma·v_a + mb·v_b and E = ma·|v_a|² + mb·|v_b|² (twice the kinetic energy) before and after, exactly.
+struct MeetConservation {
+    /// |p′ − p| ≤ momentum_rel·(ma·|va|∞ + mb·|vb|∞ + ma·|oa|∞ + mb·|ob|∞) in each component.
+    bool momentum_within = false;
+    /// (1 − energy_rel)·E ≤ E′ ≤ (1 + energy_rel)·E.
+    bool energy_within = false;
+    double momentum_error = 0.0;  ///< max |p′ − p| per component over the sum of the bound, rounded (for messages)
+    double energy_error = 0.0;    ///< |E′ − E| / E, rounded (for messages)
+};
+/// False for both laws when a velocity or a mass is not finite.
+MeetConservation meet_conservation(double ma, double mb, Vec2 va, Vec2 vb, Vec2 oa, Vec2 ob, double momentum_rel,
+                                   double energy_rel);
 
 /// kernel.hpp's no-tunnelling definition, followed independently of ricochet::TunnelChecker: a piece
 /// from one open side to the other through the closed segment, or arriving on the closed segment from

@@ -26,10 +26,11 @@ public:
 
     std::optional<CheckFailure> frame(const Frame& f) override {
         if (f.index == 0) return std::nullopt;
+        const std::vector<bool> met = met_in_frame(f, f.traces.size());
         for (std::uint32_t i = 0; i < f.traces.size(); ++i) {
             // The exact kernel's point legs are rational (not traced): its B_i is the exact crossing, rounded once;
-            // a plug-in's frame step shows no legs.
-            if (!f.traces[i].legs_traced) continue;
+            // a plug-in's frame step shows no legs; a ball that met another was not stepped alone (met_in_frame).
+            if (!f.traces[i].legs_traced || met[i]) continue;
             std::vector<const Event*> contacts;
             for (const Event& e : f.events)
                 if ((e.kind == Event::Kind::hit || e.kind == Event::Kind::bump) && e.ball == i) contacts.push_back(&e);

@@ -2,7 +2,8 @@
 // side until its next hit (BallMemory's rule, kernel.hpp), the next hit point included. A ball the disc frame
 // steps (a disc, or any ball among bumpers) is held to it after meeting a wall's face (the hit point's foot on
 // the segment: the bounce about ±n leaves the line behind), for its points whose foot is on the segment too
-// (beyond an end the path may pass around it); a cap or a bumper has no side, and a bump, like a hit, ends it.
+// (beyond an end the path may pass around it); a cap or a bumper has no side, and a bump, like a hit, ends it; so
+// does a meet with another ball (no side either).
 #include <fmt/format.h>
 
 #include "checks/frame_check.hpp"
@@ -15,7 +16,8 @@ namespace {
 class BounceSide final : public FrameCheck {
 public:
     explicit BounceSide(const Scene& scene)
-        : scene_(scene), at_(scene.balls.size()), kept_(scene.balls.size()), bumpers_(!scene.bumpers.empty()) {
+        : scene_(scene), at_(scene.balls.size()), kept_(scene.balls.size()),
+          bumpers_(!scene.bumpers.empty() || scene.balls_collide) {
         for (std::size_t i = 0; i < scene.balls.size(); ++i) at_[i] = scene.balls[i].pos;
     }
 
@@ -34,9 +36,10 @@ public:
                                             k.wall, k.from,
                                             e.kind == Event::Kind::hit    ? "hit point"
                                             : e.kind == Event::Kind::bump ? "bump point"
+                                            : e.kind == Event::Kind::meet ? "meet point"
                                                                           : "end of frame",
                                             e.pos));
-            if (e.kind == Event::Kind::bump) k = {};
+            if (e.kind == Event::Kind::bump || e.kind == Event::Kind::meet) k = {};
             if (e.kind == Event::Kind::hit) {
                 const Wall& w = scene_.walls[e.index];
                 // The side it met the wall from: that of the point it came from; coming along the line, the side
@@ -61,7 +64,7 @@ private:
     const Scene& scene_;
     std::vector<Vec2> at_;
     std::vector<Kept> kept_;
-    bool bumpers_;  ///< every ball is stepped by the disc frame
+    bool bumpers_;  ///< every ball is stepped by the disc frame (bumpers, or balls that collide)
 };
 
 }  // namespace

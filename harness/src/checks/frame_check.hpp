@@ -7,8 +7,10 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "ricochet/checks.hpp"
+#include "ricochet/meet.hpp"
 #include "ricochet/step_trace.hpp"
 
 namespace ricochet::checks {
@@ -20,6 +22,11 @@ struct Frame {
     std::span<const Ball> before;               ///< each ball before the frame (empty at frame 0)
     std::span<const BallMemory> memory_before;  ///< each ball's memory before the frame (empty at frame 0)
     std::span<const StepTrace> traces;          ///< each ball's frame as its kernel stepped it, if asked for
+    /// The frame's meets in the order the World took them (World::meets(); empty unless the balls collide).
+    std::span<const MeetRecord> meets{};
+    /// Each ball's path in the frame, its printed points with their frame times (World::path); empty where the World
+    /// gives none.
+    std::span<const std::span<const PathPoint>> paths{};
 };
 
 /// One check with its state between frames.
@@ -53,6 +60,10 @@ std::unique_ptr<FrameCheck> make_event_order(const Scene& scene, KernelId kernel
 std::unique_ptr<FrameCheck> make_penetration(const Scene& scene, KernelId kernel, const WorldOptions& world);
 std::unique_ptr<FrameCheck> make_ghost_bounce(const Scene& scene, KernelId kernel, const WorldOptions& world);
 std::unique_ptr<FrameCheck> make_plan(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_ball_overlap(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_pass_through(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_momentum(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_relabel(const Scene& scene, KernelId kernel, const WorldOptions& world);
 
 /// A failure of check c at frame f for ball.
 inline CheckFailure failure(Check c, std::int64_t f, std::uint32_t ball, std::string message) {
@@ -65,10 +76,22 @@ inline bool finite_leg(const TracedLeg& leg) {
     return std::isfinite(leg.from.x) && std::isfinite(leg.from.y) && std::isfinite(leg.to.x) && std::isfinite(leg.to.y);
 }
 
-/// A disc, or any ball among bumpers: the disc frame steps it (kernel.hpp, step_ball with obstacles), and the checks
-/// that read its legs read them by the disc rules.
+/// A disc, or any ball among bumpers or among balls that collide: the disc frame steps it (kernel.hpp, step_ball with
+/// obstacles), and the checks that read its legs read them by the disc rules.
 inline bool stepped_as_disc(const Scene& scene, std::uint32_t ball) {
-    return is_disc(scene.balls[ball]) || !scene.bumpers.empty();
+    return is_disc(scene.balls[ball]) || !scene.bumpers.empty() || scene.balls_collide;
+}
+
+/// The balls that met another in frame f (a `meet` of their own), or every ball where the frame's meets reached the
+/// limit (16·N, meet.hpp: there every ball stops where its path is at the last meet). Such a ball's frame is not the
+/// one it makes alone: the checks that step a ball again alone (run_checked's trace; speed, oracle and accuracy,
+/// which read it) leave it to ball-overlap, pass-through and momentum.
+inline std::vector<bool> met_in_frame(const Frame& f, std::size_t balls) {
+    const bool limit = !f.meets.empty() && f.meets.size() >= static_cast<std::size_t>(k_max_meets_per_ball) * balls;
+    std::vector<bool> met(balls, limit);
+    for (const Event& e : f.events)
+        if (e.kind == Event::Kind::meet && e.ball < balls) met[e.ball] = true;
+    return met;
 }
 
 /// The event printed the contact the leg took: a hit on its wall, or a bump on its bumper.

@@ -17,8 +17,9 @@ public:
         if (f.index == 0) return std::nullopt;
         std::vector<bool> seen(scene_.balls.size());
         for (const Event& e : f.events) {
-            if (e.kind != Event::Kind::hit && e.kind != Event::Kind::bump) continue;
-            // Only a ball's first hit or bump in the frame: it arrives with the velocity it had before the frame.
+            if (e.kind != Event::Kind::hit && e.kind != Event::Kind::bump && e.kind != Event::Kind::meet) continue;
+            // Only a ball's first hit or bump in the frame: it arrives with the velocity it had before the frame. A
+            // meet before it changed that velocity (the meet point is on the path like a bump's).
             if (seen[e.ball]) continue;
             seen[e.ball] = true;
             if (e.kind != Event::Kind::hit) continue;

@@ -4,6 +4,10 @@
 // order, so the image of the run is the run of the image (by value: −0 = +0). A wall walked the other way is
 // the same capsule, but robust rounds a face contact's t_i from the wall's first end point: there only the
 // decisions are the same, each ball's first contact at frames 0 and 1 (as `translation` compares them).
+// Balls that meet: a meet's `other ball` is mapped like the ball; the balls in reverse order take their masses along.
+// Meets at one time are taken pair by pair, the lowest pair first (docs/scene-log.md, "Balls that meet", 3), so with
+// the balls renumbered a frame where two meets at the same time share a ball (three balls at one point) may part:
+// from that frame on the image is not compared.
 #pragma once
 
 #include <optional>
@@ -24,7 +28,8 @@ struct SceneMap {
     bool first_contacts = false;    ///< compare each ball's first hit or bump at frames 0 and 1 only
 };
 
-/// The scene under m: walls, balls, bumpers, circles and rects mapped (a rect's corners re-sorted), radii kept.
+/// The scene under m: walls, balls, bumpers, circles and rects mapped (a rect's corners re-sorted), radii kept, the
+/// masses in the balls' order.
 Scene apply(const SceneMap& m, const Scene& s);
 
 /// The image of a scene stepped beside the run.
@@ -36,6 +41,10 @@ public:
     std::optional<CheckFailure> frame(Check c, const Frame& f);
 
 private:
+    /// The balls in reverse order, among balls that meet: the frame is one where two meets at the same time share a
+    /// ball (in the run or the image), and the image is compared no more.
+    bool parts(const Frame& f);
+
     Event mapped(Event e) const;
     std::uint32_t image_of(std::uint32_t ball) const;
 
@@ -44,6 +53,7 @@ private:
     World world_;
     std::vector<Event> events_;
     std::vector<std::vector<Event>> want_, got_;  // per ball of the image
+    bool parted_ = false;                          // the image is compared no more (parts())
 };
 
 }  // namespace ricochet::checks

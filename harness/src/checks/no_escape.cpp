@@ -28,7 +28,11 @@ public:
                 return failure(Check::no_escape, f.index, e.ball,
                                fmt::format("the ball started strictly {} the closed walls, but its {} {} is strictly {}",
                                            from > 0 ? "inside" : "outside",
-                                           e.kind == Event::Kind::hit ? "hit point" : "end of frame", e.pos,
+                                           e.kind == Event::Kind::hit    ? "hit point"
+                                           : e.kind == Event::Kind::bump ? "bump point"
+                                           : e.kind == Event::Kind::meet ? "meet point"
+                                                                         : "end of frame",
+                                           e.pos,
                                            from > 0 ? "outside" : "inside"));
         }
         return std::nullopt;

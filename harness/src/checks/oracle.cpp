@@ -24,8 +24,12 @@ public:
             if (auto bad = statics()) return bad;
         if (auto bad = positions(f)) return bad;
         if (f.index == 0) return std::nullopt;
-        for (std::uint32_t i = 0; i < f.before.size(); ++i)
+        // A ball that met another was not stepped alone: it has no legs of its own to judge (met_in_frame).
+        const std::vector<bool> met = met_in_frame(f, f.before.size());
+        for (std::uint32_t i = 0; i < f.before.size(); ++i) {
+            if (met[i]) continue;
             if (auto bad = stepped_as_disc(scene_, i) ? discs_.legs(f, i) : legs(f, i)) return bad;
+        }
         return std::nullopt;
     }
 

@@ -98,7 +98,10 @@ std::optional<CheckFailure> DiscOracle::first_contact(const Frame& f, std::uint3
     BallMemory memory = f.memory_before[i];
     hits_.clear();
     // A frame that leaves the accepted range changes nothing: no exact frame to compare with.
-    if (step_ball(KernelId::exact, ball, memory, Obstacles{scene_.walls, scene_.bumpers}, hits_, scratch_) ==
+    // Among balls that collide every ball is stepped as a disc, a point ball too (Obstacles::balls_meet).
+    Obstacles obstacles{scene_.walls, scene_.bumpers};
+    obstacles.balls_meet = scene_.balls_collide;
+    if (step_ball(KernelId::exact, ball, memory, obstacles, hits_, scratch_) ==
         FrameStatus::out_of_range)
         return std::nullopt;
     const auto name = [](std::optional<Printed> c) {

@@ -57,6 +57,10 @@ std::unique_ptr<FrameCheck> make_check(Check c, const Scene& scene, KernelId ker
         case Check::penetration: return make_penetration(scene, kernel, world);
         case Check::ghost_bounce: return make_ghost_bounce(scene, kernel, world);
         case Check::plan: return make_plan(scene, kernel, world);
+        case Check::ball_overlap: return make_ball_overlap(scene, kernel, world);
+        case Check::pass_through: return make_pass_through(scene, kernel, world);
+        case Check::momentum: return make_momentum(scene, kernel, world);
+        case Check::relabel: return make_relabel(scene, kernel, world);
     }
     return nullptr;
 }
@@ -84,7 +88,7 @@ namespace {
 class Checker {
 public:
     Checker(const Scene& scene, KernelId kernel, std::span<const Check> checks, const WorldOptions& world)
-        : kernel_(kernel) {
+        : kernel_(kernel), balls_collide_(scene.balls_collide) {
         for (Check c : checks) {
             checks_.push_back(make_check(c, scene, kernel, world));
             if (checks_.back()->needs_traces() && !tracer_) tracer_ = c;
@@ -93,6 +97,13 @@ public:
     }
 
     std::optional<CheckFailure> run(const World& world, Frame f) {
+        // Balls that meet: the frame's meets and each ball's path, as the World took them.
+        f.meets = world.meets();
+        if (balls_collide_) {
+            paths_.clear();
+            for (std::size_t i = 0; i < world.balls().size(); ++i) paths_.push_back(world.path(i));
+            f.paths = paths_;
+        }
         if (tracer_ && f.index > 0) {
             if (auto bad = trace(world, f)) return failure(*tracer_, f.index, bad->first, std::move(bad->second));
             f.traces = traces_;
@@ -108,12 +119,15 @@ public:
 
 private:
     /// Steps each ball again from its state before the frame, with a trace; the step is deterministic,
-    /// so it must end where the run's did (else the ball and why).
+    /// so it must end where the run's did (else the ball and why). A ball that met another in the frame is not
+    /// stepped alone (its trace stays empty, and the checks that read traces do not judge it: met_in_frame).
     std::optional<std::pair<std::uint32_t, std::string>> trace(const World& world, const Frame& f) {
+        const std::vector<bool> met = met_in_frame(f, f.before.size());
         for (std::size_t i = 0; i < f.before.size(); ++i) {
+            traces_[i].clear();
+            if (met[i]) continue;
             Ball ball = f.before[i];
             BallMemory memory = f.memory_before[i];
-            traces_[i].clear();
             hits_.clear();
             scratch_.trace = &traces_[i];
             traces_[i].stopped_at_limit =
@@ -129,6 +143,8 @@ private:
     }
 
     KernelId kernel_;
+    bool balls_collide_;
+    std::vector<std::span<const PathPoint>> paths_;  ///< the frame's paths, one per ball (balls that collide)
     std::vector<std::unique_ptr<FrameCheck>> checks_;
     std::optional<Check> tracer_;  ///< the first check that reads traces: a bad trace is its failure
     std::vector<StepTrace> traces_;

@@ -41,8 +41,10 @@ public:
                                                v, i, r));
             }
         }
+        // A ball that met another: its velocity is the meet's (momentum judges it), not its reflections'.
+        const std::vector<bool> met = met_in_frame(f, f.before.size());
         for (const Event& e : f.events) {
-            if (e.kind != Event::Kind::state) continue;
+            if (e.kind != Event::Kind::state || met[e.ball]) continue;
             const Vec2 v0 = f.before[e.ball].vel, v1 = e.vel;
             // Nothing changed: nothing to bound (the common frame, decided without arithmetic).
             if (v0 == v1) continue;

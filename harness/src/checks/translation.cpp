@@ -1,5 +1,6 @@
 // translation: moving the whole scene by an offset that rounds nothing changes no decision (for a disc: its
-// first contact in frames 0 and 1, the one its exact decisions reach before any rounded construction).
+// first contact in frames 0 and 1, the one its exact decisions reach before any rounded construction; not a meet,
+// which is decided on paths of rounded contact points).
 #include <fmt/format.h>
 
 #include <array>
@@ -42,22 +43,42 @@ Scene moved(const Scene& s, Vec2 t) {
     return out;
 }
 
+/// What each ball did in a frame, for the decisions below: whether it met anything (a hit, a bump or a meet), and
+/// whether its first contact was a meet.
+struct Contacts {
+    std::vector<bool> met, meet_first;
+    Contacts(std::span<const Event> events, std::size_t balls) : met(balls, false), meet_first(balls, false) {
+        for (const Event& e : events) {
+            if (e.kind != Event::Kind::hit && e.kind != Event::Kind::bump && e.kind != Event::Kind::meet) continue;
+            if (!met[e.ball]) meet_first[e.ball] = e.kind == Event::Kind::meet;
+            met[e.ball] = true;
+        }
+    }
+    /// Both runs' together: a ball counts as having met something, or met a ball first, if it did in either.
+    void add(const Contacts& o) {
+        for (std::size_t i = 0; i < met.size(); ++i) {
+            met[i] = met[i] || o.met[i];
+            meet_first[i] = meet_first[i] || o.meet_first[i];
+        }
+    }
+};
+
 /// The frame's decisions that an exact translation keeps: the overlaps of every ball that met nothing in the frame
 /// (its state is Bs + v, which the offset moves exactly; after a contact the state is a rounded construction, which
 /// an offset may round differently), and each ball's contacts, hit walls and bumped bumpers (the first only, or all
-/// for the exact kernel, whose hit points are not rounded before the next decision).
-std::vector<std::string> decisions(std::span<const Event> events, bool all_hits, std::size_t balls) {
+/// for the exact kernel, whose hit points are not rounded before the next decision). A ball whose first contact is
+/// a meet, in either run, has none compared: a meet is decided on the balls' paths, whose contact points are
+/// rounded constructions; its first hit or bump alone is decided from Bs and Be exactly.
+std::vector<std::string> decisions(std::span<const Event> events, bool all_hits, const Contacts& both) {
     std::vector<std::string> out;
-    std::vector<int> seen(balls, 0);
-    std::vector<bool> met(balls, false);
-    for (const Event& e : events)
-        if (e.kind == Event::Kind::hit || e.kind == Event::Kind::bump) met[e.ball] = true;
+    std::vector<int> seen(both.met.size(), 0);
     for (const Event& e : events) {
-        if (e.kind == Event::Kind::overlap && met[e.ball]) continue;
+        if (e.kind == Event::Kind::overlap && both.met[e.ball]) continue;
         if (e.kind == Event::Kind::overlap)
             out.push_back(fmt::format("overlap ball {} {} {}", e.ball, e.shape == Event::Shape::circle ? "circle" : "rect",
                                       e.index));
-        else if (e.kind == Event::Kind::hit && (all_hits || seen[e.ball]++ == 0))
+        if ((e.kind != Event::Kind::hit && e.kind != Event::Kind::bump) || both.meet_first[e.ball]) continue;
+        if (e.kind == Event::Kind::hit && (all_hits || seen[e.ball]++ == 0))
             out.push_back(fmt::format("hit ball {} wall {}", e.ball, e.index));
         else if (e.kind == Event::Kind::bump && (all_hits || seen[e.ball]++ == 0))
             out.push_back(fmt::format("bump ball {} bumper {}", e.ball, e.index));
@@ -70,8 +91,9 @@ public:
     Translation(const Scene& scene, KernelId kernel, const WorldOptions& world)
         : scene_(scene), kernel_(kernel),
           // The exact kernel rounds no point ball's hit point; a disc's contact points it rounds to the nearest
-          // doubles, which an offset may move differently: for a disc, its first contact alone.
-          all_hits_(kernel == KernelId::exact && !has_discs_or_bumpers(scene)) {
+          // doubles, which an offset may move differently: for a disc (and any ball among bumpers or among balls
+          // that collide, stepped as one), its first contact alone.
+          all_hits_(kernel == KernelId::exact && !has_discs_or_bumpers(scene) && !scene.balls_collide) {
         for (Vec2 t : k_offsets) {
             if (!applies(scene, t)) continue;
             offsets_.push_back(t);
@@ -83,12 +105,14 @@ public:
     std::optional<CheckFailure> frame(const Frame& f) override {
         // The run-level comparison holds where the states are still the same up to t: frames 0 and 1.
         if (f.index <= 1) {
-            const auto want = decisions(f.events, all_hits_, scene_.balls.size());
+            const Contacts ours(f.events, scene_.balls.size());
             for (std::size_t j = 0; j < worlds_.size(); ++j) {
                 other_.clear();
                 if (f.index == 0) worlds_[j].start(other_);
                 else (void)worlds_[j].step(other_);
-                if (decisions(other_, all_hits_, scene_.balls.size()) != want)
+                Contacts both(other_, scene_.balls.size());
+                both.add(ours);
+                if (decisions(other_, all_hits_, both) != decisions(f.events, all_hits_, both))
                     return failure(Check::translation, f.index, 0,
                                    fmt::format("moving the scene by {} (exactly) changes a hit, a bump or an overlap",
                                                offsets_[j]));

@@ -1,13 +1,15 @@
 // Ground truth for discs (truth.hpp's DiscContact): contact times as exact algebraic numbers t = (A − √C)/D,
-// compared by the signs of sums of square roots, in rationals. Written from the rules of docs/scene-log.md, apart
-// from core/src/kernels/disc/ (which decides the same questions with filters and its own exact stage): a bug there
-// cannot hide itself here.
+// compared by the signs of sums of square roots, in rationals; and for discs that meet each other, how close two come
+// over a common time interval of their paths and what a meet does to momentum and energy. Written from the rules of
+// docs/scene-log.md, apart from core/src/kernels/disc/ and core/src/kernels/meet/ (which decide the same questions
+// with filters and their own exact stages): a bug there cannot hide itself here.
 #include "ricochet/truth.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <tuple>
+#include <utility>
 
 #include "checks/truth_detail.hpp"
 
@@ -273,6 +275,86 @@ bool disc_in_rect(Vec2 p, double R, const Rect& r) {
     };
     const Rational dx = outside(Q(p.x), Q(r.left), Q(r.right)), dy = outside(Q(p.y), Q(r.bottom), Q(r.top));
     return dx * dx + dy * dy <= Q(R) * Q(R);
+}
+
+// Balls that meet (`pass-through`, `momentum`).
+
+namespace {
+
+/// |v|∞, exactly: fabs and max round nothing.
+Rational max_norm(Vec2 v) { return Q(std::max(std::fabs(v.x), std::fabs(v.y))); }
+
+/// P(t) = p0 + (t − t0)/(t1 − t0)·(p1 − p0): the piece's point at frame time t.
+std::pair<Rational, Rational> point_at(PathPoint p0, PathPoint p1, const Rational& t) {
+    const Rational f = (t - Q(p0.t)) / (Q(p1.t) - Q(p0.t));
+    return {Q(p0.p.x) + f * (Q(p1.p.x) - Q(p0.p.x)), Q(p0.p.y) + f * (Q(p1.p.y) - Q(p0.p.y))};
+}
+
+/// (p1 − p0)/(t1 − t0): the piece's velocity in frame time.
+std::pair<Rational, Rational> velocity_of(PathPoint p0, PathPoint p1) {
+    const Rational dt = Q(p1.t) - Q(p0.t);
+    return {Rational((Q(p1.p.x) - Q(p0.p.x)) / dt), Rational((Q(p1.p.y) - Q(p0.p.y)) / dt)};
+}
+
+}  // namespace
+
+PairClearance pieces_clearance(PathPoint a0, PathPoint a1, PathPoint b0, PathPoint b1, double Ra, double Rb) {
+    // Pieces whose boxes lie farther apart than S never come within S ((Ra + Rb)·(1 + 2^−52) is above S however the
+    // sum rounds).
+    if (boxes_apart(a0.p, a1.p, b0.p, b1.p, (Ra + Rb) * (1.0 + 0x1p-52))) return {1, 1};
+    const Rational lo = Q(std::max(a0.t, b0.t)), hi = Q(std::min(a1.t, b1.t));
+    const auto [ax, ay] = point_at(a0, a1, lo);
+    const auto [bx, by] = point_at(b0, b1, lo);
+    const auto [vax, vay] = velocity_of(a0, a1);
+    const auto [vbx, vby] = velocity_of(b0, b1);
+    // D(lo + u) = D + W·u.
+    const Rational dx = ax - bx, dy = ay - by, wx = vax - vbx, wy = vay - vby;
+    const Rational s = Q(Ra) + Q(Rb), s2 = s * s;
+    PairClearance c;
+    c.start = sgn(dx * dx + dy * dy - s2);
+    const Rational dw = dx * wx + dy * wy, ww = wx * wx + wy * wy;
+    // Moving apart, or not at all (W = 0): the least distance is the one at lo.
+    if (sgn(dw) >= 0) {
+        c.least = c.start;
+        return c;
+    }
+    const Rational length = hi - lo;
+    // u* = −D·W/(W·W) ≥ hi − lo: still approaching at hi, the least distance is there.
+    if (-dw >= length * ww) {
+        const Rational ex = dx + wx * length, ey = dy + wy * length;
+        c.least = sgn(ex * ex + ey * ey - s2);
+        return c;
+    }
+    // Inside: min |D + W·u|² = |D|² − (D·W)²/(W·W) = (D × W)²/(W·W); compare with S², times W·W > 0.
+    const Rational cross = dx * wy - dy * wx;
+    c.least = sgn(cross * cross - s2 * ww);
+    return c;
+}
+
+MeetConservation meet_conservation(double ma, double mb, Vec2 va, Vec2 vb, Vec2 oa, Vec2 ob, double momentum_rel,
+                                   double energy_rel) {
+    MeetConservation r;
+    // Degenerate: an infinite or NaN number has no rational value, and keeps no law.
+    for (double x : {ma, mb, va.x, va.y, vb.x, vb.y, oa.x, oa.y, ob.x, ob.y, momentum_rel, energy_rel})
+        if (!std::isfinite(x)) return r;
+    const Rational Ma = Q(ma), Mb = Q(mb);
+    // p′ − p = ma·(oa − va) + mb·(ob − vb), per component.
+    const Rational px = qabs(Ma * (Q(oa.x) - Q(va.x)) + Mb * (Q(ob.x) - Q(vb.x)));
+    const Rational py = qabs(Ma * (Q(oa.y) - Q(va.y)) + Mb * (Q(ob.y) - Q(vb.y)));
+    const Rational scale = Ma * max_norm(va) + Mb * max_norm(vb) + Ma * max_norm(oa) + Mb * max_norm(ob);
+    const Rational bound = Q(momentum_rel) * scale;
+    r.momentum_within = px <= bound && py <= bound;
+    r.momentum_error = sgn(scale) == 0 ? 0.0 : bignum::to_double(Rational(std::max(px, py) / scale));
+    // E = ma·|va|² + mb·|vb|², E′ likewise.
+    const auto energy = [&](Vec2 a, Vec2 b) {
+        return Rational(Ma * (Q(a.x) * Q(a.x) + Q(a.y) * Q(a.y)) + Mb * (Q(b.x) * Q(b.x) + Q(b.y) * Q(b.y)));
+    };
+    const Rational before = energy(va, vb), after = energy(oa, ob);
+    const Rational rel = Q(energy_rel);
+    r.energy_within = after <= before * (1 + rel) && after >= before * (1 - rel);
+    const Rational change = qabs(after - before);
+    r.energy_error = sgn(before) == 0 ? (sgn(change) == 0 ? 0.0 : HUGE_VAL) : bignum::to_double(Rational(change / before));
+    return r;
 }
 
 }  // namespace ricochet::truth

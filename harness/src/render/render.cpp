@@ -109,26 +109,29 @@ Vec2 crossing_point(const FailurePiece& piece, const Wall& w) {
     return piece.from + s * d;
 }
 
-/// One drawn ball's path over the frames drawn: its points in order, which of them are hits, and
-/// whether points were left out at its end (the point budget).
+/// One drawn ball's path over the frames drawn: its points in order, which of them are contacts (hits, bumps and
+/// meets) and which of those meets, and whether points were left out at its end (the point budget).
 struct Path {
     std::uint32_t ball = 0;
     std::vector<Vec2> points;
     std::vector<bool> hit;
+    std::vector<bool> meet;
     std::vector<std::int64_t> frame;  ///< the frame of each point
     bool cut = false;
 
-    void push(Vec2 p, bool is_hit, std::int64_t f) {
+    void push(Vec2 p, Event::Kind kind, std::int64_t f) {
         points.push_back(p);
-        hit.push_back(is_hit);
+        hit.push_back(kind != Event::Kind::state);
+        meet.push_back(kind == Event::Kind::meet);
         frame.push_back(f);
     }
-    /// Drops the points of the frames before f, and f's hits (they lie before its state, where the path starts).
+    /// Drops the points of the frames before f, and f's contacts (they lie before its state, where the path starts).
     void keep_from(std::int64_t f) {
         std::size_t n = 0;
         while (n < points.size() && (frame[n] < f || (frame[n] == f && hit[n]))) ++n;
         points.erase(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(n));
         hit.erase(hit.begin(), hit.begin() + static_cast<std::ptrdiff_t>(n));
+        meet.erase(meet.begin(), meet.begin() + static_cast<std::ptrdiff_t>(n));
         frame.erase(frame.begin(), frame.begin() + static_cast<std::ptrdiff_t>(n));
     }
 };
@@ -188,12 +191,6 @@ std::vector<std::uint32_t> drawn_balls(std::size_t balls, std::uint32_t max, std
     return drawn;
 }
 
-/// True for a point of a ball's path inside a frame: a hit, a bump or a meet (docs/scene-log.md: a path is the state
-/// before the frame, these in order, then the state).
-bool bounce_point(const Event& e) {
-    return e.kind == Event::Kind::hit || e.kind == Event::Kind::bump || e.kind == Event::Kind::meet;
-}
-
 /// Keeps, frame by frame, the points of the drawn balls in frames first..last and the frame before the
 /// current one's positions of every ball (so the failing frame's path can start where it did): memory
 /// in the drawn points and the balls, not in the events.
@@ -205,7 +202,7 @@ public:
         for (const Ball& b : scene.balls) before_.push_back(b.pos);
         for (std::uint32_t b : drawn) {
             slot_[b] = static_cast<std::int32_t>(paths_.size());
-            paths_.push_back({b, {}, {}, {}, false});
+            paths_.push_back({b, {}, {}, {}, {}, false});
         }
         recent_ = paths_;
         // Degenerate: no ball drawn leaves the budget unshared.
@@ -226,7 +223,7 @@ public:
         if (!window_ || f <= window_->second) {
             for (const Event& e : events) {
                 if (e.kind == Event::Kind::overlap || e.ball >= slot_.size() || slot_[e.ball] < 0) continue;
-                recent_[static_cast<std::size_t>(slot_[e.ball])].push(e.pos, bounce_point(e), f);
+                recent_[static_cast<std::size_t>(slot_[e.ball])].push(e.pos, e.kind, f);
             }
             if (!window_)
                 for (Path& p : recent_) p.keep_from(f - k_context_frames);
@@ -235,14 +232,13 @@ public:
         for (const Event& e : events) {
             if (e.kind == Event::Kind::overlap || e.ball >= slot_.size() || slot_[e.ball] < 0) continue;
             // The first frame's hits, bumps and meets lie before its state, where the path starts.
-            const bool bounce = bounce_point(e);
-            if (f == first_ && bounce) continue;
+            if (f == first_ && e.kind != Event::Kind::state) continue;
             Path& p = paths_[static_cast<std::size_t>(slot_[e.ball])];
             if (p.points.size() >= budget_) {
                 p.cut = true;
                 continue;
             }
-            p.push(e.pos, bounce, f);
+            p.push(e.pos, e.kind, f);
         }
     }
 
@@ -726,10 +722,18 @@ std::string draw(const Scene& scene, const Recorder& rec, const std::optional<Ch
         const char* colour = k_ball_colours[p.ball % k_ball_colours.size()];
         draw_polyline(out, p.points, v, clip_box,
                       fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\"", colour));
-        for (std::size_t i = 0; i < p.points.size(); ++i)
-            if (p.hit[i] && clip_box.holds(p.points[i]))
-                fmt::format_to(it, "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"3\" fill=\"{}\"/>\n", v.sx(p.points[i].x),
-                               v.sy(p.points[i].y), colour);
+        // A hit or a bump: a dot; a meet with another ball: a ring.
+        for (std::size_t i = 0; i < p.points.size(); ++i) {
+            if (!p.hit[i] || !clip_box.holds(p.points[i])) continue;
+            const double cx = v.sx(p.points[i].x), cy = v.sy(p.points[i].y);
+            if (p.meet[i])
+                fmt::format_to(it,
+                               "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"4\" fill=\"white\" stroke=\"{}\" "
+                               "stroke-width=\"2\"/>\n",
+                               cx, cy, colour);
+            else
+                fmt::format_to(it, "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"3\" fill=\"{}\"/>\n", cx, cy, colour);
+        }
         const Vec2 start = p.points.front(), end = p.points.back();
         // A disc at its size where the path starts, bounces and ends: dashed outlines around its centre.
         const double R = p.ball < scene.balls.size() ? scene.balls[p.ball].r : 0.0;
