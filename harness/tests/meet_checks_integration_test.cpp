@@ -1,7 +1,6 @@
 // The checks of balls that meet on runs the World makes: robust and exact keep every check through head-on meets,
 // masses, a Newton's cradle and a box of 10^3 discs; lecture-double lets two fast balls pass through each other, and
-// pass-through says so. Not built yet: it needs the World that steps meets (core/src/kernels/meet/); once that lands,
-// add it to frame_check_tests in CMakeLists.txt.
+// pass-through says so.
 #include <gtest/gtest.h>
 
 #include <cmath>

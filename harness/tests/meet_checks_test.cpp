@@ -293,6 +293,21 @@ TEST(Momentum, EqualMassesExchangeAndAComponentOffBeyondTheBoundFails) {
     EXPECT_NE(momentum_verdict(s, {head_on({1, 0}, {-1, 0}, {-1 + 0x1p-30, 0}, {1 - 0x1p-30, 0})}), "");
 }
 
+TEST(Momentum, AmongTheSubnormalsTheAbsoluteTermDecides) {
+    // Velocities of a few 2^−1074: a response rounded among the subnormals is off by an ulp of 2^−1074, far beyond
+    // 2^−40 of the momenta but within 2^−1068·(m_a + m_b); 2^−1060 off is beyond both.
+    const Scene s = discs({{0, 0}, {10, 0}}, {1, 1});
+    const double u = 0x1p-1074;
+    EXPECT_EQ(momentum_verdict(s, {head_on({8 * u, 0}, {-8 * u, 0}, {-7 * u, 0}, {8 * u, 0})}), "");
+    EXPECT_EQ(momentum_verdict(s, {head_on({8 * u, 0}, {-8 * u, 0}, {-8 * u, u}, {8 * u, 0})}), "");
+    EXPECT_TRUE(has(momentum_verdict(s, {head_on({8 * u, 0}, {-8 * u, 0}, {-8 * u, 0x1p-1060}, {8 * u, 0})}),
+                    "momentum"));
+    // Energy: both leaving faster by 2^−1060 keeps momentum exactly and gains energy beyond the absolute term.
+    EXPECT_TRUE(has(momentum_verdict(s, {head_on({8 * u, 0}, {-8 * u, 0}, {-8 * u - 0x1p-1060, 0},
+                                                  {8 * u + 0x1p-1060, 0})}),
+                    "kinetic energy"));
+}
+
 TEST(Momentum, MassesWeighTheResponse) {
     // m_a = 1 at 1 against m_b = 3 at rest: v_a′ = (1 − 3)/4 = −0.5, v_b′ = 2/4 = 0.5, both laws exact.
     Scene s = discs({{0, 0}, {10, 0}}, {1, 1});

@@ -192,8 +192,9 @@
 //                  them (a ball's state before the frame at its first contact, the velocity it left a meet with just
 //                  before). A meet with a response keeps momentum, each component of m_a·v_a′ + m_b·v_b′ − (m_a·v_a
 //                  + m_b·v_b) at most k_meet_momentum_rel (2^−40) times m_a·|v_a|∞ + m_b·|v_b|∞ + m_a·|v_a′|∞ +
-//                  m_b·|v_b′|∞, and kinetic energy, (1 − k)·E ≤ E′ ≤ (1 + k)·E with E = m_a·|v_a|² + m_b·|v_b|², k =
-//                  k_meet_energy_rel (2^−40), exactly (truth::meet_conservation); one without (the printed centres
+//                  m_b·|v_b′|∞, plus k_meet_momentum_abs (2^−1068) times m_a + m_b, and kinetic energy, |E′ − E| ≤
+//                  k·E + k_meet_energy_abs·(m_a + m_b)·(|v_a|∞ + |v_b|∞ + |v_a′|∞ + |v_b′|∞) with E = m_a·|v_a|² +
+//                  m_b·|v_b|², k = k_meet_energy_rel (2^−40), exactly (truth::meet_conservation); one without (the printed centres
 //                  did not approach) leaves both velocities as they were, exactly. Other scenes pass.
 //   relabel        In a scene whose balls collide: the scene with its balls, and their masses, in reverse order,
 //                  stepped in lockstep, prints per ball the run's events with ball i as ball N − 1 − i (a meet's
@@ -273,6 +274,11 @@ inline constexpr double k_meet_momentum_rel = 0x1p-40;
 /// The same for a meet's kinetic energy: (1 − this)·E ≤ E′ ≤ (1 + this)·E, E = m_a·|v_a|² + m_b·|v_b|² (the elastic
 /// response keeps it exactly; the rounded one errs by a few ε of E, as |v′|·|v| ≤ E/m).
 inline constexpr double k_meet_energy_rel = 0x1p-40;
+/// The absolute part of both bounds, per unit of m_a + m_b (momentum) and of (m_a + m_b)·(|v_a|∞ + |v_b|∞ + |v_a′|∞ +
+/// |v_b′|∞) (energy): where the response's products fall among the subnormals each rounding errs by up to 2^−1075
+/// absolutely, not relatively; 2^−1068 covers a handful of them (the `speed` check's absolute term is alike).
+inline constexpr double k_meet_momentum_abs = 0x1p-1068;
+inline constexpr double k_meet_energy_abs = 0x1p-1068;
 
 /// Where a path broke: the printed piece from → to and the wall it went through (no-tunnel).
 struct FailurePiece {

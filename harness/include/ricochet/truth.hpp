@@ -208,16 +208,17 @@ PairClearance pieces_clearance(PathPoint a0, PathPoint a1, PathPoint b0, PathPoi
 /// A meet's response against the laws it keeps (`momentum`): masses ma, mb arriving with va, vb, leaving with oa, ob;
 /// p = ma·v_a + mb·v_b and E = ma·|v_a|² + mb·|v_b|² (twice the kinetic energy) before and after, exactly.
 struct MeetConservation {
-    /// |p′ − p| ≤ momentum_rel·(ma·|va|∞ + mb·|vb|∞ + ma·|oa|∞ + mb·|ob|∞) in each component.
+    /// |p′ − p| ≤ momentum_rel·(ma·|va|∞ + mb·|vb|∞ + ma·|oa|∞ + mb·|ob|∞) + momentum_abs·(ma + mb) in each
+    /// component.
     bool momentum_within = false;
-    /// (1 − energy_rel)·E ≤ E′ ≤ (1 + energy_rel)·E.
+    /// |E′ − E| ≤ energy_rel·E + energy_abs·(ma + mb)·(|va|∞ + |vb|∞ + |oa|∞ + |ob|∞).
     bool energy_within = false;
     double momentum_error = 0.0;  ///< max |p′ − p| per component over the sum of the bound, rounded (for messages)
     double energy_error = 0.0;    ///< |E′ − E| / E, rounded (for messages)
 };
 /// False for both laws when a velocity or a mass is not finite.
 MeetConservation meet_conservation(double ma, double mb, Vec2 va, Vec2 vb, Vec2 oa, Vec2 ob, double momentum_rel,
-                                   double energy_rel);
+                                   double energy_rel, double momentum_abs = 0.0, double energy_abs = 0.0);
 
 /// kernel.hpp's no-tunnelling definition, followed independently of ricochet::TunnelChecker: a piece
 /// from one open side to the other through the closed segment, or arriving on the closed segment from

@@ -112,7 +112,8 @@ private:
         }
         const double ma = mass_of(scene_, m.a), mb = mass_of(scene_, m.b);
         const truth::MeetConservation c =
-            truth::meet_conservation(ma, mb, m.vel_a, m.vel_b, m.out_a, m.out_b, k_meet_momentum_rel, k_meet_energy_rel);
+            truth::meet_conservation(ma, mb, m.vel_a, m.vel_b, m.out_a, m.out_b, k_meet_momentum_rel, k_meet_energy_rel,
+                                     k_meet_momentum_abs, k_meet_energy_abs);
         if (c.momentum_within && c.energy_within) return std::nullopt;
         return fmt::format("masses {} and {} arrive moving {} and {} and leave moving {} and {}: momentum changes by "
                            "{:.4g} of m_a|v_a| + m_b|v_b| + m_a|v_a'| + m_b|v_b'| (bound {:.4g}), kinetic energy by {:.4g} "

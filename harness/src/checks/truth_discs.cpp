@@ -332,17 +332,18 @@ PairClearance pieces_clearance(PathPoint a0, PathPoint a1, PathPoint b0, PathPoi
 }
 
 MeetConservation meet_conservation(double ma, double mb, Vec2 va, Vec2 vb, Vec2 oa, Vec2 ob, double momentum_rel,
-                                   double energy_rel) {
+                                   double energy_rel, double momentum_abs, double energy_abs) {
     MeetConservation r;
     // Degenerate: an infinite or NaN number has no rational value, and keeps no law.
-    for (double x : {ma, mb, va.x, va.y, vb.x, vb.y, oa.x, oa.y, ob.x, ob.y, momentum_rel, energy_rel})
+    for (double x : {ma, mb, va.x, va.y, vb.x, vb.y, oa.x, oa.y, ob.x, ob.y, momentum_rel, energy_rel, momentum_abs,
+                     energy_abs})
         if (!std::isfinite(x)) return r;
     const Rational Ma = Q(ma), Mb = Q(mb);
     // p′ − p = ma·(oa − va) + mb·(ob − vb), per component.
     const Rational px = qabs(Ma * (Q(oa.x) - Q(va.x)) + Mb * (Q(ob.x) - Q(vb.x)));
     const Rational py = qabs(Ma * (Q(oa.y) - Q(va.y)) + Mb * (Q(ob.y) - Q(vb.y)));
     const Rational scale = Ma * max_norm(va) + Mb * max_norm(vb) + Ma * max_norm(oa) + Mb * max_norm(ob);
-    const Rational bound = Q(momentum_rel) * scale;
+    const Rational bound = Q(momentum_rel) * scale + Q(momentum_abs) * (Ma + Mb);
     r.momentum_within = px <= bound && py <= bound;
     r.momentum_error = sgn(scale) == 0 ? 0.0 : bignum::to_double(Rational(std::max(px, py) / scale));
     // E = ma·|va|² + mb·|vb|², E′ likewise.
@@ -350,9 +351,9 @@ MeetConservation meet_conservation(double ma, double mb, Vec2 va, Vec2 vb, Vec2 
         return Rational(Ma * (Q(a.x) * Q(a.x) + Q(a.y) * Q(a.y)) + Mb * (Q(b.x) * Q(b.x) + Q(b.y) * Q(b.y)));
     };
     const Rational before = energy(va, vb), after = energy(oa, ob);
-    const Rational rel = Q(energy_rel);
-    r.energy_within = after <= before * (1 + rel) && after >= before * (1 - rel);
     const Rational change = qabs(after - before);
+    const Rational speeds = max_norm(va) + max_norm(vb) + max_norm(oa) + max_norm(ob);
+    r.energy_within = change <= Q(energy_rel) * before + Q(energy_abs) * (Ma + Mb) * speeds;
     r.energy_error = sgn(before) == 0 ? (sgn(change) == 0 ? 0.0 : HUGE_VAL) : bignum::to_double(Rational(change / before));
     return r;
 }

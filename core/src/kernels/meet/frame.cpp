@@ -143,6 +143,24 @@ private:
         return at;
     }
 
+    /// Would the meet's printed centres at t leave balls a and b closer than S: the centres themselves, or the pieces
+    /// to them from their last printed points (a grazing meet's rounded centres may be apart while the pieces dip)?
+    bool too_close(std::uint32_t a, std::uint32_t b, double S, double lo, double t, const meet::PointOnPath& pa,
+                   const meet::PointOnPath& pb) {
+        if (meet::closer_than(pa.x, pb.x, S)) return true;
+        const auto cut_path = [&](std::uint32_t i, const meet::PointOnPath& p, std::vector<PathPoint>& out) {
+            const std::vector<PathPoint>& path = balls_[i].path;
+            out.assign(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(p.from + 1));
+            if (out.back().t < t) out.push_back({t, p.x});
+            else out.back().p = p.x;
+        };
+        cut_path(a, pa, cut_a_);
+        cut_path(b, pb, cut_b_);
+        // An entry before t on the pieces that end at the centres (one at t itself is the meet).
+        const std::optional<meet::Root> r = meet::first_meet(cut_a_, cut_b_, S, lo);
+        return r && meet::compare(*r, t) < 0;
+    }
+
     /// The velocity ball i has on the piece of its current path that starts at printed point k.
     Vec2 velocity_on(std::size_t i, std::size_t k) const {
         const BallFrame& f = balls_[i];
@@ -185,7 +203,7 @@ private:
         double t = std::clamp(c.root.estimate, lo, 1.0);
         // The printed centres, no closer than S (exactly): t taken earlier, 1, 2, 4, … ulps, then lo.
         meet::PointOnPath pa = place(a, t), pb = place(b, t);
-        for (double step = std::max(std::fabs(t) * 0x1p-52, 0x1p-1074); meet::closer_than(pa.x, pb.x, S) && t > lo;
+        for (double step = std::max(std::fabs(t) * 0x1p-52, 0x1p-1074); t > lo && too_close(a, b, S, lo, t, pa, pb);
              step *= 2.0) {
             t = t - step > lo ? t - step : lo;
             pa = place(a, t);
@@ -256,6 +274,7 @@ private:
     std::vector<std::uint32_t> seen_;  // the stamp of the last neighbours() call that listed the ball
     std::uint32_t stamp_ = 0;
     std::vector<Candidate> heap_;
+    std::vector<PathPoint> cut_a_, cut_b_;  // the paths to a meet's centres (too_close)
 };
 
 /// The lecture's rule: each ball stepped alone, then every pair whose boxes at the frame's end overlap, in index
