@@ -84,8 +84,9 @@ int run_meet_bench(MeetSize size, std::uint64_t seed, std::int64_t frames) {
                          "from one more run, exact on every frame's end state{}\n\n",
                          reps, reps == 1 ? "" : "s",
                          std::isinf(budget) ? "" : fmt::format("; a run stops after {} s CPU", budget));
-    table += "| scene | engine | frames | ns/ball-frame | overlaps | pass-throughs | unsure | escaped | energy drift "
-             "(end, max) | notes |\n| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- |\n";
+    table += "| scene | engine | frames | ns/ball-frame | overlaps | pass-throughs | deepest | unsure | escaped | "
+             "energy drift (end, max) | notes |\n| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- "
+             "|\n";
     int rc = 0;
     for (const SceneSpec& spec : scenes) {
         const MeetScene scene = make_scene(spec.n, k_radius, spec.v_max, spec.frames, seed);
@@ -140,7 +141,7 @@ int run_meet_bench(MeetSize size, std::uint64_t seed, std::int64_t frames) {
         }
         for (std::size_t e = 0; e < k_engine_count; ++e) {
             if (!built[e]) {
-                table += fmt::format("| {} | {} | | not built | | | | | | not found at build time |\n", label,
+                table += fmt::format("| {} | {} | | not built | | | | | | | not found at build time |\n", label,
                                      k_engines[e].name);
                 continue;
             }
@@ -148,11 +149,12 @@ int run_meet_bench(MeetSize size, std::uint64_t seed, std::int64_t frames) {
             std::string note = notes[e];
             if (ns[e].size() == 1 && reps > 1) note += std::string(note.empty() ? "" : "; ") + "timed once: cut short";
             if (spec.count)
-                table += fmt::format("| {} | {} | {} | {:.0f} | {} | {} | {} | {} | {:+.1e}, {:.1e} | {} |\n", label,
+                table += fmt::format("| {} | {} | {} | {:.0f} | {} | {} | {} | {} | {} | {:+.1e}, {:.1e} | {} |\n", label,
                                      k_engines[e].name, stepped[e], median(ns[e]), c.overlaps, c.pass_throughs,
-                                     c.unsure, c.escaped, c.energy_drift, c.energy_drift_max, note);
+                                     c.pass_throughs == 0 ? "-" : fmt::format("{:.0f} %", 100.0 * c.deepest), c.unsure,
+                                     c.escaped, c.energy_drift, c.energy_drift_max, note);
             else
-                table += fmt::format("| {} | {} | {} | {:.0f} | | | | | | {} |\n", label, k_engines[e].name,
+                table += fmt::format("| {} | {} | {} | {:.0f} | | | | | | | {} |\n", label, k_engines[e].name,
                                      stepped[e], median(ns[e]), note);
             // robust decides every meet exactly: anything it left behind is a bug.
             if (e == 0 && (c.overlaps != 0 || c.pass_throughs != 0 || c.escaped != 0)) rc = 1;

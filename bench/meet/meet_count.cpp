@@ -112,6 +112,22 @@ bool came_within(std::span<const PathPoint> a, std::span<const PathPoint> b, dou
     return false;
 }
 
+double least_distance(std::span<const PathPoint> a, std::span<const PathPoint> b) {
+    std::vector<double> times;
+    for (const PathPoint& p : a) times.push_back(p.t);
+    for (const PathPoint& p : b) times.push_back(p.t);
+    std::sort(times.begin(), times.end());
+    double least = INFINITY;
+    for (std::size_t i = 0; i + 1 < times.size(); ++i) {
+        const double t0 = times[i], t1 = times[i + 1];
+        const std::size_t ka = piece(a, t0, t1), kb = piece(b, t0, t1);
+        if (t0 == t1 || ka == a.size() || kb == b.size()) continue;
+        const Vec2 da = at(a, ka, t0) - at(b, kb, t0), db = (at(a, ka, t1) - at(b, kb, t1)) - da;
+        least = std::min(least, std::sqrt(std::max(0.0, min_sq(sq(da), dot(da, db), sq(db)))));
+    }
+    return least;
+}
+
 bool pass_through(std::span<const PathPoint> a, std::span<const PathPoint> b, double ra, double rb,
                   std::int64_t* exact) {
     // Degenerate: a path with no points has no start or end to be clear at.
@@ -188,8 +204,13 @@ void MeetCounter::add(const FrameRecord& frame) {
         if (met.count(std::uint64_t{i} << 32 | j) != 0) continue;
         if (!pass_through(path_of(i, chord_a_), path_of(j, chord_b_), end[i].r, end[j].r, &counts_.exact)) continue;
         // A chord is the path of a ball that touched nothing; one that did may have turned on the way.
-        if (!frame.touched.empty() && (frame.touched[i] || frame.touched[j])) ++counts_.unsure;
-        else ++counts_.pass_throughs;
+        if (!frame.touched.empty() && (frame.touched[i] || frame.touched[j])) {
+            ++counts_.unsure;
+            continue;
+        }
+        ++counts_.pass_throughs;
+        const double d = least_distance(path_of(i, chord_a_), path_of(j, chord_b_));
+        counts_.deepest = std::max(counts_.deepest, 1.0 - d / (end[i].r + end[j].r));
     }
 
     double e = 0.0;

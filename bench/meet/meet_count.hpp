@@ -31,6 +31,9 @@ struct Counts {
     std::int64_t overlaps = 0;       ///< pairs with |c_i − c_j| < R_i + R_j at a frame's end, summed over frames
     std::int64_t pass_throughs = 0;  ///< pairs that passed through each other within a frame (pass_through below)
     std::int64_t unsure = 0;         ///< pass_through on the chords where a ball touched something else that frame
+    /// The deepest pass-through (not unsure): max of 1 − d/S, d the pair's least distance in the frame (in doubles,
+    /// informative): near 0 a graze, 1 a centre through a centre.
+    double deepest = 0.0;
     std::int64_t escaped = 0;        ///< balls whose centre was outside the box at some frame's end
     double energy_drift = 0.0;       ///< E_F/E_0 − 1 (masses 1)
     double energy_drift_max = 0.0;   ///< max over frames of |E_f/E_0 − 1|
@@ -44,6 +47,9 @@ bool closer_than(Vec2 a, Vec2 b, double ra, double rb, std::int64_t* exact = nul
 /// consecutive ones) come closer than s = ra + rb at some time of a piece both move on.
 bool came_within(std::span<const PathPoint> a, std::span<const PathPoint> b, double ra, double rb,
                  std::int64_t* exact = nullptr);
+
+/// The least distance of the two paths over the pieces both move on, in doubles (informative; came_within decides).
+double least_distance(std::span<const PathPoint> a, std::span<const PathPoint> b);
 
 /// A pass-through in a frame: a pair that did not meet, clear (≥ S) at the frame's start and at its end, whose paths
 /// came within S between: they crossed each other's line of centres without a meet.

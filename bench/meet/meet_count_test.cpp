@@ -30,6 +30,7 @@ TEST(MeetCount, BallsCrossingWithinAFramePassThrough) {
     const std::vector<PathPoint> b{{0, {10, 0.9}}, {1, {-10, 0.9}}};
     EXPECT_TRUE(came_within(a, b, 0.5, 0.5));
     EXPECT_TRUE(pass_through(a, b, 0.5, 0.5));
+    EXPECT_NEAR(least_distance(a, b), 0.9, 1e-12);  // in doubles: |D0|² − (D0·W)²/|W|² cancels
 }
 
 TEST(MeetCount, ATangentPassIsNoPassThrough) {
@@ -64,6 +65,7 @@ TEST(MeetCount, TheCounterSumsOverFramesAndLeavesOutWhatMet) {
     std::vector<Ball> end{{{20, 20}, {10, 0}, 0.5}, {{10, 20.5}, {-10, 0}, 0.5}, {{35, 35}, {0, 0}, 0.5}};
     counter.add({end, {}, {}, {}});
     EXPECT_EQ(counter.counts().pass_throughs, 1);
+    EXPECT_DOUBLE_EQ(counter.counts().deepest, 0.5);  // 0.5 apart at closest, S = 1
     // Back again, the engine reporting them in contact: they met.
     const std::pair<std::uint32_t, std::uint32_t> met[] = {{0, 1}};
     counter.add({balls, {}, met, {}});
