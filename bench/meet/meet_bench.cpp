@@ -124,7 +124,8 @@ int run_meet_bench(MeetSize size, std::uint64_t seed, std::int64_t frames) {
         // The timed runs, the engines interleaved so that the machine's slow spells fall on all of them alike.
         for (int rep = 0; rep < reps; ++rep) {
             for (std::size_t e = 0; e < k_engine_count; ++e) {
-                if (!built[e] || (spec.count && stepped[e] < spec.frames)) continue;
+                // An engine cut short once is not run again: one run past the budget says enough.
+                if (!built[e] || (stepped[e] != 0 && stepped[e] < spec.frames)) continue;
                 const std::unique_ptr<Engine> engine = k_engines[e].make(scene, false);
                 const double t0 = cpu_now();
                 std::int64_t f = 0;
