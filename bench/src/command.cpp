@@ -3,6 +3,7 @@
 // this file only wires the options.
 #include "ricochet_bench/command.hpp"
 
+#include <cstdint>
 #include <exception>
 #include <memory>
 
@@ -10,6 +11,9 @@
 
 #include "ricochet_bench/bench.hpp"
 #include "scale_bench.hpp"
+#ifdef RICOCHET_HAVE_MEET_BENCH
+#include "meet_bench.hpp"
+#endif
 
 namespace ricochet::bench {
 
@@ -42,11 +46,30 @@ void register_bench(CLI::App& app) {
     sc->add_option("--threads", *threads, "Worker threads (0: all cores)")->capture_default_str();
     sc->add_option("--out", opt->out_dir, "Folder for the CSV and the chart")->capture_default_str();
 
-    cmd->callback([cmd, stab, fr, sc, opt, frames, threads] {
+    auto meet_frames = std::make_shared<std::int64_t>(0);  // 0: the size's own
+#ifdef RICOCHET_HAVE_MEET_BENCH
+    // What the peers miss when balls meet (bench/meet, ricochet_meet).
+    CLI::App* mt = cmd->add_subcommand("meet", "Balls that meet: robust, lecture-double, Box2D and Chipmunk side by side");
+    mt->add_flag("--quick", opt->quick, "A quarter of the frames, 3 runs");
+    mt->add_flag("--smoke", opt->smoke, "25 discs, 5 frames: a correctness check (exit 1 if robust missed a meet)")
+        ->excludes("--quick");
+    mt->add_option("--seed", opt->seed, "Seed of the scenes");
+    mt->add_option("--frames", *meet_frames, "Frames of the slow and fast scenes (the cost scene: a quarter)");
+#else
+    CLI::App* mt = nullptr;
+#endif
+
+    cmd->callback([cmd, stab, fr, sc, mt, opt, frames, threads, meet_frames] {
         int rc = 0;
         try {
             if (stab->parsed()) rc = run_stability(*opt);
             else if (fr->parsed()) rc = run_frames(*opt, *frames);
+#ifdef RICOCHET_HAVE_MEET_BENCH
+            else if (mt->parsed()) rc = meet_bench::run_meet_bench(opt->smoke   ? meet_bench::MeetSize::smoke
+                                                                   : opt->quick ? meet_bench::MeetSize::quick
+                                                                                : meet_bench::MeetSize::full,
+                                                                   opt->seed, *meet_frames);
+#endif
             else if (sc->parsed()) rc = ricochet::run_scale_bench(opt->smoke   ? ScaleSize::smoke
                                                           : opt->quick ? ScaleSize::quick
                                                                        : ScaleSize::full,
@@ -58,6 +81,8 @@ void register_bench(CLI::App& app) {
             throw CLI::RuntimeError(2);
         }
         (void)cmd;
+        (void)mt;
+        (void)meet_frames;
         if (rc != 0) throw CLI::RuntimeError(rc);
     });
 }
