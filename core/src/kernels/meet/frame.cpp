@@ -173,10 +173,11 @@ private:
     /// points up to k committed.
     void cut(std::size_t i, std::size_t k) {
         BallFrame& f = balls_[i];
+        // Its start and contacts up to k; the path's end (k past the last contact: a meet at t = 1) is not printed,
+        // the meet's point is.
         const std::size_t kept = std::min(k, f.events.size());
         done_[i].insert(done_[i].end(), f.events.begin(), f.events.begin() + static_cast<std::ptrdiff_t>(kept));
-        committed_[i].insert(committed_[i].end(), f.path.begin(),
-                             f.path.begin() + static_cast<std::ptrdiff_t>(std::min(k + 1, f.path.size())));
+        committed_[i].insert(committed_[i].end(), f.path.begin(), f.path.begin() + static_cast<std::ptrdiff_t>(kept + 1));
     }
 
     /// Ball i steps on from x at frame time t with velocity v: a new path.
