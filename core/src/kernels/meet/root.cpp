@@ -36,13 +36,12 @@ int sign_two_roots(const Rational& x, const Rational& y, const Rational& d, cons
     return c > 0 ? s1 : c < 0 ? s2 : 0;
 }
 
-/// The estimate of p + q·√r: √r to enough bits that the absolute error stays below 2^−60 for |t| ≤ 1 (|q√r| is
-/// then within 1 of |p|), rounded to the nearest double.
-double estimate(const Rational& p, const Rational& q, const Rational& r) {
-    if (bignum::sign(r) == 0 || bignum::sign(q) == 0) return nearest(p);
-    const double mag = std::fabs(bignum::to_double(p)) + 2.0;
-    const long bits = 64 + std::max(0L, static_cast<long>(std::ilogb(mag)) + 1);
-    return nearest(Rational(p + q * bignum::sqrt_below(r, bits)));
+/// The estimate of the entry time c + u, u = (−B − √disc)/A, in the form without cancellation: u·(−B + √disc) =
+/// B² − disc = A·qa, so u = qa/(−B + √disc), both terms of the sum positive (B < 0). √disc to 70 bits makes u good
+/// to 2^−70 relative (u ≤ 1), whatever the sizes of A, B and qa (a subnormal scene makes them thousands of bits).
+double estimate(const Rational& c, const Rational& qa, const Rational& B, const Rational& disc) {
+    const Rational u = qa / Rational(-B + bignum::sqrt_below(disc, 70));
+    return nearest(Rational(c + u));
 }
 
 /// A piece of a path: from p0 at t0 to p1 at t1 > t0 (or a ball at rest at p0 from t0 on, t1 = t0).
@@ -144,7 +143,7 @@ std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const Pat
         const Rational lhs = -B - A * L;
         if (bignum::sign(lhs) > 0 && lhs * lhs > disc) continue;
         Root root{Rational(c) - B / A, Rational(-1) / A, disc, 0.0};
-        root.estimate = std::clamp(estimate(root.p, root.q, root.r), c, c2);
+        root.estimate = std::clamp(estimate(Rational(c), qa, B, disc), c, c2);
         return root;
     }
     return std::nullopt;
