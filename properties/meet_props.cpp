@@ -145,7 +145,7 @@ void meet_tags(const Scene& s, const MeetRun& r) {
                 shared |= n.t == m.t && (n.a == m.a || n.a == m.b || n.b == m.a || n.b == m.b);
             }
         }
-        // Crossing most of S in a frame: a meet the lecture's end-of-frame test could miss.
+        // Closing faster than R_a + R_b a frame: a meet the lecture's test at the frame's end could miss.
         for (const MeetRecord& m : f.meets) {
             const Vec2 w = m.vel_a - m.vel_b;
             fast |= std::fmax(std::fabs(w.x), std::fabs(w.y)) > s.balls[m.a].r + s.balls[m.b].r;
