@@ -39,7 +39,7 @@ has '^target +runs +seconds +exec/s +aim +verdict$'
 for t in "$@"; do
   has "^$t +[0-9]+ +[0-9]+\.[0-9] +[0-9]+ +([0-9]+|-)  \(by runs: no verdict\)$"
 done
-[ "$(grep -cE '^(parser|static|sweep|scene|disc) ' "$dir/out")" = $# ] || fail "expected $# rows, one per target"
+[ "$(grep -cE '^(parser|static|sweep|scene|disc|meet) ' "$dir/out")" = $# ] || fail "expected $# rows, one per target"
 
 # --jobs-scaling: a row per number of jobs, the workers as many.
 run 0 "$build" --runs 20 --target static --jobs-scaling 1,2

@@ -87,6 +87,27 @@ std::vector<Ball> make_discs(std::size_t count, int n, std::uint64_t seed, doubl
     return balls;
 }
 
+std::vector<Wall> make_box(std::size_t count) {
+    const double side = 2.0 * std::ceil(std::sqrt(static_cast<double>(count)));
+    const Vec2 c[4] = {{0, 0}, {side, 0}, {side, side}, {0, side}};
+    std::vector<Wall> walls;
+    for (int i = 0; i < 4; ++i) walls.push_back({c[i], c[(i + 1) % 4]});
+    return walls;
+}
+
+std::vector<Ball> make_box_discs(std::size_t count, std::uint64_t seed, double r) {
+    const auto m = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(count))));
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> at(0.2, 1.8), angle(0.0, 6.283185307179586), speed(0.05, 0.5);
+    std::vector<Ball> balls(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const double x = 2.0 * static_cast<double>(i % m) + at(rng), y = 2.0 * static_cast<double>(i / m) + at(rng);
+        const double a = angle(rng), v = speed(rng);
+        balls[i] = {{x, y}, {v * std::cos(a), v * std::sin(a)}, r};
+    }
+    return balls;
+}
+
 }  // namespace scale
 
 namespace {
@@ -189,17 +210,19 @@ struct Config {
     std::vector<std::size_t> ball_sizes;  // the balls sweep, in a maze of about maze_walls walls
     std::size_t maze_walls;
     std::size_t thread_balls;  // the threads sweep: thread_balls balls in that maze
+    std::vector<std::size_t> meet_sizes;  // the meet sweep: this many discs in a box, without and with balls collide
 };
 
 Config config(ScaleSize size) {
     switch (size) {
-        case ScaleSize::smoke: return {true, 0.002, 4e6, 100, 5, {10, 100}, 100, {1, 100}, 100, 1000};
+        case ScaleSize::smoke: return {true, 0.002, 4e6, 100, 5, {10, 100}, 100, {1, 100}, 100, 1000, {100}};
         case ScaleSize::quick:
-            return {true, 0.15, 4e6, 4000, 20, {10, 100, 1000, 10000, 100000}, 2000, {1, 100, 10000, 100000}, 10000, 100000};
+            return {true, 0.15, 4e6, 4000, 20, {10, 100, 1000, 10000, 100000}, 2000, {1, 100, 10000, 100000},
+                    10000, 100000, {1000, 10000}};
         case ScaleSize::full: break;
     }
     return {false, 0.6, 2e7, 20000, 50, {10, 100, 1000, 10000, 100000, 1000000}, 10000,
-            {1, 10, 100, 1000, 10000, 100000, 1000000}, 10000, 100000};
+            {1, 10, 100, 1000, 10000, 100000, 1000000}, 10000, 100000, {1000, 10000}};
 }
 
 const char* size_flag(ScaleSize size) {
@@ -389,6 +412,93 @@ void measure(const Config& cfg, const std::string& sweep, int n, std::size_t bal
     }
 }
 
+/// The meet sweep at one size: count discs in a box (scale::make_box_discs), stepped by robust with the grid on one
+/// thread, without and with `balls collide`. Each is first checked: the first check_balls discs (alone in the box) for
+/// check_frames frames under the harness's no-tunnel and penetration, which read a meet as a printed point of the
+/// path (a failure counts as one, robust has none), counting the contacts with walls and the meets.
+void measure_meets(const Config& cfg, std::size_t count, std::vector<Row>& rows) {
+    Scene base;
+    base.walls = scale::make_box(count);
+    base.balls = scale::make_box_discs(count, 3000 + count);
+    for (const bool collide : {false, true}) {
+        Scene scene = base;
+        scene.balls_collide = collide;
+        Row r;
+        r.sweep = "meet";
+        r.method = collide ? "robust-meet+grid" : "robust-disc+grid";
+        r.walls = scene.walls.size();
+        r.balls = count;
+        Scene checked = scene;
+        checked.balls.resize(std::min(count, cfg.check_balls));
+        const Check checks[] = {Check::no_tunnel, Check::penetration};
+        long long hits = 0, meets = 0;
+        CheckOptions options;
+        options.keep_events = false;
+        options.on_frame = [&](std::span<const Event> frame) {
+            for (const Event& e : frame) {
+                hits += e.kind == Event::Kind::hit;
+                meets += e.kind == Event::Kind::meet;  // once under each of its two balls
+            }
+        };
+        const CheckedRun run = run_checked(checked, KernelId::robust, cfg.check_frames, checks, options);
+        const bool penetrated = run.failure && run.failure->check == Check::penetration;
+        r.tunnels = (run.failure && !penetrated) || run.error ? 1 : 0;
+        r.penetrations = penetrated ? 1 : 0;
+        r.checked_ball_frames = checked.balls.size() * static_cast<std::size_t>(cfg.check_frames);
+        r.hits_per_ball_frame = static_cast<double>(hits) / static_cast<double>(r.checked_ball_frames);
+        World world(scene, KernelId::robust, {.broad_phase = BroadPhase::grid, .threads = 1});
+        std::vector<Event> events;
+        const FrameTime t = time_per_frame(
+            [&] {
+                events.clear();
+                (void)world.step(events);
+            },
+            cfg.budget);
+        r.ms_per_frame = t.wall * 1e3;
+        r.ns_per_ball_frame = t.wall * 1e9 / static_cast<double>(count);
+        r.cpu_ns_per_ball_frame = t.cpu * 1e9 / static_cast<double>(count);
+        rows.push_back(r);
+        fmt::print("{:<7} {:>8} walls {:>8} balls  {:<17} {:>10.4f} ms/frame {:>9.1f} ns/ball-frame ({:>7.1f} CPU)  "
+                   "{:.3f} hits and {:.4f} meets/ball-frame, {} tunnels, {} penetrations in {} checked ball-frames\n",
+                   r.sweep, r.walls, r.balls, r.method, r.ms_per_frame, r.ns_per_ball_frame, r.cpu_ns_per_ball_frame,
+                   r.hits_per_ball_frame, static_cast<double>(meets) / 2 / static_cast<double>(r.checked_ball_frames),
+                   r.tunnels, r.penetrations, r.checked_ball_frames);
+        std::fflush(stdout);
+    }
+}
+
+/// The meet targets at `balls` discs: with `balls collide` at most 3× the cost per ball-frame of the same scene
+/// without, and at most 1 µs per ball-frame on one core.
+std::vector<bench::Verdict> meet_targets(const std::vector<Row>& rows, std::size_t balls, std::string label) {
+    bench::Verdict ratio{.workload = label + ", against without", .limit = 3.0, .target = "≤ 3× without"};
+    bench::Verdict time{.workload = label, .limit = 1000.0, .target = "≤ 1000 ns"};
+    for (const Row& m : rows)
+        if (m.sweep == "meet" && m.method == "robust-meet+grid" && m.balls == balls)
+            for (const Row& d : rows)
+                if (d.sweep == "meet" && d.method == "robust-disc+grid" && d.balls == balls) {
+                    ratio.value = m.ns_per_ball_frame / d.ns_per_ball_frame;
+                    ratio.robust = fmt::format("{:.0f} ns per ball-frame, without {:.0f} ns: {:.2f}×",
+                                               m.ns_per_ball_frame, d.ns_per_ball_frame, ratio.value);
+                    time.value = m.ns_per_ball_frame;
+                    time.robust = fmt::format("{:.0f} ns per ball-frame ({} discs, R = {}), {} failed checks",
+                                              m.ns_per_ball_frame, m.balls, scale::k_disc_radius,
+                                              m.tunnels + m.penetrations);
+                }
+    return {ratio, time};
+}
+
+/// scale.csv's columns, one row a line.
+void write_csv(const std::vector<Row>& rows, const std::string& path) {
+    bench::ResultFile csv(path);
+    csv.print("sweep,method,walls,balls,threads,ms_per_frame,ns_per_ball_frame,cpu_ns_per_ball_frame,"
+              "hits_per_ball_frame,tunnels,checked_ball_frames,penetrations\n");
+    for (const Row& r : rows)
+        csv.print("{},{},{},{},{},{},{},{},{},{},{},{}\n", r.sweep, r.method, r.walls, r.balls, r.threads,
+                  r.ms_per_frame, r.ns_per_ball_frame, r.cpu_ns_per_ball_frame, r.hits_per_ball_frame, r.tunnels,
+                  r.checked_ball_frames, r.penetrations);
+    csv.close();
+}
+
 /// The targets' peers column: each peer's row at ours's point, its time and ratio to ours, its failures.
 std::string peers_column(const std::vector<Row>& rows, const Row& ours,
                          std::initializer_list<std::pair<const char*, const char*>> peers) {
@@ -457,6 +567,9 @@ std::vector<bench::Verdict> scale_targets(const std::vector<Row>& rows, double s
                      .target = "≥ 1.96× (kept)"};
     if (!std::isnan(speed_up2)) t.robust = fmt::format("speed-up {:.2f}× ({} walls, {} balls)", speed_up2, walls, balls);
     out.push_back(t);
+    for (const auto& [n, label] : {std::pair<std::size_t, const char*>{1000, "discs that meet in a box, 10^3"},
+                                   std::pair<std::size_t, const char*>{10000, "discs that meet in a box, 10^4"}})
+        for (bench::Verdict& v : meet_targets(rows, n, label)) out.push_back(std::move(v));
     return out;
 }
 
@@ -476,6 +589,7 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
     std::vector<Row> rows;
     for (std::size_t w : cfg.wall_sizes) measure(cfg, "walls", lattice_for(w), cfg.sweep_balls, rows);
     for (std::size_t b : cfg.ball_sizes) measure(cfg, "balls", lattice_for(cfg.maze_walls), b, rows);
+    for (std::size_t b : cfg.meet_sizes) measure_meets(cfg, b, rows);
 
     double speed_up2 = NAN;
     std::size_t thread_walls = 0;
@@ -521,16 +635,7 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
     // CSV, gnuplot data and chart.
     std::filesystem::create_directories(out_dir);
     const std::string csv_path = out_dir + "/scale.csv";
-    {
-        bench::ResultFile csv(csv_path);
-        csv.print("sweep,method,walls,balls,threads,ms_per_frame,ns_per_ball_frame,cpu_ns_per_ball_frame,"
-                  "hits_per_ball_frame,tunnels,checked_ball_frames,penetrations\n");
-        for (const Row& r : rows)
-            csv.print("{},{},{},{},{},{},{},{},{},{},{},{}\n", r.sweep, r.method, r.walls, r.balls, r.threads,
-                      r.ms_per_frame, r.ns_per_ball_frame, r.cpu_ns_per_ball_frame, r.hits_per_ball_frame, r.tunnels,
-                      r.checked_ball_frames, r.penetrations);
-        csv.close();
-    }
+    write_csv(rows, csv_path);
     const std::vector<std::string> methods{"robust+grid",      "robust+bvh",       "robust-brute",
                                            "box2d-2.4.1",      "chipmunk-7",       "robust-disc+grid",
                                            "box2d-disc-2.4.1", "chipmunk-disc-7"};
@@ -580,8 +685,33 @@ int run_scale_bench(ScaleSize size, unsigned threads, const std::string& out_dir
 
     long long robust_tunnels = 0;
     for (const Row& r : rows)
-        if ((r.method == "robust+grid" || r.method == "robust-disc+grid") && r.tunnels > 0) robust_tunnels += r.tunnels;
+        if (r.method == "robust+grid" || r.method == "robust-disc+grid" || r.method == "robust-meet+grid")
+            robust_tunnels += std::max(0LL, r.tunnels) + std::max(0LL, r.sweep == "meet" ? r.penetrations : 0LL);
     return robust_tunnels == 0 ? 0 : 1;
+}
+
+int run_meet_bench(ScaleSize size, const std::string& out_dir) {
+    const Config cfg = config(size);
+    fmt::print("ricochet bench scale --meet{}: robust kernel, grid, one thread; discs of radius {} in a box, one per "
+               "2x2 cell, 0.05-0.5 units/frame, without and with balls collide\n",
+               size_flag(size), scale::k_disc_radius);
+    std::vector<Row> rows;
+    for (std::size_t b : cfg.meet_sizes) measure_meets(cfg, b, rows);
+    std::filesystem::create_directories(out_dir);
+    write_csv(rows, out_dir + "/meet.csv");
+    std::vector<bench::Verdict> verdicts;
+    for (const auto& [n, label] : {std::pair<std::size_t, const char*>{1000, "discs that meet in a box, 10^3"},
+                                   std::pair<std::size_t, const char*>{10000, "discs that meet in a box, 10^4"}})
+        for (bench::Verdict& v : meet_targets(rows, n, label)) verdicts.push_back(std::move(v));
+    bench::report_targets(verdicts,
+                          size == ScaleSize::smoke
+                              ? "meet targets (--smoke: sizes too small to measure; a check of the table only)"
+                              : fmt::format("meet targets: ricochet bench scale --meet{}, one thread", size_flag(size)),
+                          out_dir + "/meet_targets.md");
+    fmt::print("wrote {}/meet.csv\n", out_dir);
+    for (const Row& r : rows)
+        if (r.tunnels > 0 || r.penetrations > 0) return 1;
+    return 0;
 }
 
 }  // namespace ricochet

@@ -43,6 +43,8 @@ void register_bench(CLI::App& app) {
     sc->add_flag("--quick", opt->quick, "Smaller scenes (about a minute)");
     sc->add_flag("--smoke", opt->smoke, "Tiny scenes, a second: a correctness check (exit 1 if robust tunnelled)")
         ->excludes("--quick");
+    auto meet_only = std::make_shared<bool>(false);
+    sc->add_flag("--meet", *meet_only, "Only the meet sweep: discs in a box without and with balls collide");
     sc->add_option("--threads", *threads, "Worker threads (0: all cores)")->capture_default_str();
     sc->add_option("--out", opt->out_dir, "Folder for the CSV and the chart")->capture_default_str();
 
@@ -59,7 +61,7 @@ void register_bench(CLI::App& app) {
     CLI::App* mt = nullptr;
 #endif
 
-    cmd->callback([cmd, stab, fr, sc, mt, opt, frames, threads, meet_frames] {
+    cmd->callback([cmd, stab, fr, sc, mt, opt, frames, threads, meet_frames, meet_only] {
         int rc = 0;
         try {
             if (stab->parsed()) rc = run_stability(*opt);
@@ -70,10 +72,11 @@ void register_bench(CLI::App& app) {
                                                                                 : meet_bench::MeetSize::full,
                                                                    opt->seed, *meet_frames);
 #endif
-            else if (sc->parsed()) rc = ricochet::run_scale_bench(opt->smoke   ? ScaleSize::smoke
-                                                          : opt->quick ? ScaleSize::quick
-                                                                       : ScaleSize::full,
-                                                          *threads, opt->out_dir);
+            else if (sc->parsed()) {
+                const ScaleSize size = opt->smoke ? ScaleSize::smoke : opt->quick ? ScaleSize::quick : ScaleSize::full;
+                rc = *meet_only ? ricochet::run_meet_bench(size, opt->out_dir)
+                                : ricochet::run_scale_bench(size, *threads, opt->out_dir);
+            }
             else rc = run_bench(*opt);
         } catch (const std::exception& e) {
             // An output folder or file that cannot be written (the only failure a run can meet).

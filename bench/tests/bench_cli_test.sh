@@ -81,6 +81,12 @@ case "$case" in
                      fail "the walls sweep checked not 100 balls x 5 frames with 0 tunnels"
                    grep -q '^walls,robust-disc+grid,[0-9]*,100,1,[^,]*,[^,]*,[^,]*,[^,]*,0,500,0$' "$csv" ||
                      fail "the robust discs checked not 100 balls x 5 frames with 0 tunnels and 0 penetrations"
+                   # The meet sweep: 100 discs in a box, without and with balls collide, each checked over 100 balls x
+                   # 5 frames with 0 tunnels and 0 penetrations; its targets need 10^3 and 10^4 discs: not measured.
+                   for m in robust-disc+grid robust-meet+grid; do
+                     grep -q "^meet,$m,4,100,1,[^,]*,[^,]*,[^,]*,[^,]*,0,500,0\$" "$csv" ||
+                       fail "the meet sweep's $m row did not check 100 discs x 5 frames with 0 tunnels and 0 penetrations"
+                   done
                    if grep -q '^walls,box2d-2.4.1,' "$csv"; then
                      grep -q '^walls,box2d-disc-2.4.1,[0-9]*,100,1,[^,]*,[^,]*,[^,]*,[^,]*,[0-9]*,500,[0-9]*$' "$csv" ||
                        fail "Box2D's discs not checked over 100 balls x 5 frames"
@@ -90,8 +96,17 @@ case "$case" in
                    md=$dir/res/scale_targets.md
                    [ -s "$md" ] || fail "no scale_targets.md"
                    [ "$(grep -c '^| maze, 10^[456] walls | .* | not measured | ' "$md")" = 3 ] || fail "maze rows not 'not measured'"
+                   [ "$(grep -c '^| discs that meet in a box, 10^[34].* | not measured | ' "$md")" = 4 ] ||
+                     fail "the four meet rows not 'not measured'"
                    grep -q '^| 2 threads against 1 | speed-up [0-9.]*× .* | ≥ 1.96× (kept) | \(met\|\*\*missed\*\*\) | ' "$md" ||
                      fail "no verdict on the 2-thread row" ;;
+  scale-meet)      # bench scale --meet --smoke: the meet sweep alone, meet.csv (scale.csv's columns) and meet_targets.md.
+                   "$bench" bench scale --meet --smoke --out "$dir/res" >"$dir/out" 2>"$dir/err" || fail "exit $?"
+                   head -n 1 "$dir/out" | grep -q '^ricochet bench scale --meet --smoke: ' || fail "no --meet --smoke header"
+                   [ "$(grep -c '^meet,' "$dir/res/meet.csv")" = 2 ] || fail "not two rows in meet.csv"
+                   ! grep -q '^walls,' "$dir/res/meet.csv" || fail "the walls sweep ran"
+                   [ "$(grep -c '^| discs that meet in a box, 10^[34].* | not measured | ' "$dir/res/meet_targets.md")" = 4 ] ||
+                     fail "meet_targets.md has not the four meet rows, not measured" ;;
   targets)         # bench --smoke: the speed targets, a verdict each, printed and written to targets.md.
                    "$bench" bench --smoke --no-chart --out "$dir/res" >"$dir/out" 2>"$dir/err" || fail "exit $?"
                    md=$dir/res/targets.md

@@ -40,7 +40,9 @@ constexpr double k_max_time_s = 7 * 24 * 3600;
 void register_fuzz(CLI::App& app) {
     auto opt = std::make_shared<CampaignOptions>();
     CLI::App* sub = app.add_subcommand("fuzz", "run a libFuzzer campaign; failures become scene logs");
-    sub->add_option("--target", opt->targets, "target(s): parser, static, sweep, scene, disc (default: all built; disc only for a kernel that steps discs)");
+    sub->add_option("--target", opt->targets,
+                    "target(s): parser, static, sweep, scene, disc, meet (default: all built; disc only for a kernel that "
+                    "steps discs, meet only for one that steps balls that meet)");
     sub->add_option("--kernel", opt->kernel, "kernel under test: a kernel's name, or plugin:PATH (ricochet/plugin.h; default robust)");
     auto domain = std::make_shared<std::string>();
     CLI::Option* domain_opt =

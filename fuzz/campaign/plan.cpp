@@ -67,7 +67,8 @@ bool known_target(const std::string& t) {
 std::string how_to_build(const Plan& plan) {
     return fmt::format(
         "build them with clang and libFuzzer:\n  CC=clang-14 CXX=clang++-14 cmake -S {} -B build-fuzz-clang -G Ninja && "
-        "cmake --build build-fuzz-clang --target fuzz_parser fuzz_static fuzz_sweep fuzz_scene fuzz_disc ricochet\n"
+        "cmake --build build-fuzz-clang --target fuzz_parser fuzz_static fuzz_sweep fuzz_scene fuzz_disc fuzz_meet "
+        "ricochet\n"
         "then run build-fuzz-clang/cli/ricochet fuzz (or pass --bin-dir)",
         plan.source.string());
 }
@@ -247,9 +248,13 @@ std::optional<Plan> make_plan(const CampaignOptions& opt, const Budget& budget) 
     plan.budget = budget;
     plan.known_fails = !kernel_ops(kernel).failures_documented;
     std::vector<std::string> targets = opt.targets;
-    // The disc target needs a kernel that steps discs: left out of the default set for one that steps point balls
-    // only (saying so), refused when named.
+    // The disc target needs a kernel that steps discs, the meet target one that steps balls that meet: each left out
+    // of the default set for a kernel that does not (saying so), refused when named.
     const bool steps_discs = kernel_ops(kernel).step_disc != nullptr;
+    const bool steps_meets = steps_discs && kernel_ops(kernel).meet_rule != MeetRule::none;
+    const auto named = [&](std::string_view t) {
+        return std::find(targets.begin(), targets.end(), t) != targets.end();
+    };
     if (targets.empty()) {
         for (std::string_view t : k_campaign_targets)
             if (fs::exists(plan.bin_dir / fmt::format("fuzz_{}", t))) {
@@ -258,11 +263,21 @@ std::optional<Plan> make_plan(const CampaignOptions& opt, const Budget& budget) 
                                plan.kernel_name);
                     continue;
                 }
+                if (t == "meet" && !steps_meets) {
+                    fmt::print(stderr,
+                               "ricochet fuzz: note: leaving out target meet: kernel '{}' does not step balls that meet\n",
+                               plan.kernel_name);
+                    continue;
+                }
                 targets.emplace_back(t);
             }
-    } else if (!steps_discs && std::find(targets.begin(), targets.end(), "disc") != targets.end()) {
+    } else if (!steps_discs && named("disc")) {
         fmt::print(stderr, "ricochet fuzz: error: target disc needs a kernel that steps discs (lecture-float, lecture-double, "
                            "robust, exact); kernel '{}' steps point balls only\n", plan.kernel_name);
+        return std::nullopt;
+    } else if (!steps_meets && named("meet")) {
+        fmt::print(stderr, "ricochet fuzz: error: target meet needs a kernel that steps balls that meet (lecture-float, "
+                           "lecture-double, robust, exact); kernel '{}' does not\n", plan.kernel_name);
         return std::nullopt;
     }
     // Degenerate: nothing to fuzz.
@@ -272,7 +287,7 @@ std::optional<Plan> make_plan(const CampaignOptions& opt, const Budget& budget) 
     }
     for (const std::string& t : targets)
         if (!known_target(t)) {
-            fmt::print(stderr, "ricochet fuzz: error: unknown target '{}' (parser, static, sweep, scene, disc)\n", t);
+            fmt::print(stderr, "ricochet fuzz: error: unknown target '{}' (parser, static, sweep, scene, disc, meet)\n", t);
             return std::nullopt;
         }
     if (!make_run_folder(plan, command)) return std::nullopt;
@@ -308,7 +323,7 @@ std::optional<Plan> make_plan(const CampaignOptions& opt, const Budget& budget) 
 std::optional<Plan> make_convert_plan(const ConvertOptions& opt, const std::string& target, const std::string& kernel_spec) {
     constexpr const char* command = "ricochet fuzz convert";
     if (!known_target(target)) {
-        fmt::print(stderr, "{}: error: unknown target '{}' (parser, static, sweep, scene, disc)\n", command, target);
+        fmt::print(stderr, "{}: error: unknown target '{}' (parser, static, sweep, scene, disc, meet)\n", command, target);
         return std::nullopt;
     }
     KernelId kernel{};

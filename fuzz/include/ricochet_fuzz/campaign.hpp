@@ -12,7 +12,8 @@
 namespace ricochet::fuzz {
 
 /// Every target fuzz/ defines, in the order the summary lists them.
-inline constexpr std::array<std::string_view, 5> k_campaign_targets = {"parser", "static", "sweep", "scene", "disc"};
+inline constexpr std::array<std::string_view, 6> k_campaign_targets = {"parser", "static", "sweep", "scene", "disc",
+                                                                         "meet"};
 
 /// What a campaign runs and where it keeps things; an empty folder takes its default.
 struct CampaignOptions {
