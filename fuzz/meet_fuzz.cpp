@@ -7,7 +7,7 @@
 // Why a target of its own rather than `balls collide` in `disc`: it would change what every committed disc input
 // decodes to, and a kernel that steps discs but no meets could no longer run `disc`; here every input is a meeting
 // scene, with a corpus of its own (corpus/meet/), and `disc` keeps its meaning. Oracle: the shared checker
-// (run_checked) with meet_checks(), as `ricochet replay` runs them on the saved log.
+// (run_checked) with every check (meet_checks()), as `ricochet replay` runs them on the saved log.
 //
 // A kernel that steps no meets (a peer, a plug-in) cannot be fuzzed here: the target says so and exits with status 2
 // on its start (the campaign leaves `meet` out for such a kernel, and refuses it when named).
@@ -160,13 +160,9 @@ Scene decode(const std::uint8_t* data, std::size_t size) {
     return s;
 }
 
-/// The checks this target claims, as replay runs them on the saved log. Until the harness reads meets (ball-overlap,
-/// pass-through, momentum and relabel defined; event-order, round-trip, speed, oracle, accuracy, symmetry, swap,
-/// translation, boundary, bounce-side and ghost-bounce read for meets), those that already take a `meet` line as a
-/// printed point of the ball's path or compare whole runs bit for bit; once it does, every check (k_all_checks).
+/// The checks this target claims, as replay runs them on the saved log: every check, each of which reads meets.
 const std::vector<Check>& meet_checks() {
-    static const std::vector<Check> checks = {Check::no_tunnel,     Check::penetration, Check::no_escape,
-                                              Check::deterministic, Check::broad_phase, Check::plan};
+    static const std::vector<Check> checks(k_all_checks.begin(), k_all_checks.end());
     return checks;
 }
 

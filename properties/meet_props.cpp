@@ -49,14 +49,8 @@ std::optional<std::string> not_swept(KernelId k) {
 #define RICOCHET_SKIP_UNLESS_SWEPT(k)                                                                                  \
     if (const auto why = not_swept(k)) GTEST_SKIP() << *why
 
-/// The checks asked of a meet scene (MeetChecks). Until the harness reads meets — ball-overlap, pass-through,
-/// momentum and relabel defined, event-order, round-trip, speed, oracle, accuracy, symmetry, swap, translation,
-/// boundary, bounce-side and ghost-bounce read for meets — only the checks that already take a `meet` line as a
-/// printed point of the ball's path, or compare whole runs bit for bit. Once it does: every check (k_all_checks).
-std::vector<Check> meet_checks() {
-    return {Check::no_tunnel,     Check::penetration, Check::no_escape,
-            Check::deterministic, Check::broad_phase, Check::plan};
-}
+/// The checks asked of a meet scene (MeetChecks): every check, each of which reads meets (checks.hpp).
+std::vector<Check> meet_checks() { return {k_all_checks.begin(), k_all_checks.end()}; }
 
 // ---- exact numbers ----------------------------------------------------------------------------------------
 
