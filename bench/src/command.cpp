@@ -52,9 +52,8 @@ void register_bench(CLI::App& app) {
 #ifdef RICOCHET_HAVE_MEET_BENCH
     // What the peers miss when balls meet (bench/meet, ricochet_meet).
     CLI::App* mt = cmd->add_subcommand("meet", "Balls that meet: robust, lecture-double, Box2D and Chipmunk side by side");
-    mt->add_flag("--quick", opt->quick, "A quarter of the frames, 3 runs");
-    mt->add_flag("--smoke", opt->smoke, "25 discs, 5 frames: a correctness check (exit 1 if robust missed a meet)")
-        ->excludes("--quick");
+    // (ricochet_meet_bench --quick: a quarter of the frames, 3 runs.)
+    mt->add_flag("--smoke", opt->smoke, "25 discs, 5 frames: a correctness check (exit 1 if robust missed a meet)");
     mt->add_option("--seed", opt->seed, "Seed of the scenes");
     mt->add_option("--frames", *meet_frames, "Frames of the slow and fast scenes (the cost scene: a quarter)");
 #else
@@ -67,10 +66,9 @@ void register_bench(CLI::App& app) {
             if (stab->parsed()) rc = run_stability(*opt);
             else if (fr->parsed()) rc = run_frames(*opt, *frames);
 #ifdef RICOCHET_HAVE_MEET_BENCH
-            else if (mt->parsed()) rc = meet_bench::run_meet_bench(opt->smoke   ? meet_bench::MeetSize::smoke
-                                                                   : opt->quick ? meet_bench::MeetSize::quick
-                                                                                : meet_bench::MeetSize::full,
-                                                                   opt->seed, *meet_frames);
+            else if (mt->parsed())
+                rc = meet_bench::run_meet_bench(opt->smoke ? meet_bench::MeetSize::smoke : meet_bench::MeetSize::full,
+                                                opt->seed, *meet_frames);
 #endif
             else if (sc->parsed()) {
                 const ScaleSize size = opt->smoke ? ScaleSize::smoke : opt->quick ? ScaleSize::quick : ScaleSize::full;

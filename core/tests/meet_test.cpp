@@ -117,6 +117,30 @@ TEST(Meet, NewtonsCradlePassesTheMomentumDownTheLine) {
     }
 }
 
+TEST(Meet, AMeetTakenWhileAnotherSharingABallIsDueAtTheSameTimeIsMarkedTied) {
+    // Balls 0 and 2 reach ball 1, at rest between them, at t = 1/2 exactly: the pair (0, 1) is taken first, tied.
+    const Scene three = meeting({{{-4, 0}, {4, 0}, 1}, {{0, 0}, {0, 0}, 1}, {{4, 0}, {-4, 0}, 1}});
+    // One pair only, and two pairs at one time that share no ball: nothing tied.
+    const Scene two = meeting({{{-2, 0}, {2, 0}, 1}, {{2, 0}, {-2, 0}, 1}});
+    const Scene apart = meeting({{{-2, 0}, {2, 0}, 1}, {{2, 0}, {-2, 0}, 1}, {{-2, 10}, {2, 0}, 1}, {{2, 10}, {-2, 0}, 1}});
+    for (const KernelId k : {KernelId::robust, KernelId::exact}) {
+        World w(three, k);
+        std::vector<Event> events;
+        w.start(events);
+        ASSERT_FALSE(w.step(events));
+        ASSERT_GE(w.meets().size(), 2u) << kernel_name(k);
+        EXPECT_EQ(std::pair(w.meets()[0].a, w.meets()[0].b), std::pair(0u, 1u));
+        EXPECT_TRUE(w.meets()[0].tied);
+        for (const Scene* s : {&two, &apart}) {
+            World v(*s, k);
+            v.start(events);
+            ASSERT_FALSE(v.step(events));
+            ASSERT_FALSE(v.meets().empty());
+            for (const MeetRecord& m : v.meets()) EXPECT_FALSE(m.tied) << m.a << " " << m.b;
+        }
+    }
+}
+
 TEST(Meet, GlancingMeetTurnsBothAlongTheLineOfCentres) {
     // Ball 0 moving along x meets ball 1 at rest offset by 1 in y (S = 2): at contact the line of centres is at 30°
     // to the motion; afterwards both move, their velocities at right angles (equal masses), momentum kept.

@@ -199,8 +199,9 @@
 //   relabel        In a scene whose balls collide: the scene with its balls, and their masses, in reverse order,
 //                  stepped in lockstep, prints per ball the run's events with ball i as ball N − 1 − i (a meet's
 //                  other ball too), by value (−0 = +0). Meets at the same time are taken pair by pair in index
-//                  order, so from a frame where two of the World's meets at the same (rounded) time share a ball, in
-//                  either run, the two may part: that frame and every later one are not compared. Other scenes pass.
+//                  order, so from a frame where a meet was taken while another sharing a ball was due at the same
+//                  exact time (MeetRecord::tied, the World's own exact decision), in either run, the two may part:
+//                  that frame and every later one are not compared. Other scenes pass.
 //
 // Discs and bumpers: every check is defined in a scene with a disc or a bumper: no-tunnel, speed, no-escape (each
 // as written above, read for the disc's centre: its printed path, its velocity; m counts the bounces off bumpers

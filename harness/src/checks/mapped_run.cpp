@@ -52,15 +52,10 @@ Event MappedRun::mapped(Event e) const {
 
 namespace {
 
-/// Two of the meets at the same (rounded) time share a ball.
+/// A meet was taken while another sharing a ball was due at the same exact time (MeetRecord::tied): the tie rule's
+/// order depends on the balls' numbers.
 bool shared_time(std::span<const MeetRecord> meets) {
-    std::vector<std::pair<double, std::uint32_t>> at;  // (t, ball), each meet's two balls
-    for (const MeetRecord& m : meets) {
-        at.emplace_back(m.t, m.a);
-        at.emplace_back(m.t, m.b);
-    }
-    std::sort(at.begin(), at.end());
-    return std::adjacent_find(at.begin(), at.end()) != at.end();
+    return std::any_of(meets.begin(), meets.end(), [](const MeetRecord& m) { return m.tied; });
 }
 
 }  // namespace

@@ -6,8 +6,8 @@
 // decisions are the same, each ball's first contact at frames 0 and 1 (as `translation` compares them).
 // Balls that meet: a meet's `other ball` is mapped like the ball; the balls in reverse order take their masses along.
 // Meets at one time are taken pair by pair, the lowest pair first (docs/scene-log.md, "Balls that meet", 3), so with
-// the balls renumbered a frame where two meets at the same time share a ball (three balls at one point) may part:
-// from that frame on the image is not compared.
+// the balls renumbered a frame where a meet was taken while another sharing a ball was due at the same exact time
+// (three balls at one point; MeetRecord::tied) may part: from that frame on the image is not compared.
 #pragma once
 
 #include <optional>
@@ -41,8 +41,9 @@ public:
     std::optional<CheckFailure> frame(Check c, const Frame& f);
 
 private:
-    /// The balls in reverse order, among balls that meet: the frame is one where two meets at the same time share a
-    /// ball (in the run or the image), and the image is compared no more.
+    /// The balls in reverse order, among balls that meet: the frame is one where a meet was taken while another
+    /// sharing a ball was due at the same exact time (MeetRecord::tied, in the run or the image), and the image is
+    /// compared no more.
     bool parts(const Frame& f);
 
     Event mapped(Event e) const;

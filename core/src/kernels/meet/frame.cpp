@@ -84,11 +84,11 @@ public:
             heap_.pop_back();
             if (c.version_a != version_[c.a] || c.version_b != version_[c.b]) continue;  // a path it was found on changed
             if (taken == limit) {
-                safe_stop(c.root.estimate);
+                safe_stop(last_t_);
                 break;
             }
             ++taken;
-            take(c);
+            take(c, tied(c));
         }
         for (std::size_t i = 0; i < n_; ++i) finish(i);
     }
@@ -158,7 +158,24 @@ private:
         cut_path(b, pb, cut_b_);
         // An entry before t on the pieces that end at the centres (one at t itself is the meet).
         const std::optional<meet::Root> r = meet::first_meet(cut_a_, cut_b_, S, lo);
-        return r && meet::compare(*r, t) < 0;
+        if (r && meet::compare(*r, t) < 0) return true;
+        // A third ball there at that time, rounded where its own path puts it (three balls meeting at one time): the
+        // centres must not be closer to it than their radii's sum either, where they were not at lo.
+        bool crowded = false;
+        for (const auto& [ball, centre] : {std::pair{a, pa.x}, std::pair{b, pb.x}}) {
+            const std::uint32_t i = ball;
+            const Vec2 x = centre;
+            neighbours(i, [&](std::uint32_t k) {
+                const double Sk = radius(i) + radius(k);
+                const std::vector<PathPoint>& path = balls_[k].path;
+                if (crowded || k == a || k == b || !(Sk > 0.0) || path.front().t > t) return;
+                if (!meet::closer_than(x, meet::point_at(path, t).x, Sk)) return;
+                const Vec2 i_lo = meet::point_at(balls_[i].path, lo).x;
+                const Vec2 k_lo = path.front().t <= lo ? meet::point_at(path, lo).x : path.front().p;
+                crowded = !meet::closer_than(i_lo, k_lo, Sk);
+            });
+        }
+        return crowded;
     }
 
     /// The velocity ball i has on the piece of its current path that starts at printed point k.
@@ -197,7 +214,32 @@ private:
         ++version_[i];
     }
 
-    void take(const Candidate& c) {
+    /// True if another meet due now, at c's exact time, shares a ball with c: the heap's next entries at that time
+    /// are looked at (stale ones dropped) and put back.
+    bool tied(const Candidate& c) {
+        bool shared = false;
+        std::vector<Candidate> same;
+        while (!heap_.empty()) {
+            const Candidate& next = heap_.front();
+            const bool stale = next.version_a != version_[next.a] || next.version_b != version_[next.b];
+            if (!stale && meet::compare(next.root, c.root) != 0) break;
+            std::pop_heap(heap_.begin(), heap_.end(), later);
+            // The entry just looked at is at the back now.
+            const Candidate& x = heap_.back();
+            if (!stale) {
+                shared = shared || x.a == c.a || x.a == c.b || x.b == c.a || x.b == c.b;
+                same.push_back(std::move(heap_.back()));
+            }
+            heap_.pop_back();
+        }
+        for (Candidate& x : same) {
+            heap_.push_back(std::move(x));
+            std::push_heap(heap_.begin(), heap_.end(), later);
+        }
+        return shared;
+    }
+
+    void take(const Candidate& c, bool tied) {
         const std::uint32_t a = c.a, b = c.b;
         const double S = radius(a) + radius(b);
         const double lo = std::max(seg_t_[a], seg_t_[b]);
@@ -211,7 +253,8 @@ private:
             pb = place(b, t);
         }
         Ball ba{pa.x, velocity_on(a, pa.from), radius(a)}, bb{pb.x, velocity_on(b, pb.from), radius(b)};
-        MeetRecord record{a, b, t, pa.x, pb.x, ba.vel, bb.vel, {}, {}, false};
+        last_t_ = t;
+        MeetRecord record{a, b, t, pa.x, pb.x, ba.vel, bb.vel, {}, {}, false, tied};
         record.responded = kernel_ops(k_).respond(ba, bb, masses_[a], masses_[b]);
         record.out_a = ba.vel;
         record.out_b = bb.vel;
@@ -233,8 +276,9 @@ private:
         });
     }
 
-    /// The bound of meets reached: every ball stops where its path is at time t (placed as a meet's centre is),
-    /// keeping the velocity it has there.
+    /// The bound of meets reached: every ball stops where its path is at time t, the last meet's (placed as a meet's
+    /// centre is; no meet was due before it, so no two balls were closer than their R_i + R_j there), keeping the
+    /// velocity it has there.
     void safe_stop(double t) {
         for (std::size_t i = 0; i < n_; ++i) {
             const double at = std::max(t, seg_t_[i]);
@@ -244,7 +288,8 @@ private:
             BallFrame& f = balls_[i];
             f.events.clear();
             f.state = {p.x, v, radius(i)};
-            build_path(f.path, at, p.x, {}, p.x);
+            // The point it stops at is printed as its state only: its path runs on to it from its last printed point.
+            f.path = {{1.0, p.x}};
         }
     }
 
@@ -276,6 +321,7 @@ private:
     std::uint32_t stamp_ = 0;
     std::vector<Candidate> heap_;
     std::vector<PathPoint> cut_a_, cut_b_;  // the paths to a meet's centres (too_close)
+    double last_t_ = 0.0;                   // the time of the last meet taken
 };
 
 /// The lecture's rule: each ball stepped alone, then every pair whose boxes at the frame's end overlap, in index
