@@ -380,17 +380,18 @@ TEST(Relabel, TheBallsReversedPrintTheSameEventsUntilThreeMeetAtOnce) {
     for (Event& e : broken[2])
         if (e.kind == Event::Kind::state && e.ball == 2) e.pos.x += 0.5;
     EXPECT_TRUE(has(run(s, broken, {}), "relabel broke at frame 2 ball 2: the run with its balls in reverse order"));
-    // Two meets at the same time sharing ball 1 at frame 2: that frame and every later one are not compared.
-    const MeetRecord m01{0, 1, 0.25, {}, {}, {}, {}, {}, {}, true}, m12{1, 2, 0.25, {}, {}, {}, {}, {}, {}, true};
+    // A meet taken while another sharing a ball was due at the same exact time (the World marks it tied) at frame
+    // 2: that frame and every later one are not compared.
+    const MeetRecord m01{0, 1, 0.25, {}, {}, {}, {}, {}, {}, true, true}, m12{1, 2, 0.25, {}, {}, {}, {}, {}, {}, true};
     EXPECT_EQ(run(s, broken, {{}, {}, {m01, m12}}), "");
     std::vector<std::vector<Event>> later = frames;
     for (Event& e : later[3])
         if (e.kind == Event::Kind::state && e.ball == 0) e.vel.y = 1;
     EXPECT_EQ(run(s, later, {{}, {}, {m01, m12}}), "");
-    // At different times, or at one time with no ball shared, they are compared.
-    const MeetRecord m12_later{1, 2, 0.5, {}, {}, {}, {}, {}, {}, true};
-    EXPECT_NE(run(s, broken, {{}, {}, {m01, m12_later}}), "");
-    EXPECT_NE(run(s, later, {{}, {}, {m01}}), "");
+    // Meets at one rounded time that the World did not mark tied are compared.
+    const MeetRecord m01_untied{0, 1, 0.25, {}, {}, {}, {}, {}, {}, true};
+    EXPECT_NE(run(s, broken, {{}, {}, {m01_untied, m12}}), "");
+    EXPECT_NE(run(s, later, {{}, {}, {m01_untied}}), "");
     // Balls that do not collide: nothing is compared.
     Scene apart = s;
     apart.balls_collide = false;

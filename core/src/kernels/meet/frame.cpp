@@ -288,8 +288,9 @@ private:
             BallFrame& f = balls_[i];
             f.events.clear();
             f.state = {p.x, v, radius(i)};
-            // The point it stops at is printed as its state only: its path runs on to it from its last printed point.
-            f.path = {{1.0, p.x}};
+            // It stops there at time `at` and stays to the frame's end: the point is printed once, as its state; the
+            // path says when it got there (pass-through reads the path with its times).
+            f.path = {{at, p.x}, {1.0, p.x}};
         }
     }
 
