@@ -337,7 +337,7 @@ std::optional<Failure> cradle(KernelId k, const Scene& s) {
     mpq_class arrival = gap / speed;
     arrival.canonicalize();
     const mpz_class whole = arrival.get_num() / arrival.get_den();
-    if (whole + 1 > s.frames) return std::nullopt;
+    if (whole + 1 > mpz_class(static_cast<long>(s.frames))) return std::nullopt;  // frames ≤ 10^7: a long anywhere
     tag(fmt::format("a cradle of {} balls", n));
     mpq_class quarters = arrival * 4;
     quarters.canonicalize();
