@@ -155,7 +155,7 @@ TEST(Meet, GlancingMeetTurnsBothAlongTheLineOfCentres) {
     EXPECT_NEAR(m.out_a.y + m.out_b.y, 0.0, 1e-12);
     EXPECT_NEAR(dot(m.out_a, m.out_b), 0.0, 1e-12);
     // The printed centres are no closer than S.
-    EXPECT_FALSE(meet::closer_than(m.pos_a, m.pos_b, 2.0));
+    EXPECT_FALSE(meet::closer_than(m.pos_a, m.pos_b, {1.0, 1.0}));
 }
 
 TEST(Meet, FastBallsMeetUnderRobustAndPassThroughTheLecturesTest) {
@@ -195,9 +195,9 @@ TEST(Meet, BallsInACorridorBounceBetweenWallsAndEachOther) {
             ASSERT_FALSE(w.step(events));
             meets += static_cast<int>(w.meets().size());
             const auto b = w.balls();
-            ASSERT_FALSE(meet::closer_than(b[0].pos, b[1].pos, 2.0)) << kernel_name(k) << " frame " << f + 1;
+            ASSERT_FALSE(meet::closer_than(b[0].pos, b[1].pos, {1.0, 1.0})) << kernel_name(k) << " frame " << f + 1;
             for (const Ball& ball : b) ASSERT_LE(std::fabs(ball.pos.x), 9.0) << f + 1;
-            for (const MeetRecord& m : w.meets()) ASSERT_FALSE(meet::closer_than(m.pos_a, m.pos_b, 2.0));
+            for (const MeetRecord& m : w.meets()) ASSERT_FALSE(meet::closer_than(m.pos_a, m.pos_b, {1.0, 1.0}));
         }
         EXPECT_GT(meets, 20) << kernel_name(k);
     }
@@ -236,7 +236,7 @@ TEST(Meet, KernelsWithoutARuleRefuseTheScene) {
 TEST(MeetRoot, MeetTimesAreDecidedExactly) {
     // Ball 0 from (−4, 0) to (0, 0), ball 1 at rest at the origin, S = 2: they touch at t = 1/2 exactly.
     const std::vector<PathPoint> a0{{0, {-4, 0}}, {1, {0, 0}}}, still{{0, {0, 0}}, {1, {0, 0}}};
-    const auto ra = meet::first_meet(a0, still, 2.0, 0.0);
+    const auto ra = meet::first_meet(a0, still, {1.0, 1.0}, 0.0);
     ASSERT_TRUE(ra);
     EXPECT_EQ(ra->estimate, 0.5);
     EXPECT_EQ(meet::compare(*ra, 0.5), 0);
@@ -244,16 +244,16 @@ TEST(MeetRoot, MeetTimesAreDecidedExactly) {
     EXPECT_EQ(meet::compare(*ra, std::nextafter(0.5, 0.0)), 1);
     // Searched from 3/4, where ball 0 is already within S and still approaching: a meet there (a scene that
     // places balls overlapping).
-    const auto late = meet::first_meet(a0, still, 2.0, 0.75);
+    const auto late = meet::first_meet(a0, still, {1.0, 1.0}, 0.75);
     ASSERT_TRUE(late);
     EXPECT_EQ(meet::compare(*late, 0.75), 0);
     // A tangent is no meet: a path passing at exactly S.
     const std::vector<PathPoint> b0{{0, {-2, 2}}, {1, {2, 2}}};
-    EXPECT_FALSE(meet::first_meet(b0, still, 2.0, 0.0));
+    EXPECT_FALSE(meet::first_meet(b0, still, {1.0, 1.0}, 0.0));
     // One ulp inside it: a meet, at t = 1/2 − √(4 − y²)/4, an irrational time just before 1/2.
     const double y = std::nextafter(2.0, 0.0);
     const std::vector<PathPoint> c0{{0, {-2, y}}, {1, {2, y}}};
-    const auto rc = meet::first_meet(c0, still, 2.0, 0.0);
+    const auto rc = meet::first_meet(c0, still, {1.0, 1.0}, 0.0);
     ASSERT_TRUE(rc);
     EXPECT_EQ(meet::compare(*rc, *ra), -1);
     EXPECT_EQ(meet::compare(*ra, *rc), 1);
@@ -261,10 +261,10 @@ TEST(MeetRoot, MeetTimesAreDecidedExactly) {
     EXPECT_LT(rc->estimate, 0.5);
     // Two balls touching and approaching meet at once; touching and leaving, never.
     const std::vector<PathPoint> d0{{0, {-2, 0}}, {1, {-1, 0}}}, e0{{0, {-2, 0}}, {1, {-3, 0}}};
-    const auto rd = meet::first_meet(d0, still, 2.0, 0.0);
+    const auto rd = meet::first_meet(d0, still, {1.0, 1.0}, 0.0);
     ASSERT_TRUE(rd);
     EXPECT_EQ(meet::compare(*rd, 0.0), 0);
-    EXPECT_FALSE(meet::first_meet(e0, still, 2.0, 0.0));
+    EXPECT_FALSE(meet::first_meet(e0, still, {1.0, 1.0}, 0.0));
 }
 
 TEST(MeetRoot, PointsOnAPathAreCorrectlyRounded) {
@@ -275,8 +275,30 @@ TEST(MeetRoot, PointsOnAPathAreCorrectlyRounded) {
     // t = 0.5 on the second piece: 1/3 of the way, y = 1 exactly.
     EXPECT_EQ(meet::point_at(p, 0.5).x, (Vec2{1, 1}));
     EXPECT_EQ(meet::point_at(p, 1.0).x, (Vec2{1, 3}));
-    EXPECT_TRUE(meet::closer_than({0, 0}, {std::nextafter(2.0, 0.0), 0}, 2.0));
-    EXPECT_FALSE(meet::closer_than({0, 0}, {2, 0}, 2.0));
+    EXPECT_TRUE(meet::closer_than({0, 0}, {std::nextafter(2.0, 0.0), 0}, {1.0, 1.0}));
+    EXPECT_FALSE(meet::closer_than({0, 0}, {2, 0}, {1.0, 1.0}));
+}
+
+TEST(MeetRoot, TheRadiiAreSummedExactly) {
+    // R_i = 1 and R_j = 2^−80: their sum rounds to 1, yet the balls are wider than that.
+    const meet::Radii S{1.0, 0x1p-80};
+    ASSERT_EQ(S.rounded(), 1.0);
+    EXPECT_TRUE(meet::closer_than({0, 0}, {1, 0}, S));
+    EXPECT_FALSE(meet::closer_than({0, 0}, {1 + 0x1p-52, 0}, S));
+    // Ball 1 from (3, 0) toward ball 0 at rest at the origin at 5/2 a frame: at distance 1 at t = 4/5 exactly, at
+    // the exact sum 1 + 2^−80 a little before.
+    const std::vector<PathPoint> still{{0, {0, 0}}, {1, {0, 0}}}, in{{0, {3, 0}}, {1, {0.5, 0}}};
+    const auto r = meet::first_meet(in, still, S, 0.0);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(meet::compare(*r, 0.8), -1);
+    // The World's meet prints centres no closer than the exact sum.
+    const Scene s = meeting({{{0, 0}, {0, 0}, 1}, {{3, 0}, {-2.5, 0}, 0x1p-80}});
+    World w(s, KernelId::robust);
+    std::vector<Event> events;
+    w.start(events);
+    ASSERT_FALSE(w.step(events));
+    ASSERT_EQ(w.meets().size(), 1u);
+    EXPECT_FALSE(meet::closer_than(w.meets()[0].pos_a, w.meets()[0].pos_b, S));
 }
 
 }  // namespace

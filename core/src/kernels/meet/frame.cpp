@@ -111,8 +111,8 @@ private:
     /// Searches the pair's next meet on the current paths; `just_met`: they met at the start of these paths, so a
     /// meet at that very start is the one taken already (its response decided).
     void consider(std::uint32_t a, std::uint32_t b, bool just_met) {
-        const double S = radius(a) + radius(b);
-        if (!(S > 0.0) || !boxes_overlap(box_[a], box_[b])) return;
+        const meet::Radii S{radius(a), radius(b)};
+        if (!(S.rounded() > 0.0) || !boxes_overlap(box_[a], box_[b])) return;
         const double from = std::max(seg_t_[a], seg_t_[b]);
         const Vec2 end_a = balls_[a].state.vel, end_b = balls_[b].state.vel;
         std::optional<meet::Root> root = meet::first_meet(balls_[a].path, balls_[b].path, S, from, end_a, end_b);
@@ -145,7 +145,7 @@ private:
 
     /// Would the meet's printed centres at t leave balls a and b closer than S: the centres themselves, or the pieces
     /// to them from their last printed points (a grazing meet's rounded centres may be apart while the pieces dip)?
-    bool too_close(std::uint32_t a, std::uint32_t b, double S, double lo, double t, const meet::PointOnPath& pa,
+    bool too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, const meet::PointOnPath& pa,
                    const meet::PointOnPath& pb) {
         if (meet::closer_than(pa.x, pb.x, S)) return true;
         const auto cut_path = [&](std::uint32_t i, const meet::PointOnPath& p, std::vector<PathPoint>& out) {
@@ -157,7 +157,7 @@ private:
         cut_path(a, pa, cut_a_);
         cut_path(b, pb, cut_b_);
         // An entry before t on the pieces that end at the centres (one at t itself is the meet).
-        const std::optional<meet::Root> r = meet::first_meet(cut_a_, cut_b_, S, lo);
+        const std::optional<meet::Root> r = meet::first_meet(cut_a_, cut_b_, S, lo, {}, {}, t);
         if (r && meet::compare(*r, t) < 0) return true;
         // A third ball there at that time, rounded where its own path puts it (three balls meeting at one time): the
         // centres must not be closer to it than their radii's sum either, where they were not at lo.
@@ -166,10 +166,10 @@ private:
             const std::uint32_t i = ball;
             const Vec2 x = centre;
             neighbours(i, [&](std::uint32_t k) {
-                const double Sk = radius(i) + radius(k);
+                const meet::Radii Sk{radius(i), radius(k)};
                 const std::vector<PathPoint>& path = balls_[k].path;
-                if (crowded || k == a || k == b || !(Sk > 0.0) || path.front().t > t) return;
-                if (!meet::closer_than(x, meet::point_at(path, t).x, Sk)) return;
+                if (crowded || k == a || k == b || !(Sk.rounded() > 0.0) || path.front().t > t) return;
+                if (meet::surely_apart(x, path, t, Sk) || !meet::closer_than(x, meet::point_at(path, t).x, Sk)) return;
                 const Vec2 i_lo = meet::point_at(balls_[i].path, lo).x;
                 const Vec2 k_lo = path.front().t <= lo ? meet::point_at(path, lo).x : path.front().p;
                 crowded = !meet::closer_than(i_lo, k_lo, Sk);
@@ -241,7 +241,7 @@ private:
 
     void take(const Candidate& c, bool tied) {
         const std::uint32_t a = c.a, b = c.b;
-        const double S = radius(a) + radius(b);
+        const meet::Radii S{radius(a), radius(b)};
         const double lo = std::max(seg_t_[a], seg_t_[b]);
         double t = std::clamp(c.root.estimate, lo, 1.0);
         // The printed centres, no closer than S (exactly): t taken earlier, 1, 2, 4, … ulps, then lo.

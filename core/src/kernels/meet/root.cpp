@@ -104,25 +104,28 @@ void exact_motion(const Piece& s, double c, Rational& px, Rational& py, Rational
 
 }  // namespace
 
-std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const PathPoint> b, double S, double from,
-                               Vec2 end_a, Vec2 end_b) {
-    if (a.empty() || b.empty() || !(S > 0.0)) return std::nullopt;
+std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const PathPoint> b, Radii S, double from,
+                               Vec2 end_a, Vec2 end_b, double until) {
+    // Radii are ≥ 0, so the rounded sum is 0 exactly when the exact one is.
+    if (a.empty() || b.empty() || !(S.rounded() > 0.0)) return std::nullopt;
     double lo = std::max({from, a.front().t, b.front().t});
-    // The common breakpoints after lo: every printed time of either path in (lo, 1].
+    if (lo > until) return std::nullopt;
+    // The common breakpoints after lo: every printed time of either path in (lo, until].
     std::vector<double> cuts;
     for (const PathPoint& p : a)
-        if (p.t > lo && p.t <= 1.0) cuts.push_back(p.t);
+        if (p.t > lo && p.t <= until) cuts.push_back(p.t);
     for (const PathPoint& p : b)
-        if (p.t > lo && p.t <= 1.0) cuts.push_back(p.t);
+        if (p.t > lo && p.t <= until) cuts.push_back(p.t);
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-    if (cuts.empty() || cuts.back() < 1.0) cuts.push_back(1.0);
-    const Rational S2 = Rational(S) * Rational(S);
+    if (cuts.empty() || cuts.back() < until) cuts.push_back(until);
+    const Rational sum = Rational(S.a) + Rational(S.b);
+    const Rational S2 = sum * sum;
     for (const double c2 : cuts) {
         const double c = lo;
         lo = c2;
         const Piece pa = piece_at(a, c), pb = piece_at(b, c);
-        if (clearly_apart(pa, pb, S, c, c2)) continue;
+        if (clearly_apart(pa, pb, S.rounded(), c, c2)) continue;
         Rational ax, ay, avx, avy, bx, by, bvx, bvy;
         exact_motion(pa, c, ax, ay, avx, avy, end_a);
         exact_motion(pb, c, bx, by, bvx, bvy, end_b);
@@ -172,9 +175,35 @@ PointOnPath point_at(std::span<const PathPoint> path, double t) {
     return {{nearest(px), nearest(py)}, k};
 }
 
-bool closer_than(Vec2 a, Vec2 b, double S) {
+bool closer_than(Vec2 a, Vec2 b, Radii S) {
+    // The filter: d² = |a − b|² and s² = (R_i + R_j)² in doubles are each within 6 ulps of their exact values, and
+    // where d² + s² ≥ 2^−900 an underflow loses at most a few 2^−1074; farther apart than 2^−45·(d² + s²), the doubles
+    // decide. Otherwise (close, tiny, or overflowing) the exact comparison does.
+    const Vec2 d = a - b;
+    const double d2 = dot(d, d), s = S.rounded(), s2 = s * s, scale = d2 + s2;
+    if (std::isfinite(scale) && scale >= 0x1p-900) {
+        const double margin = 0x1p-45 * scale;
+        if (d2 < s2 - margin) return true;
+        if (d2 > s2 + margin) return false;
+    }
     const Rational dx = Rational(a.x) - Rational(b.x), dy = Rational(a.y) - Rational(b.y);
-    return dx * dx + dy * dy < Rational(S) * Rational(S);
+    const Rational sum = Rational(S.a) + Rational(S.b);
+    return dx * dx + dy * dy < sum * sum;
+}
+
+bool surely_apart(Vec2 x, std::span<const PathPoint> path, double t, Radii S) {
+    // The piece holding t in doubles is within a few ulps of its largest coordinate of the exact point, and point_at
+    // rounds the exact point to within one; a margin of 2^−40 of the magnitudes covers both.
+    std::size_t k = 0;
+    while (k + 1 < path.size() && path[k + 1].t <= t) ++k;
+    const Piece s = k + 1 < path.size() ? Piece{path[k].t, path[k + 1].t, path[k].p, path[k + 1].p}
+                                        : Piece{path[k].t, path[k].t, path[k].p, path[k].p};
+    const Vec2 y = path[k].t == t ? path[k].p : approx_at(s, t);
+    const double m = std::max({std::fabs(x.x), std::fabs(x.y), std::fabs(s.p0.x), std::fabs(s.p0.y),
+                               std::fabs(s.p1.x), std::fabs(s.p1.y), S.rounded()});
+    const Vec2 d = x - y;
+    const double dist = std::sqrt(dot(d, d));
+    return std::isfinite(dist) && std::isfinite(m) && dist > S.rounded() + 0x1p-40 * m;
 }
 
 }  // namespace ricochet::meet

@@ -19,14 +19,22 @@ struct Root {
     double estimate = 0.0;
 };
 
+/// Two balls' radii. Their sum S = R_i + R_j is taken exactly wherever a decision rests on it (a sum rounded to
+/// the larger radius would let the balls meet closer than they are wide); `rounded()` serves the filters only.
+struct Radii {
+    double a = 0.0, b = 0.0;
+    double rounded() const { return a + b; }
+};
+
 /// The first time at or after `from` at which paths a and b (each at least one point, times non-decreasing, the
 /// last at 1) come within S of each other while approaching: on each common interval [a, b] of a piece of one and
 /// a piece of the other, D(u) = D_a + W·u, the smaller root of |D(u)|² = S² with a + u in [a, b] (a double root,
 /// the tangent, is none), or a itself where |D_a| ≤ S and D_a·W < 0. Nothing if they do not meet by t = 1. A path
 /// that ends at its start (a ball stepped on from a meet at t = 1) has no piece to take a velocity from: end_a and
 /// end_b, the velocities the balls end the frame with, stand for it there.
-std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const PathPoint> b, double S, double from,
-                               Vec2 end_a = {}, Vec2 end_b = {});
+/// `until` (at most 1) ends the search earlier: nothing after it is looked at.
+std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const PathPoint> b, Radii S, double from,
+                               Vec2 end_a = {}, Vec2 end_b = {}, double until = 1.0);
 
 /// The sign of x − y, exactly.
 int compare(const Root& x, const Root& y);
@@ -42,7 +50,11 @@ struct PointOnPath {
 };
 PointOnPath point_at(std::span<const PathPoint> path, double t);
 
-/// |a − b|² < S², exactly.
-bool closer_than(Vec2 a, Vec2 b, double S);
+/// |a − b|² < S², exactly (a filter in doubles first).
+bool closer_than(Vec2 a, Vec2 b, Radii S);
+
+/// True if the filter proves that the path's centre at t (point_at's, rounded) is farther than S from x: a cheap
+/// look before point_at's exact one. False decides nothing.
+bool surely_apart(Vec2 x, std::span<const PathPoint> path, double t, Radii S);
 
 }  // namespace ricochet::meet
