@@ -161,7 +161,7 @@ capture() {
 }
 
 # capture_harness DIR BUILDDIR RUNNER...: the logs the harness itself saves, for fixed inputs and a fixed seed.
-#   - The fuzz targets (static, sweep, scene, disc; standalone driver, fuzz/standalone_main.cpp) on every committed
+#   - The fuzz targets (static, sweep, scene, disc, meet; standalone driver, fuzz/standalone_main.cpp) on every committed
 #     input of fuzz/corpus/<target>/ under each lecture kernel, one run per input (a failure aborts the run):
 #     whether it failed, its failure line (target, kernel, check, frame, kind) and the log it saved
 #     ($RICOCHET_FUZZ_SCENE_OUT), into run/fuzz__TARGET__KERNEL__INPUT.
@@ -175,7 +175,7 @@ capture_harness() {
   local ext=
   [ "$(basename "${1:-}")" = node ] && ext=.js
   mkdir -p "$dir/run" "$dir/saved"
-  for t in static sweep scene disc; do
+  for t in static sweep scene disc meet; do
     for k in $harness_kernels; do
       for input in fuzz/corpus/$t/*; do
         name=fuzz__${t}__${k}__${input##*/}
@@ -204,7 +204,7 @@ capture_harness() {
   done
 }
 harness_kernels="lecture-float lecture-double"
-harness_targets=(fuzz_static fuzz_sweep fuzz_scene fuzz_disc)
+harness_targets=(fuzz_static fuzz_sweep fuzz_scene fuzz_disc fuzz_meet)
 
 # The legs whose reduced logs are compared: all. (The reduced float-long-wall-reflect-nan.scene's message prints
 # a NaN velocity, whose sign is the processor's: negative on x86, positive on ARM and s390x. Messages print a NaN

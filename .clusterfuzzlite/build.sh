@@ -4,7 +4,7 @@
 # ClusterFuzzLite/OSS-Fuzz run it in their builder image; fuzz/clusterfuzzlite_test.sh runs it locally.
 SRC_DIR="${RICOCHET_SRC:-$SRC/ricochet}"
 BUILD="${WORK:-/tmp}/ricochet-fuzz-build"
-TARGETS="parser static sweep scene disc"
+TARGETS="parser static sweep scene disc meet"
 
 # -ffp-contract=off comes from the project; the engine's sanitizer flags arrive in CFLAGS/CXXFLAGS. A unity build
 # (each target's files compiled in batches): the same targets in under half the time (72 s against 160 s for

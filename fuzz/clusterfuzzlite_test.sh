@@ -14,7 +14,7 @@ export CXXFLAGS="$CFLAGS"
 export LIB_FUZZING_ENGINE="-fsanitize=fuzzer"
 bash "$SRC_DIR/.clusterfuzzlite/build.sh" > "$TMP/build.log" 2>&1 || { tail -40 "$TMP/build.log"; echo "FAIL: build.sh"; exit 1; }
 status=0
-for t in parser static sweep scene disc; do
+for t in parser static sweep scene disc meet; do
   for f in "$OUT/$t" "$OUT/$t.dict" "$OUT/${t}_seed_corpus.zip"; do
     [ -s "$f" ] || { echo "FAIL: $f missing"; status=1; }
   done

@@ -31,14 +31,6 @@ namespace {
 /// Most frames a decoded scene runs.
 constexpr std::int64_t k_disc_max_frames = 32;
 
-/// (1 + a byte) · 2^(base + sign·(the next byte % span)): the mantissa's byte read first. Read into variables, in
-/// order: a function's arguments are evaluated in an unspecified order (gcc on x86-64 right to left, on aarch64
-/// and clang left to right), and an input must decode to the same scene on every platform.
-double scaled(ByteReader& in, int base, int sign, unsigned span) {
-    const double m = 1.0 + in.u8();
-    const int e = base + sign * static_cast<int>(in.u8() % span);
-    return std::ldexp(m, e);
-}
 
 /// A radius from every regime: zero of both signs, subnormal, tiny, a small dyadic, any number, huge (to 2^256).
 double radius(ByteReader& in) {

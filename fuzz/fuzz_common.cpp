@@ -49,6 +49,12 @@ std::uint64_t ByteReader::u64() {
 
 double clamp_to_range(double x) { return in_range(x) ? x : 0.0; }
 
+double scaled(ByteReader& in, int base, int sign, unsigned span) {
+    const double m = 1.0 + in.u8();
+    const int e = base + sign * static_cast<int>(in.u8() % span);
+    return std::ldexp(m, e);
+}
+
 namespace {
 
 // Values where geometry is known to go wrong: zero of both signs, units, non-dyadic decimals,

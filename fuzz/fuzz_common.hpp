@@ -43,8 +43,13 @@ public:
     bool empty() const { return pos_ >= size_; }
     /// The next byte, 0 past the end.
     std::uint8_t u8() { return pos_ < size_ ? data_[pos_++] : 0; }
-    /// The next two bytes, little-endian.
-    std::uint16_t u16() { return static_cast<std::uint16_t>(u8() | (u8() << 8)); }
+    /// The next two bytes, little-endian (read in sequence: the operands of | are evaluated in an unspecified
+    /// order, and an input must decode alike on every compiler).
+    std::uint16_t u16() {
+        const unsigned lo = u8();
+        const unsigned hi = u8();
+        return static_cast<std::uint16_t>(lo | (hi << 8));
+    }
     /// The next eight bytes, little-endian.
     std::uint64_t u64();
     /// An integer in [0, n), n ≥ 1.
@@ -81,6 +86,10 @@ private:
 
 /// Keeps x in the accepted range: out-of-range or non-finite values become 0.
 double clamp_to_range(double x);
+
+/// (1 + a byte) · 2^(base + sign·(the next byte % span)): a number of a chosen magnitude, the mantissa's byte read
+/// first (arguments are evaluated in an unspecified order, and an input must decode alike on every platform).
+double scaled(ByteReader& in, int base, int sign, unsigned span);
 
 /// Runs scene (decoded from input) under the kernel under test with checks_for(input, checks) (run_checked, no
 /// events kept) and, on the first failure, calls fail: a target's whole oracle.

@@ -30,13 +30,6 @@ namespace {
 /// Most frames a decoded scene runs.
 constexpr std::int64_t k_meet_max_frames = 16;
 
-/// (1 + a byte) · 2^(base + sign·(the next byte % span)): the mantissa's byte read first (arguments are evaluated in
-/// an unspecified order, and an input must decode to the same scene on every platform).
-double scaled(ByteReader& in, int base, int sign, unsigned span) {
-    const double m = 1.0 + in.u8();
-    const int e = base + sign * static_cast<int>(in.u8() % span);
-    return std::ldexp(m, e);
-}
 
 /// A radius: 0 (a point ball, which meets discs only), tiny, m/64, any small dyadic, huge, or any magnitude.
 double radius(ByteReader& in) {
