@@ -22,10 +22,13 @@ inline bool boxes_overlap(const Box& a, const Box& b) {
     return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
 }
 
-/// A uniform grid of cells, each listing the balls entered whose boxes reach it.
+/// A uniform grid of cells, each listing the balls entered whose boxes reach it: the frame's boxes in one array in
+/// cell order (a counting sort: a few allocations a frame, not one per cell), the boxes entered later (new paths
+/// after meets, few) in a list per cell.
 class BoxGrid {
 public:
-    /// A grid over boxes, cells as large as the median box's larger side, at most about 4 cells per ball.
+    /// A grid over boxes, cells as large as the median box's larger side, at most about 4 cells per ball, with
+    /// every ball i entered with boxes[i].
     explicit BoxGrid(const std::vector<Box>& boxes) {
         const std::size_t n = boxes.size();
         if (n == 0) return;
@@ -43,21 +46,36 @@ public:
         // At most about 4n cells: a median far below the extent (most balls at rest) would make too many.
         const double floor_cell = std::sqrt(std::max(w * h, 0.0) / (4.0 * static_cast<double>(n)));
         cell = std::max(cell, floor_cell);
-        if (!(cell > 0.0) || !std::isfinite(cell) || !std::isfinite(w) || !std::isfinite(h)) return;  // one cell
+        if (!(cell > 0.0) || !std::isfinite(cell) || !std::isfinite(w) || !std::isfinite(h)) {
+            // One cell: everyone.
+            for (std::uint32_t i = 0; i < n; ++i) everyone_.push_back(i);
+            return;
+        }
         origin_ = all.lo;
         cell_ = cell;
         nx_ = static_cast<std::size_t>(std::min(w / cell, 4096.0)) + 1;
         ny_ = static_cast<std::size_t>(std::min(h / cell, 4096.0)) + 1;
-        cells_.assign(nx_ * ny_, {});
+        // Count each cell's balls, then place them: start_[c] .. start_[c + 1] are cell c's.
+        start_.assign(nx_ * ny_ + 1, 0);
+        for_cells(boxes, true, [&](std::uint32_t, std::size_t c) { ++start_[c + 1]; });
+        for (std::size_t c = 0; c + 1 < start_.size(); ++c) start_[c + 1] += start_[c];
+        entries_.resize(start_.back());
+        std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
+        for_cells(boxes, false, [&](std::uint32_t i, std::size_t c) { entries_[next[c]++] = i; });
+        head_.assign(nx_ * ny_, k_none);
     }
 
-    /// Enters ball i with box b.
+    /// Enters ball i again with box b (its entries under its old box stay: stale, the caller tests boxes).
     void insert(std::uint32_t i, const Box& b) {
-        if (cells_.empty()) return everyone_.push_back(i);
+        if (head_.empty()) return everyone_.push_back(i);
         const Range r = range(b);
-        if ((r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) > k_big_cells) return everyone_.push_back(i);
+        if (cells(r) > k_big_cells) return everyone_.push_back(i);
         for (std::size_t y = r.y0; y <= r.y1; ++y)
-            for (std::size_t x = r.x0; x <= r.x1; ++x) cells_[y * nx_ + x].push_back(i);
+            for (std::size_t x = r.x0; x <= r.x1; ++x) {
+                std::uint32_t& head = head_[y * nx_ + x];
+                later_.push_back({i, head});
+                head = static_cast<std::uint32_t>(later_.size() - 1);
+            }
     }
 
     /// Calls f(j) for every ball j entered in a cell b reaches, or entered as reaching everywhere (j may repeat,
@@ -65,25 +83,50 @@ public:
     template <class F>
     void query(const Box& b, F&& f) const {
         for (std::uint32_t j : everyone_) f(j);
-        if (cells_.empty()) return;
+        if (head_.empty()) return;
         const Range r = range(b);
-        if ((r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1) > k_big_cells) {
-            for (const auto& c : cells_)
-                for (std::uint32_t j : c) f(j);
+        if (cells(r) > k_big_cells) {
+            for (std::uint32_t j : entries_) f(j);
+            for (const Later& e : later_) f(e.ball);
             return;
         }
         for (std::size_t y = r.y0; y <= r.y1; ++y)
-            for (std::size_t x = r.x0; x <= r.x1; ++x)
-                for (std::uint32_t j : cells_[y * nx_ + x]) f(j);
+            for (std::size_t x = r.x0; x <= r.x1; ++x) {
+                const std::size_t c = y * nx_ + x;
+                for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) f(entries_[k]);
+                for (std::uint32_t e = head_[c]; e != k_none; e = later_[e].next) f(later_[e].ball);
+            }
     }
 
 private:
     /// A box larger than this many cells is listed as reaching everywhere.
     static constexpr std::size_t k_big_cells = 256;
+    static constexpr std::uint32_t k_none = 0xffffffffu;
 
     struct Range {
         std::size_t x0, x1, y0, y1;
     };
+    /// An entry made after the grid was built: its ball and the cell's previous such entry.
+    struct Later {
+        std::uint32_t ball, next;
+    };
+
+    static std::size_t cells(const Range& r) { return (r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1); }
+
+    /// Calls f(i, c) for each ball i and each cell c its box reaches; a ball whose box reaches too many is entered
+    /// as reaching everywhere instead (if enter_big: on the first of the two passes).
+    template <class F>
+    void for_cells(const std::vector<Box>& boxes, bool enter_big, F&& f) {
+        for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+            const Range r = range(boxes[i]);
+            if (cells(r) > k_big_cells) {
+                if (enter_big) everyone_.push_back(i);
+                continue;
+            }
+            for (std::size_t y = r.y0; y <= r.y1; ++y)
+                for (std::size_t x = r.x0; x <= r.x1; ++x) f(i, y * nx_ + x);
+        }
+    }
 
     std::size_t clamp_cell(double v, std::size_t n) const {
         if (!(v > 0.0)) return 0;  // below the origin, or NaN
@@ -98,7 +141,10 @@ private:
     Vec2 origin_{};
     double cell_ = 1.0;
     std::size_t nx_ = 0, ny_ = 0;
-    std::vector<std::vector<std::uint32_t>> cells_;
+    std::vector<std::size_t> start_;       // cell c's entries are entries_[start_[c] .. start_[c + 1])
+    std::vector<std::uint32_t> entries_;   // the frame's boxes, by cell
+    std::vector<std::uint32_t> head_;      // cell c's latest later entry, or k_none
+    std::vector<Later> later_;             // the boxes entered since
     std::vector<std::uint32_t> everyone_;  // balls whose boxes reach too many cells (or every ball: no grid)
 };
 

@@ -71,7 +71,6 @@ public:
         }
         // Every pair whose boxes overlap, found through a grid of the boxes.
         grid_.emplace(box_);
-        for (std::uint32_t i = 0; i < n_; ++i) grid_->insert(i, box_[i]);
         seen_.assign(n_, 0);
         for (std::uint32_t i = 0; i < n_; ++i) neighbours(i, [&](std::uint32_t j) {
                 if (j > i) consider(i, j, false);
@@ -116,7 +115,7 @@ private:
         const double from = std::max(seg_t_[a], seg_t_[b]);
         const Vec2 end_a = balls_[a].state.vel, end_b = balls_[b].state.vel;
         std::optional<meet::Root> root = meet::first_meet(balls_[a].path, balls_[b].path, S, from, end_a, end_b);
-        if (root && just_met && bignum::sign(root->q) == 0 && meet::compare(*root, from) == 0) {
+        if (root && just_met && root->at_start && meet::compare(*root, from) == 0) {
             // The start-in-reach rule at the meet itself: search past it, from the next printed time on.
             root.reset();
             double next = 1.0;

@@ -1,19 +1,28 @@
-// Meet times of two balls' paths, exactly (root.hpp; docs/scene-log.md, "Balls that meet", 2 and 3).
+// Meet times of two balls' paths, exactly (root.hpp; docs/scene-log.md, "Balls that meet", 2 to 4).
+//
+// Every decision is made in two stages, as the disc frame's are (kernels/disc/arith.hpp): first in double-double
+// arithmetic with a running error bound (Approx2: a sign is taken only where the bound decides it, a rounding only
+// where every value within the bound rounds alike), then, where that does not decide, with rationals. Both stages
+// answer the same exact question, so which one answered never shows in a result.
 #include "kernels/meet/root.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 #include "base/round.hpp"
+#include "kernels/disc/arith.hpp"
 
 namespace ricochet::meet {
 namespace {
 
 using bignum::Rational;
+using disc::Approx2;
 
 /// The double nearest to q.
 double nearest(const Rational& q) { return bignum::round_quotient(bignum::numerator(q), bignum::denominator(q), 0); }
+
+/// An input double, exact.
+Approx2 fine(double x) { return {x, 0.0, 0.0}; }
 
 /// sign(x + y·√d), d ≥ 0, exactly: where the two terms' signs differ, compare their squares.
 int sign_root(const Rational& x, const Rational& y, const Rational& d) {
@@ -36,19 +45,31 @@ int sign_two_roots(const Rational& x, const Rational& y, const Rational& d, cons
     return c > 0 ? s1 : c < 0 ? s2 : 0;
 }
 
-/// The estimate of the entry time c + u, u = (−B − √disc)/A, in the form without cancellation: u·(−B + √disc) =
-/// B² − disc = A·qa, so u = qa/(−B + √disc), both terms of the sum positive (B < 0). √disc to 70 bits makes u good
-/// to 2^−70 relative (u ≤ 1), whatever the sizes of A, B and qa (a subnormal scene makes them thousands of bits).
-double estimate(const Rational& c, const Rational& qa, const Rational& B, const Rational& disc) {
-    const Rational u = qa / Rational(-B + bignum::sqrt_below(disc, 70));
-    return nearest(Rational(c + u));
+/// True if the double has an even significand (ties round to it).
+bool even(double y) {
+    int e = 0;
+    const double m = std::frexp(y, &e);
+    return std::fmod(std::ldexp(m, 53), 2.0) == 0.0;
 }
 
-/// A piece of a path: from p0 at t0 to p1 at t1 > t0 (or a ball at rest at p0 from t0 on, t1 = t0).
-struct Piece {
-    double t0, t1;
-    Vec2 p0, p1;
-};
+/// The double nearest to p + q·√r (ties to even), from y within an ulp or so of it: y is moved to a neighbour while
+/// the exact value lies beyond the midpoint between them.
+double round_root(const Rational& p, const Rational& q, const Rational& r, double y) {
+    for (;;) {
+        const double up = std::nextafter(y, HUGE_VAL), down = std::nextafter(y, -HUGE_VAL);
+        const int above = sign_root(Rational(p - (Rational(y) + Rational(up)) / 2), q, r);
+        if (above > 0 || (above == 0 && !even(y))) {
+            y = up;
+            continue;
+        }
+        const int below = sign_root(Rational(p - (Rational(y) + Rational(down)) / 2), q, r);
+        if (below < 0 || (below == 0 && !even(y))) {
+            y = down;
+            continue;
+        }
+        return y;
+    }
+}
 
 /// The piece of path holding the interval starting at t: the last point at or before t and the next point after
 /// it (a path that ends before the interval holds its last point).
@@ -84,8 +105,36 @@ bool clearly_apart(const Piece& a, const Piece& b, double S, double c, double c2
     return dist > S + 0x1p-40 * m;
 }
 
-/// The piece's velocity and its point at c, exactly; a piece of no duration (a ball at the end of its path) moves
-/// with `end`.
+/// One coordinate of a piece's velocity, (x1 − x0)/(t1 − t0), bounded (exactly 0 where the coordinate stays).
+Approx2 fine_velocity(double x0, double x1, const Approx2& dt) {
+    if (x1 == x0) return fine(0.0);
+    return (fine(x1) - fine(x0)) / dt;
+}
+
+/// The relative motion of two pieces over an interval from c: D(u) = D_c + W·u, and the quadratic's coefficients
+/// |D(u)|² − S² = qa + 2B·u + A·u², in type N (Approx2 or Rational).
+template <class N>
+struct Relative {
+    N qa, B, A;
+};
+
+/// The piece's point at c and velocity, bounded; a piece of no duration moves with `end`.
+void fine_motion(const Piece& s, double c, Vec2 end, Approx2& px, Approx2& py, Approx2& vx, Approx2& vy) {
+    if (s.t1 == s.t0) {
+        px = fine(s.p0.x);
+        py = fine(s.p0.y);
+        vx = fine(end.x);
+        vy = fine(end.y);
+        return;
+    }
+    const Approx2 dt = fine(s.t1) - fine(s.t0), from = fine(c) - fine(s.t0);
+    vx = fine_velocity(s.p0.x, s.p1.x, dt);
+    vy = fine_velocity(s.p0.y, s.p1.y, dt);
+    px = fine(s.p0.x) + from * vx;
+    py = fine(s.p0.y) + from * vy;
+}
+
+/// The piece's velocity and its point at c, exactly; a piece of no duration moves with `end`.
 void exact_motion(const Piece& s, double c, Rational& px, Rational& py, Rational& vx, Rational& vy, Vec2 end = {}) {
     if (s.t1 == s.t0) {
         px = Rational(s.p0.x);
@@ -102,7 +151,89 @@ void exact_motion(const Piece& s, double c, Rational& px, Rational& py, Rational
     py = Rational(s.p0.y) + from * vy;
 }
 
+Relative<Approx2> fine_relative(const Root& r) {
+    Approx2 ax, ay, avx, avy, bx, by, bvx, bvy;
+    fine_motion(r.a, r.c, r.end_a, ax, ay, avx, avy);
+    fine_motion(r.b, r.c, r.end_b, bx, by, bvx, bvy);
+    const Approx2 dx = ax - bx, dy = ay - by, wx = avx - bvx, wy = avy - bvy, sum = fine(r.S.a) + fine(r.S.b);
+    return {dx * dx + dy * dy - sum * sum, dx * wx + dy * wy, wx * wx + wy * wy};
+}
+
+Relative<Rational> exact_relative(const Root& r) {
+    Rational ax, ay, avx, avy, bx, by, bvx, bvy;
+    exact_motion(r.a, r.c, ax, ay, avx, avy, r.end_a);
+    exact_motion(r.b, r.c, bx, by, bvx, bvy, r.end_b);
+    const Rational dx = ax - bx, dy = ay - by, wx = avx - bvx, wy = avy - bvy;
+    const Rational sum = Rational(r.S.a) + Rational(r.S.b);
+    return {dx * dx + dy * dy - sum * sum, dx * wx + dy * wy, wx * wx + wy * wy};
+}
+
+/// What an interval holds: no meet, a meet at its start, a meet inside it (its time's double, where known), or
+/// (the bounded stage only) not decided.
+enum class Holds { nothing, meet_at_start, meet, unsure };
+
+/// The interval's verdict on D(u) = D_c + W·u, u in [0, L]: within S at c (qa ≤ 0), a meet there if they approach
+/// (B < 0); clear at c, an entry needs approach (B < 0, A > 0) and two distinct real roots (disc = B² − A·qa > 0, a
+/// tangent is no meet), and the smaller root u = (−B − √disc)/A lies in [0, L] iff −B − A·L ≤ √disc. Its time is
+/// c + u in the form without cancellation, u·(−B + √disc) = B² − disc = A·qa: u = qa/(−B + √disc).
+std::optional<Holds> fine_verdict(const Relative<Approx2>& m, double c, double c2, double& estimate) {
+    const auto sq = disc::sign(m.qa), sb = disc::sign(m.B);
+    if (!sq || !sb) return std::nullopt;
+    if (*sq <= 0) return *sb < 0 ? Holds::meet_at_start : Holds::nothing;
+    const auto sa = disc::sign(m.A);
+    if (!sa) return std::nullopt;
+    if (*sa == 0 || *sb >= 0) return Holds::nothing;
+    const Approx2 disc = m.B * m.B - m.A * m.qa;
+    const auto sd = disc::sign(disc);
+    if (!sd) return std::nullopt;
+    if (*sd <= 0) return Holds::nothing;
+    const Approx2 lhs = -m.B - m.A * (fine(c2) - fine(c));
+    const auto sl = disc::sign(lhs);
+    if (!sl) return std::nullopt;
+    if (*sl > 0) {
+        const auto beyond = disc::sign(lhs * lhs - disc);
+        if (!beyond) return std::nullopt;
+        if (*beyond > 0) return Holds::nothing;
+    }
+    const std::optional<double> t = disc::nearest_double(fine(c) + m.qa / (-m.B + disc::sqrt(disc)));
+    if (!t) return Holds::unsure;  // a meet, its time's rounding not decided here
+    estimate = *t;
+    return Holds::meet;
+}
+
+/// The exact time of a meet the interval holds: c itself, or the smaller root c + (−B − √disc)/A.
+Root::Exact exact_time(const Relative<Rational>& m, double c, bool at_start) {
+    if (at_start) return {Rational(c), Rational(0), Rational(0)};
+    return {Rational(c) - m.B / m.A, Rational(-1) / m.A, Rational(m.B * m.B - m.A * m.qa)};
+}
+
+/// The same verdict exactly.
+Holds exact_verdict(const Relative<Rational>& m, double c, double c2) {
+    if (bignum::sign(m.qa) <= 0) return bignum::sign(m.B) < 0 ? Holds::meet_at_start : Holds::nothing;
+    if (bignum::sign(m.A) == 0 || bignum::sign(m.B) >= 0) return Holds::nothing;
+    const Rational disc = m.B * m.B - m.A * m.qa;
+    if (bignum::sign(disc) <= 0) return Holds::nothing;
+    const Rational lhs = -m.B - m.A * (Rational(c2) - Rational(c));
+    if (bignum::sign(lhs) > 0 && lhs * lhs > disc) return Holds::nothing;
+    return Holds::meet;
+}
+
+/// The double nearest the exact time: the start itself, or from an estimate of c + qa/(−B + √disc) with √disc to
+/// 70 bits (good to 2^−70 relative, u ≤ 1, whatever the sizes of A, B and qa: a subnormal scene makes them
+/// thousands of bits), moved to the nearest double exactly.
+double exact_estimate(const Relative<Rational>& m, double c, const Root::Exact& exact) {
+    if (bignum::sign(exact.q) == 0) return c;
+    const Rational disc = m.B * m.B - m.A * m.qa;
+    const double y = nearest(Rational(Rational(c) + m.qa / Rational(-m.B + bignum::sqrt_below(disc, 70))));
+    return round_root(exact.p, exact.q, exact.r, y);
+}
+
 }  // namespace
+
+const Root::Exact& exact_of(const Root& root) {
+    if (!root.exact) root.exact = exact_time(exact_relative(root), root.c, root.at_start);
+    return *root.exact;
+}
 
 std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const PathPoint> b, Radii S, double from,
                                Vec2 end_a, Vec2 end_b, double until) {
@@ -110,59 +241,61 @@ std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const Pat
     if (a.empty() || b.empty() || !(S.rounded() > 0.0)) return std::nullopt;
     double lo = std::max({from, a.front().t, b.front().t});
     if (lo > until) return std::nullopt;
-    // The common breakpoints after lo: every printed time of either path in (lo, until].
-    std::vector<double> cuts;
-    for (const PathPoint& p : a)
-        if (p.t > lo && p.t <= until) cuts.push_back(p.t);
-    for (const PathPoint& p : b)
-        if (p.t > lo && p.t <= until) cuts.push_back(p.t);
-    std::sort(cuts.begin(), cuts.end());
-    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-    if (cuts.empty() || cuts.back() < until) cuts.push_back(until);
-    const Rational sum = Rational(S.a) + Rational(S.b);
-    const Rational S2 = sum * sum;
-    for (const double c2 : cuts) {
-        const double c = lo;
+    // The common intervals from lo: cut at every printed time of either path in (lo, until], and at until. (Both
+    // paths' times are non-decreasing: the next cut is the smaller of their next times, found without a buffer.)
+    std::size_t ia = 0, ib = 0;
+    const auto next_cut = [&](double t) {
+        while (ia < a.size() && a[ia].t <= t) ++ia;
+        while (ib < b.size() && b[ib].t <= t) ++ib;
+        double cut = until;
+        if (ia < a.size()) cut = std::min(cut, a[ia].t);
+        if (ib < b.size()) cut = std::min(cut, b[ib].t);
+        return cut;
+    };
+    do {
+        const double c = lo, c2 = next_cut(lo);
         lo = c2;
-        const Piece pa = piece_at(a, c), pb = piece_at(b, c);
-        if (clearly_apart(pa, pb, S.rounded(), c, c2)) continue;
-        Rational ax, ay, avx, avy, bx, by, bvx, bvy;
-        exact_motion(pa, c, ax, ay, avx, avy, end_a);
-        exact_motion(pb, c, bx, by, bvx, bvy, end_b);
-        // D(u) = D_a + W·u, u = t − c in [0, L].
-        const Rational dx = ax - bx, dy = ay - by, wx = avx - bvx, wy = avy - bvy;
-        const Rational qa = dx * dx + dy * dy - S2, B = dx * wx + dy * wy, A = wx * wx + wy * wy;
-        // Already within S at c (touching, or placed overlapping): a meet at c if they approach.
-        if (bignum::sign(qa) <= 0) {
-            if (bignum::sign(B) < 0) return Root{Rational(c), Rational(0), Rational(0), c};
-            continue;
+        Root root;
+        root.c = c;
+        root.a = piece_at(a, c);
+        root.b = piece_at(b, c);
+        root.end_a = end_a;
+        root.end_b = end_b;
+        root.S = S;
+        if (clearly_apart(root.a, root.b, S.rounded(), c, c2)) continue;
+        double estimate = c;
+        std::optional<Holds> holds = fine_verdict(fine_relative(root), c, c2, estimate);
+        if (!holds || *holds == Holds::unsure) {
+            // The rationals decide what the bounded stage did not (or round the time it could not).
+            const Relative<Rational> m = exact_relative(root);
+            holds = exact_verdict(m, c, c2);
+            if (*holds != Holds::nothing) {
+                root.exact = exact_time(m, c, *holds == Holds::meet_at_start);
+                estimate = exact_estimate(m, c, *root.exact);
+            }
         }
-        // Clear at c: an entry needs approach (B < 0) and two distinct real roots.
-        if (bignum::sign(A) == 0 || bignum::sign(B) >= 0) continue;
-        const Rational disc = B * B - A * qa;
-        if (bignum::sign(disc) <= 0) continue;  // a tangent (or no root) is no meet
-        // The smaller root u = (−B − √disc)/A lies in [0, L] iff −B − A·L ≤ √disc.
-        const Rational L = Rational(c2) - Rational(c);
-        const Rational lhs = -B - A * L;
-        if (bignum::sign(lhs) > 0 && lhs * lhs > disc) continue;
-        Root root{Rational(c) - B / A, Rational(-1) / A, disc, 0.0};
-        root.estimate = std::clamp(estimate(Rational(c), qa, B, disc), c, c2);
+        if (*holds == Holds::nothing) continue;
+        root.at_start = *holds == Holds::meet_at_start;
+        root.estimate = root.at_start ? c : std::clamp(estimate, c, c2);
         return root;
-    }
+    } while (lo < until);
     return std::nullopt;
 }
 
 int compare(const Root& x, const Root& y) {
-    // The estimates are within 2^−52 of their exact values (estimate()): farther apart than 2^−48, they decide.
+    // The estimates are the doubles nearest their exact values (within 2^−53 of them, t ≤ 1): farther apart than
+    // 2^−48, they decide.
     if (x.estimate < y.estimate - 0x1p-48) return -1;
     if (x.estimate > y.estimate + 0x1p-48) return 1;
-    return sign_two_roots(Rational(x.p - y.p), x.q, x.r, Rational(-y.q), y.r);
+    const Root::Exact &ex = exact_of(x), &ey = exact_of(y);
+    return sign_two_roots(Rational(ex.p - ey.p), ex.q, ex.r, Rational(-ey.q), ey.r);
 }
 
 int compare(const Root& x, double t) {
     if (x.estimate < t - 0x1p-48) return -1;
     if (x.estimate > t + 0x1p-48) return 1;
-    return sign_root(Rational(x.p - Rational(t)), x.q, x.r);
+    const Root::Exact& ex = exact_of(x);
+    return sign_root(Rational(ex.p - Rational(t)), ex.q, ex.r);
 }
 
 PointOnPath point_at(std::span<const PathPoint> path, double t) {
@@ -170,6 +303,14 @@ PointOnPath point_at(std::span<const PathPoint> path, double t) {
     while (k + 1 < path.size() && path[k + 1].t <= t) ++k;
     if (path[k].t == t || k + 1 >= path.size()) return {path[k].p, k};
     const Piece s{path[k].t, path[k + 1].t, path[k].p, path[k + 1].p};
+    // X = P0 + (t − t0)·(P1 − P0)/(t1 − t0), each coordinate rounded to nearest: bounded first, then exactly.
+    const Approx2 f = (fine(t) - fine(s.t0)) / (fine(s.t1) - fine(s.t0));
+    const auto coordinate = [&](double x0, double x1) -> std::optional<double> {
+        if (x1 == x0) return x0;
+        return disc::nearest_double(fine(x0) + f * (fine(x1) - fine(x0)));
+    };
+    const std::optional<double> x = coordinate(s.p0.x, s.p1.x), y = coordinate(s.p0.y, s.p1.y);
+    if (x && y) return {{*x, *y}, k};
     Rational px, py, vx, vy;
     exact_motion(s, t, px, py, vx, vy);
     return {{nearest(px), nearest(py)}, k};
@@ -178,7 +319,8 @@ PointOnPath point_at(std::span<const PathPoint> path, double t) {
 bool closer_than(Vec2 a, Vec2 b, Radii S) {
     // The filter: d² = |a − b|² and s² = (R_i + R_j)² in doubles are each within 6 ulps of their exact values, and
     // where d² + s² ≥ 2^−900 an underflow loses at most a few 2^−1074; farther apart than 2^−45·(d² + s²), the doubles
-    // decide. Otherwise (close, tiny, or overflowing) the exact comparison does.
+    // decide. Then the bounded double-double stage (touching balls: the differences and squares are exact there
+    // but for inputs far outside the splitting range), then the rationals.
     const Vec2 d = a - b;
     const double d2 = dot(d, d), s = S.rounded(), s2 = s * s, scale = d2 + s2;
     if (std::isfinite(scale) && scale >= 0x1p-900) {
@@ -186,9 +328,11 @@ bool closer_than(Vec2 a, Vec2 b, Radii S) {
         if (d2 < s2 - margin) return true;
         if (d2 > s2 + margin) return false;
     }
-    const Rational dx = Rational(a.x) - Rational(b.x), dy = Rational(a.y) - Rational(b.y);
-    const Rational sum = Rational(S.a) + Rational(S.b);
-    return dx * dx + dy * dy < sum * sum;
+    const Approx2 dx = fine(a.x) - fine(b.x), dy = fine(a.y) - fine(b.y), sum = fine(S.a) + fine(S.b);
+    if (const auto sign = disc::sign(dx * dx + dy * dy - sum * sum)) return *sign < 0;
+    const Rational ex = Rational(a.x) - Rational(b.x), ey = Rational(a.y) - Rational(b.y);
+    const Rational sum_exact = Rational(S.a) + Rational(S.b);
+    return ex * ex + ey * ey < sum_exact * sum_exact;
 }
 
 bool surely_apart(Vec2 x, std::span<const PathPoint> path, double t, Radii S) {

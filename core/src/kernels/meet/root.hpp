@@ -12,19 +12,38 @@
 
 namespace ricochet::meet {
 
-/// A meet time, exactly: t = p + q·√r (r ≥ 0; q = 0 for a meet at the start of an interval), and its double
-/// estimate (within an ulp or two of the exact value; decisions never rest on it alone).
-struct Root {
-    bignum::Rational p, q, r;
-    double estimate = 0.0;
-};
-
 /// Two balls' radii. Their sum S = R_i + R_j is taken exactly wherever a decision rests on it (a sum rounded to
 /// the larger radius would let the balls meet closer than they are wide); `rounded()` serves the filters only.
 struct Radii {
     double a = 0.0, b = 0.0;
     double rounded() const { return a + b; }
 };
+
+/// A piece of a path: from p0 at t0 to p1 at t1 > t0, or a ball at p0 from t0 on (t1 = t0), which moves there with
+/// the velocity its ball ends the frame with.
+struct Piece {
+    double t0 = 0.0, t1 = 0.0;
+    Vec2 p0, p1;
+};
+
+/// A meet time: the double nearest it (docs/scene-log.md, "Balls that meet", 4: t* rounded), and what it is
+/// computed from, the common interval's start c and the two pieces over it, so that its exact value, t = p + q·√r
+/// (r ≥ 0; q = 0 for a meet at c), is made only when a decision needs it (compare, on estimates within 2^−48).
+struct Root {
+    double estimate = 0.0;
+    bool at_start = false;  // a meet at c itself: the balls within S there and approaching
+    double c = 0.0;
+    Piece a, b;
+    Vec2 end_a, end_b;
+    Radii S;
+    struct Exact {
+        bignum::Rational p, q, r;
+    };
+    mutable std::optional<Exact> exact;  // filled by exact_of
+};
+
+/// The root's exact value (made once, then kept in the root).
+const Root::Exact& exact_of(const Root& root);
 
 /// The first time at or after `from` at which paths a and b (each at least one point, times non-decreasing, the
 /// last at 1) come within S of each other while approaching: on each common interval [a, b] of a piece of one and
