@@ -2,7 +2,8 @@
 // not decide) against rationals alone, written here from the spec (docs/scene-log.md, "Balls that meet", 2 and 4):
 // whether two straight pieces meet, at the start or inside, the meet time rounded to nearest, a path's point rounded
 // to nearest, and |a − b| < R_i + R_j. Fixed seeds; the cases lean on where a bound runs out: touching and
-// grazing pairs, a few ulps off, at magnitudes from 2^−500 to 2^500.
+// grazing pairs, a few ulps off, at magnitudes from 2^−500 to 2^500. And the response's test of approach
+// (response.cpp), staged the same way.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 
 #include "base/bignum.hpp"
 #include "base/round.hpp"
+#include "kernels/meet/response.hpp"
 #include "kernels/meet/root.hpp"
 
 namespace ricochet {
@@ -162,6 +164,26 @@ TEST(MeetRootStages, PointsAndClosenessEqualTheRationalOnes) {
         ++touching_cases;
     }
     EXPECT_GT(touching_cases, 2000);
+}
+
+TEST(MeetRootStages, ApproachIsTheRationalOne) {
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(-4.0, 4.0);
+    int perpendicular = 0;
+    for (int n = 0; n < 20000; ++n) {
+        const double s = scale_of(rng), v = scale_of(rng);
+        const Vec2 pa{u(rng) * s, u(rng) * s}, pb{u(rng) * s, u(rng) * s};
+        Vec2 va{u(rng) * v, u(rng) * v}, vb{u(rng) * v, u(rng) * v};
+        if (rng() % 3 == 0) {
+            // w = va − vb perpendicular to n = pa − pb where the products are exact, then nudged.
+            va = {vb.x + (pb.y - pa.y), vb.y + (pa.x - pb.x)};
+            va = {nudge(rng, va.x), nudge(rng, va.y)};
+        }
+        const Rational w = (q(va.x) - q(vb.x)) * (q(pa.x) - q(pb.x)) + (q(va.y) - q(vb.y)) * (q(pa.y) - q(pb.y));
+        perpendicular += bignum::sign(w) == 0;
+        ASSERT_EQ(meet::approaching({pa, va, 1.0}, {pb, vb, 1.0}), bignum::sign(w) < 0) << "case " << n;
+    }
+    EXPECT_GT(perpendicular, 100);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -29,7 +30,8 @@ enum class FrameStatus : std::uint8_t {
     out_of_range,  ///< a position or velocity left the accepted range: the ball did not move
 };
 
-struct StepTrace;  // step_trace.hpp
+struct StepTrace;        // step_trace.hpp
+struct MeetFrameScratch;  // kernels/meet/frame.cpp
 
 /// Scratch space reused across calls to step_ball (keeps the hot loop free of allocation).
 struct StepScratch {
@@ -46,6 +48,9 @@ struct StepScratch {
     /// The frame time the step starts at: 0 for a whole frame; a ball stepped on after a meet at t starts at t, its
     /// first leg q → q + (1 − t)·v (the disc frame reads it; meet.hpp). Hit times are frame times either way.
     double start = 0.0;
+    /// What the frame's meets keep between frames (meet.hpp's step_meets: its per-ball arrays and grid, reused so that
+    /// a frame of a scene whose size was seen before allocates next to nothing); made on first use.
+    std::shared_ptr<MeetFrameScratch> meets;
 };
 
 /// scratch.plan, made afresh first if it does not describe these walls.

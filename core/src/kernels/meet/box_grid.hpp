@@ -27,14 +27,20 @@ inline bool boxes_overlap(const Box& a, const Box& b) {
 /// after meets, few) in a list per cell.
 class BoxGrid {
 public:
-    /// A grid over boxes, cells as large as the median box's larger side, at most about 4 cells per ball, with
-    /// every ball i entered with boxes[i].
-    explicit BoxGrid(const std::vector<Box>& boxes) {
+    /// The grid made afresh over boxes (its arrays reused), cells as large as the median box's larger side, at most
+    /// about one cell per ball, with every ball i entered with boxes[i].
+    void build(const std::vector<Box>& boxes) {
+        everyone_.clear();
+        later_.clear();
+        start_.clear();
+        entries_.clear();
+        head_.clear();
+        nx_ = ny_ = 0;
         const std::size_t n = boxes.size();
         if (n == 0) return;
         Box all = boxes[0];
-        std::vector<double> sides;
-        sides.reserve(n);
+        std::vector<double>& sides = sides_;
+        sides.clear();
         for (const Box& b : boxes) {
             all.lo = {std::min(all.lo.x, b.lo.x), std::min(all.lo.y, b.lo.y)};
             all.hi = {std::max(all.hi.x, b.hi.x), std::max(all.hi.y, b.hi.y)};
@@ -43,8 +49,9 @@ public:
         std::nth_element(sides.begin(), sides.begin() + static_cast<std::ptrdiff_t>(n / 2), sides.end());
         const double w = all.hi.x - all.lo.x, h = all.hi.y - all.lo.y;
         double cell = sides[n / 2];
-        // At most about 4n cells: a median far below the extent (most balls at rest) would make too many.
-        const double floor_cell = std::sqrt(std::max(w * h, 0.0) / (4.0 * static_cast<double>(n)));
+        // At most about n cells: a median far below the extent (most balls at rest) would make too many, and every
+        // cell is cleared each frame.
+        const double floor_cell = std::sqrt(std::max(w * h, 0.0) / static_cast<double>(n));
         cell = std::max(cell, floor_cell);
         if (!(cell > 0.0) || !std::isfinite(cell) || !std::isfinite(w) || !std::isfinite(h)) {
             // One cell: everyone.
@@ -60,16 +67,16 @@ public:
         for_cells(boxes, true, [&](std::uint32_t, std::size_t c) { ++start_[c + 1]; });
         for (std::size_t c = 0; c + 1 < start_.size(); ++c) start_[c + 1] += start_[c];
         entries_.resize(start_.back());
-        std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
-        for_cells(boxes, false, [&](std::uint32_t i, std::size_t c) { entries_[next[c]++] = i; });
-        head_.assign(nx_ * ny_, k_none);
+        next_.assign(start_.begin(), start_.end() - 1);
+        for_cells(boxes, false, [&](std::uint32_t i, std::size_t c) { entries_[next_[c]++] = i; });
     }
 
     /// Enters ball i again with box b (its entries under its old box stay: stale, the caller tests boxes).
     void insert(std::uint32_t i, const Box& b) {
-        if (head_.empty()) return everyone_.push_back(i);
+        if (nx_ == 0) return everyone_.push_back(i);
         const Range r = range(b);
         if (cells(r) > k_big_cells) return everyone_.push_back(i);
+        if (head_.empty()) head_.assign(nx_ * ny_, k_none);  // the first entry made after the build
         for (std::size_t y = r.y0; y <= r.y1; ++y)
             for (std::size_t x = r.x0; x <= r.x1; ++x) {
                 std::uint32_t& head = head_[y * nx_ + x];
@@ -83,7 +90,7 @@ public:
     template <class F>
     void query(const Box& b, F&& f) const {
         for (std::uint32_t j : everyone_) f(j);
-        if (head_.empty()) return;
+        if (nx_ == 0) return;
         const Range r = range(b);
         if (cells(r) > k_big_cells) {
             for (std::uint32_t j : entries_) f(j);
@@ -93,7 +100,8 @@ public:
         for (std::size_t y = r.y0; y <= r.y1; ++y)
             for (std::size_t x = r.x0; x <= r.x1; ++x) {
                 const std::size_t c = y * nx_ + x;
-                for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) f(entries_[k]);
+                for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) f(entries_[k]);
+                if (head_.empty()) continue;
                 for (std::uint32_t e = head_[c]; e != k_none; e = later_[e].next) f(later_[e].ball);
             }
     }
@@ -141,11 +149,13 @@ private:
     Vec2 origin_{};
     double cell_ = 1.0;
     std::size_t nx_ = 0, ny_ = 0;
-    std::vector<std::size_t> start_;       // cell c's entries are entries_[start_[c] .. start_[c + 1])
+    std::vector<std::uint32_t> start_;     // cell c's entries are entries_[start_[c] .. start_[c + 1])
     std::vector<std::uint32_t> entries_;   // the frame's boxes, by cell
-    std::vector<std::uint32_t> head_;      // cell c's latest later entry, or k_none
+    std::vector<std::uint32_t> head_;      // cell c's latest later entry, or k_none (empty: none made yet)
     std::vector<Later> later_;             // the boxes entered since
     std::vector<std::uint32_t> everyone_;  // balls whose boxes reach too many cells (or every ball: no grid)
+    std::vector<double> sides_;            // build's scratch: the boxes' larger sides
+    std::vector<std::uint32_t> next_;      // build's scratch: each cell's next free entry
 };
 
 }  // namespace ricochet::meet

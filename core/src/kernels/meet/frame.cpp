@@ -1,6 +1,7 @@
 // One frame's meets (meet.hpp's step_meets; docs/scene-log.md, "Balls that meet"): the swept rule of robust and
 // exact, every decision exact (root.hpp), and the lecture's static test at the frame's end.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -12,10 +13,40 @@
 #include "ricochet/meet.hpp"
 
 namespace ricochet {
+
+/// A meet found between two balls at some version of their paths.
+struct MeetCandidate {
+    std::uint32_t a = 0, b = 0;
+    std::uint32_t version_a = 0, version_b = 0;
+    meet::Root root;
+};
+
+/// The swept rule's arrays, kept between frames (StepScratch::meets).
+struct MeetFrameScratch {
+    std::vector<double> seg_t;
+    std::vector<Vec2> seg_vel;
+    std::vector<std::uint32_t> version;
+    std::vector<std::vector<PathPoint>> committed;
+    std::vector<std::vector<HitEvent>> done;
+    std::vector<meet::Box> box;
+    meet::BoxGrid grid;
+    std::vector<std::uint32_t> seen;
+    std::vector<MeetCandidate> heap;
+    std::vector<PathPoint> cut_a, cut_b;
+};
+
 namespace {
+
+using Candidate = MeetCandidate;
 
 using meet::Box;
 using meet::boxes_overlap;
+
+/// True if a and b are the same doubles, bit for bit (−0 is not +0).
+bool same_bits(Vec2 a, Vec2 b) {
+    return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+           std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y);
+}
 
 /// A box around a ball's path, widened by its radius.
 Box path_box(std::span<const PathPoint> path, double R) {
@@ -40,12 +71,6 @@ void build_path(std::vector<PathPoint>& path, double t0, Vec2 p0, std::span<cons
     path.push_back({1.0, end});
 }
 
-/// A meet found between two balls at some version of their paths.
-struct Candidate {
-    std::uint32_t a = 0, b = 0;
-    std::uint32_t version_a = 0, version_b = 0;
-    meet::Root root;
-};
 
 /// The heap's order: a comes out after b (later time; on an exact tie the higher pair).
 bool later(const Candidate& x, const Candidate& y) {
@@ -58,9 +83,23 @@ bool later(const Candidate& x, const Candidate& y) {
 class SweptFrame {
 public:
     SweptFrame(KernelId k, const Obstacles& obstacles, std::span<const double> masses, std::span<BallFrame> balls,
-               std::vector<MeetRecord>& meets, StepScratch& scratch)
+               std::vector<MeetRecord>& meets, StepScratch& scratch, MeetFrameScratch& kept)
         : k_(k), obstacles_(obstacles), masses_(masses), balls_(balls), meets_(meets), scratch_(scratch),
-          n_(balls.size()), seg_t_(n_, 0.0), seg_vel_(n_), version_(n_, 0), committed_(n_), done_(n_), box_(n_) {}
+          n_(balls.size()), seg_t_(kept.seg_t), seg_vel_(kept.seg_vel), version_(kept.version),
+          committed_(kept.committed), done_(kept.done), box_(kept.box), grid_(kept.grid), seen_(kept.seen),
+          heap_(kept.heap), cut_a_(kept.cut_a), cut_b_(kept.cut_b) {
+        seg_t_.assign(n_, 0.0);
+        seg_vel_.resize(n_);
+        version_.assign(n_, 0);
+        committed_.resize(n_);
+        done_.resize(n_);
+        for (std::size_t i = 0; i < n_; ++i) {
+            committed_[i].clear();
+            done_[i].clear();
+        }
+        box_.resize(n_);
+        heap_.clear();
+    }
 
     void run() {
         for (std::size_t i = 0; i < n_; ++i) {
@@ -70,7 +109,7 @@ public:
             box_[i] = path_box(f.path, f.before.r);
         }
         // Every pair whose boxes overlap, found through a grid of the boxes.
-        grid_.emplace(box_);
+        grid_.build(box_);
         seen_.assign(n_, 0);
         for (std::uint32_t i = 0; i < n_; ++i) neighbours(i, [&](std::uint32_t j) {
                 if (j > i) consider(i, j, false);
@@ -100,7 +139,7 @@ private:
     void neighbours(std::uint32_t i, F&& f) {
         ++stamp_;
         seen_[i] = stamp_;
-        grid_->query(box_[i], [&](std::uint32_t j) {
+        grid_.query(box_[i], [&](std::uint32_t j) {
             if (seen_[j] == stamp_) return;
             seen_[j] = stamp_;
             f(j);
@@ -132,13 +171,25 @@ private:
         std::push_heap(heap_.begin(), heap_.end(), later);
     }
 
+    /// The last placement of a ball: its path's rounded point and where that point was placed.
+    struct Placed {
+        bool valid = false;
+        meet::PointOnPath raw, at;
+    };
+
     /// Ball i's centre at frame time t on its current path, placed clear of the walls (walked back toward the
-    /// printed point the piece starts from), and the index of that point.
-    meet::PointOnPath place(std::size_t i, double t) {
+    /// printed point the piece starts from), and the index of that point. The walk back depends on the rounded point
+    /// alone: where it is the last one's, bit for bit (an earlier t often rounds to the same centre), the last
+    /// placement is the answer.
+    meet::PointOnPath place(std::size_t i, double t, Placed& last) {
         const std::vector<PathPoint>& path = balls_[i].path;
         meet::PointOnPath at = meet::point_at(path, t);
+        if (last.valid && at.from == last.raw.from && same_bits(at.x, last.raw.x)) return last.at;
+        last.valid = true;
+        last.raw = at;
         const Vec2 q = path[at.from].p;
         if (at.x != q) at.x = disc::walk_back(q, at.x, radius(i), obstacles_, scratch_);
+        last.at = at;
         return at;
     }
 
@@ -244,12 +295,13 @@ private:
         const double lo = std::max(seg_t_[a], seg_t_[b]);
         double t = std::clamp(c.root.estimate, lo, 1.0);
         // The printed centres, no closer than S (exactly): t taken earlier, 1, 2, 4, … ulps, then lo.
-        meet::PointOnPath pa = place(a, t), pb = place(b, t);
+        Placed last_a, last_b;
+        meet::PointOnPath pa = place(a, t, last_a), pb = place(b, t, last_b);
         for (double step = std::max(std::fabs(t) * 0x1p-52, 0x1p-1074); t > lo && too_close(a, b, S, lo, t, pa, pb);
              step *= 2.0) {
             t = t - step > lo ? t - step : lo;
-            pa = place(a, t);
-            pb = place(b, t);
+            pa = place(a, t, last_a);
+            pb = place(b, t, last_b);
         }
         Ball ba{pa.x, velocity_on(a, pa.from), radius(a)}, bb{pb.x, velocity_on(b, pb.from), radius(b)};
         last_t_ = t;
@@ -264,8 +316,8 @@ private:
         done_[b].push_back({a, t, pb.x, false, true, bb.vel});
         restart(a, t, pa.x, ba.vel);
         restart(b, t, pb.x, bb.vel);
-        grid_->insert(a, box_[a]);
-        grid_->insert(b, box_[b]);
+        grid_.insert(a, box_[a]);
+        grid_.insert(b, box_[b]);
         consider(a, b, true);
         neighbours(a, [&](std::uint32_t k) {
             if (k != b) consider(std::min(a, k), std::max(a, k), false);
@@ -281,7 +333,8 @@ private:
     void safe_stop(double t) {
         for (std::size_t i = 0; i < n_; ++i) {
             const double at = std::max(t, seg_t_[i]);
-            const meet::PointOnPath p = place(i, at);
+            Placed none;
+            const meet::PointOnPath p = place(i, at, none);
             const Vec2 v = velocity_on(i, p.from);
             cut(i, p.from);
             BallFrame& f = balls_[i];
@@ -298,9 +351,9 @@ private:
         BallFrame& f = balls_[i];
         if (done_[i].empty() && committed_[i].empty()) return;
         done_[i].insert(done_[i].end(), f.events.begin(), f.events.end());
-        f.events = std::move(done_[i]);
+        f.events.swap(done_[i]);  // (the old lists stay behind, their storage for the next frame)
         committed_[i].insert(committed_[i].end(), f.path.begin(), f.path.end());
-        f.path = std::move(committed_[i]);
+        f.path.swap(committed_[i]);
     }
 
     KernelId k_;
@@ -310,17 +363,18 @@ private:
     std::vector<MeetRecord>& meets_;
     StepScratch& scratch_;
     std::size_t n_;
-    std::vector<double> seg_t_;                    // the frame time each ball's current path starts at
-    std::vector<Vec2> seg_vel_;                    // the velocity it starts with
-    std::vector<std::uint32_t> version_;           // bumped when its path changes
-    std::vector<std::vector<PathPoint>> committed_;  // its path's points before the current path
-    std::vector<std::vector<HitEvent>> done_;      // its contacts before the current path, meets included
-    std::vector<Box> box_;
-    std::optional<meet::BoxGrid> grid_;
-    std::vector<std::uint32_t> seen_;  // the stamp of the last neighbours() call that listed the ball
+    // Kept between frames (MeetFrameScratch), made afresh for this one:
+    std::vector<double>& seg_t_;                     // the frame time each ball's current path starts at
+    std::vector<Vec2>& seg_vel_;                     // the velocity it starts with
+    std::vector<std::uint32_t>& version_;            // bumped when its path changes
+    std::vector<std::vector<PathPoint>>& committed_;  // its path's points before the current path
+    std::vector<std::vector<HitEvent>>& done_;       // its contacts before the current path, meets included
+    std::vector<Box>& box_;
+    meet::BoxGrid& grid_;
+    std::vector<std::uint32_t>& seen_;  // the stamp of the last neighbours() call that listed the ball
     std::uint32_t stamp_ = 0;
-    std::vector<Candidate> heap_;
-    std::vector<PathPoint> cut_a_, cut_b_;  // the paths to a meet's centres (too_close)
+    std::vector<Candidate>& heap_;
+    std::vector<PathPoint>&cut_a_, &cut_b_;  // the paths to a meet's centres (too_close)
     double last_t_ = 0.0;                   // the time of the last meet taken
 };
 
@@ -364,7 +418,10 @@ void step_meets(KernelId k, const Obstacles& obstacles, std::span<const double> 
     switch (kernel_ops(k).meet_rule) {
         case MeetRule::none: return;
         case MeetRule::end_of_frame: end_of_frame(k, masses, balls, meets); return;
-        case MeetRule::swept: SweptFrame(k, obstacles, masses, balls, meets, scratch).run(); return;
+        case MeetRule::swept:
+            if (!scratch.meets) scratch.meets = std::make_shared<MeetFrameScratch>();
+            SweptFrame(k, obstacles, masses, balls, meets, scratch, *scratch.meets).run();
+            return;
     }
 }
 

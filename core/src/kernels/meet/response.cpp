@@ -5,6 +5,7 @@
 
 #include "base/bignum.hpp"
 #include "base/round.hpp"
+#include "kernels/disc/arith.hpp"
 
 namespace ricochet::meet {
 namespace {
@@ -16,6 +17,13 @@ double nearest(const Rational& q) { return bignum::round_quotient(bignum::numera
 }  // namespace
 
 bool approaching(const Ball& a, const Ball& b) {
+    // In bounded double-double first (the differences and products are exact there for coordinates within the
+    // splitting range), then with rationals.
+    using disc::Approx2;
+    const auto fine = [](double x) { return Approx2{x, 0.0, 0.0}; };
+    const Approx2 fx = fine(a.pos.x) - fine(b.pos.x), fy = fine(a.pos.y) - fine(b.pos.y);
+    const Approx2 gx = fine(a.vel.x) - fine(b.vel.x), gy = fine(a.vel.y) - fine(b.vel.y);
+    if (const auto s = disc::sign(gx * fx + gy * fy)) return *s < 0;
     const Rational nx = Rational(a.pos.x) - Rational(b.pos.x), ny = Rational(a.pos.y) - Rational(b.pos.y);
     const Rational wx = Rational(a.vel.x) - Rational(b.vel.x), wy = Rational(a.vel.y) - Rational(b.vel.y);
     return bignum::sign(Rational(wx * nx + wy * ny)) < 0;

@@ -305,9 +305,12 @@ PointOnPath point_at(std::span<const PathPoint> path, double t) {
     const Piece s{path[k].t, path[k + 1].t, path[k].p, path[k + 1].p};
     // X = P0 + (t − t0)·(P1 − P0)/(t1 − t0), each coordinate rounded to nearest: bounded first, then exactly.
     const Approx2 f = (fine(t) - fine(s.t0)) / (fine(s.t1) - fine(s.t0));
+    // (A zero is +0, as the rationals round it: + 0.0 turns −0 into +0 and leaves every other value.)
     const auto coordinate = [&](double x0, double x1) -> std::optional<double> {
-        if (x1 == x0) return x0;
-        return disc::nearest_double(fine(x0) + f * (fine(x1) - fine(x0)));
+        if (x1 == x0) return x0 + 0.0;
+        const std::optional<double> x = disc::nearest_double(fine(x0) + f * (fine(x1) - fine(x0)));
+        if (!x) return std::nullopt;
+        return *x + 0.0;
     };
     const std::optional<double> x = coordinate(s.p0.x, s.p1.x), y = coordinate(s.p0.y, s.p1.y);
     if (x && y) return {{*x, *y}, k};
