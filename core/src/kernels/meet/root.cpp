@@ -168,11 +168,11 @@ Relative<Rational> exact_relative(const Root& r) {
     return {dx * dx + dy * dy - sum * sum, dx * wx + dy * wy, wx * wx + wy * wy};
 }
 
-/// What an interval holds: no meet, a meet at its start, a meet inside it (its time's double, where known), or
-/// (the bounded stage only) not decided.
+/// What an interval holds: no meet, a meet at its start, a meet inside it, or (the bounded stage only) a meet inside
+/// it whose time the bound could not round.
 enum class Holds { nothing, meet_at_start, meet, unsure };
 
-/// The interval's verdict on D(u) = D_c + W·u, u in [0, L]: within S at c (qa ≤ 0), a meet there if they approach
+/// The interval's verdict on D(u) = D_c + W·u, u in [0, L] (nothing where the bound decides none of it): within S at c (qa ≤ 0), a meet there if they approach
 /// (B < 0); clear at c, an entry needs approach (B < 0, A > 0) and two distinct real roots (disc = B² − A·qa > 0, a
 /// tangent is no meet), and the smaller root u = (−B − √disc)/A lies in [0, L] iff −B − A·L ≤ √disc. Its time is
 /// c + u in the form without cancellation, u·(−B + √disc) = B² − disc = A·qa: u = qa/(−B + √disc).
