@@ -2,6 +2,9 @@
 # Builds every ricochet fuzz target with the engine's compilers and flags ($CC $CXX $CFLAGS $CXXFLAGS
 # $LIB_FUZZING_ENGINE) into $OUT, each with <target>_seed_corpus.zip and <target>.dict.
 # ClusterFuzzLite/OSS-Fuzz run it in their builder image; fuzz/clusterfuzzlite_test.sh runs it locally.
+# The shebang's -eu holds only when the file is run as a program; `bash build.sh` (fuzz/clusterfuzzlite_test.sh, the
+# OSS-Fuzz helper) needs it said here, or a failed build goes on to copy what is not there.
+set -eu
 SRC_DIR="${RICOCHET_SRC:-$SRC/ricochet}"
 BUILD="${WORK:-/tmp}/ricochet-fuzz-build"
 TARGETS="parser static sweep scene disc meet"

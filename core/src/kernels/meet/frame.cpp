@@ -1,7 +1,6 @@
 // One frame's meets (meet.hpp's step_meets; docs/scene-log.md, "Balls that meet"): the swept rule of robust and
 // exact, every decision exact (root.hpp), and the lecture's static test at the frame's end.
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -10,6 +9,7 @@
 #include "kernels/disc/frame.hpp"
 #include "kernels/meet/box_grid.hpp"
 #include "kernels/meet/root.hpp"
+#include "ricochet/bits.hpp"
 #include "ricochet/meet.hpp"
 
 namespace ricochet {
@@ -41,12 +41,6 @@ using Candidate = MeetCandidate;
 
 using meet::Box;
 using meet::boxes_overlap;
-
-/// True if a and b are the same doubles, bit for bit (−0 is not +0).
-bool same_bits(Vec2 a, Vec2 b) {
-    return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
-           std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y);
-}
 
 /// A box around a ball's path, widened by its radius.
 Box path_box(std::span<const PathPoint> path, double R) {

@@ -90,7 +90,8 @@ SafePoint make_safe(const SafePiece& piece) {
     // fractions g of the piece (one ulp of M is about g = 2^-52·M / |d|∞ of it), so a point rounded a few
     // ulps across a line comes back within a few ulps (the `accuracy` check holds robust's hit points to
     // 256·ε·M), and the doubling steps up to a quarter of the piece cover a point rounded across several
-    // lines at once; then half the piece, then q itself, where the ball already is. Fixed fractions of the
+    // lines at once (after 256 ulps, the first fractions once more, measured from r: below); then half the
+    // piece, then q itself, where the ball already is. Fixed fractions of the
     // piece (2^-50, 2^-46, …, 2^-10, as before) moved a short piece far from the origin by 2^-20 of its
     // length, hundreds of ulps of M, before the first that was not a no-op.
     const Vec2 d = r - q;
@@ -98,7 +99,18 @@ SafePoint make_safe(const SafePiece& piece) {
     const double d_inf = std::max(std::fabs(d.x), std::fabs(d.y));
     // An ulp of M that underflows (M subnormal) starts the walk at 2^-60 of the piece; g doubles, so the
     // loop runs at most 60 times.
-    for (double g = std::max(m * 0x1p-52 / d_inf, 0x1p-60); g < 0.5; g *= 2.0) {
+    const double g0 = std::max(m * 0x1p-52 / d_inf, 0x1p-60);
+    for (double g = g0; g < 0.5; g *= 2.0) {
+        if (g == g0 * 0x1p9) {
+            // 256 ulps of M and no point allowed: q + (1 − g)·d carries an error of an ulp of M wherever q is far
+            // from r, so next to a wall nearly parallel to the piece each point may round across it. The same
+            // fractions again from r's end, r − g·d, each within an ulp of r's own size of the piece's line
+            // (found by the sweep target: a leg from 5e20 to the origin beside a wall from (1, 1) to 4e18).
+            for (double h = g0; h < g; h *= 2.0) {
+                const Vec2 c = r - h * d;
+                if (c != r && ok(c)) return out;
+            }
+        }
         const Vec2 c = q + (1.0 - g) * d;
         if (c != r && ok(c)) return out;
     }
