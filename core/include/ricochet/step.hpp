@@ -49,7 +49,8 @@ struct StepScratch {
     /// first leg q → q + (1 − t)·v (the disc frame reads it; meet.hpp). Hit times are frame times either way.
     double start = 0.0;
     /// What the frame's meets keep between frames (meet.hpp's step_meets: its per-ball arrays and grid, reused so that
-    /// a frame of a scene whose size was seen before allocates next to nothing); made on first use.
+    /// a frame of a scene whose size was seen before allocates next to nothing); made on first use. Like the rest of
+    /// the scratch it serves one thread: a copy shares it.
     std::shared_ptr<MeetFrameScratch> meets;
 };
 

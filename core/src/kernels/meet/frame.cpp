@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 #include "kernels/disc/frame.hpp"
@@ -64,7 +65,6 @@ void build_path(std::vector<PathPoint>& path, double t0, Vec2 p0, std::span<cons
     for (const HitEvent& h : hits) path.push_back({std::clamp(h.t, path.back().t, 1.0), h.point});
     path.push_back({1.0, end});
 }
-
 
 /// The heap's order: a comes out after b (later time; on an exact tie the higher pair).
 bool later(const Candidate& x, const Candidate& y) {
@@ -203,20 +203,29 @@ private:
         // An entry before t on the pieces that end at the centres (one at t itself is the meet).
         const std::optional<meet::Root> r = meet::first_meet(cut_a_, cut_b_, S, lo, {}, {}, t);
         if (r && meet::compare(*r, t) < 0) return true;
-        // A third ball there at that time, rounded where its own path puts it (three balls meeting at one time): the
-        // centres must not be closer to it than their radii's sum either, where they were not at lo.
+        // A third ball k (three balls meeting at one time, or a graze the rounded centre makes): the centre must not
+        // be closer to k's point at t, rounded where k's path puts it, than their radii's sum, nor the piece to the
+        // centre enter k's reach after lo and before t — where the two were not closer than that at lo.
         bool crowded = false;
-        for (const auto& [ball, centre] : {std::pair{a, pa.x}, std::pair{b, pb.x}}) {
+        for (const auto& [ball, centre, cut] : {std::tuple{a, pa.x, &cut_a_}, std::tuple{b, pb.x, &cut_b_}}) {
             const std::uint32_t i = ball;
             const Vec2 x = centre;
+            const std::vector<PathPoint>& piece = *cut;
             neighbours(i, [&](std::uint32_t k) {
                 const meet::Radii Sk{radius(i), radius(k)};
                 const std::vector<PathPoint>& path = balls_[k].path;
                 if (crowded || k == a || k == b || !(Sk.rounded() > 0.0) || path.front().t > t) return;
-                if (meet::surely_apart(x, path, t, Sk) || !meet::closer_than(x, meet::point_at(path, t).x, Sk)) return;
-                const Vec2 i_lo = meet::point_at(balls_[i].path, lo).x;
-                const Vec2 k_lo = path.front().t <= lo ? meet::point_at(path, lo).x : path.front().p;
-                crowded = !meet::closer_than(i_lo, k_lo, Sk);
+                const auto apart_at_lo = [&] {
+                    const Vec2 i_lo = meet::point_at(balls_[i].path, lo).x;
+                    const Vec2 k_lo = path.front().t <= lo ? meet::point_at(path, lo).x : path.front().p;
+                    return !meet::closer_than(i_lo, k_lo, Sk);
+                };
+                if (!meet::surely_apart(x, path, t, Sk) && meet::closer_than(x, meet::point_at(path, t).x, Sk)) {
+                    crowded = apart_at_lo();
+                    return;
+                }
+                const std::optional<meet::Root> entry = meet::first_meet(piece, path, Sk, lo, {}, {}, t);
+                if (entry && meet::compare(*entry, lo) > 0 && meet::compare(*entry, t) < 0) crowded = apart_at_lo();
             });
         }
         return crowded;
