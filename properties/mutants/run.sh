@@ -263,9 +263,8 @@ sync_tree
 echo
 echo "| mutant | caught by | seconds to bug | seconds | log | corpus logs failing | promise_test | note |"
 echo "| --- | --- | ---: | ---: | --- | ---: | --- | --- |"
-sort "$results" | while IFS=$'\t' read -r name caught secs log corpus unit note to_bug; do
-  echo "| $name | $caught | ${to_bug:--} | $secs | $log | $corpus | $unit | $note |"
-done
+# awk keeps empty fields (read with IFS=tab would merge two tabs, an empty note, and shift the columns after it).
+sort "$results" | awk -F'\t' '{ printf "| %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, ($8 == "" ? "-" : $8), $3, $4, $5, $6, $7 }'
 total=$(wc -l < "$results")
 killed=$(awk -F'\t' '$2 != "-"' "$results" | wc -l)
 echo
