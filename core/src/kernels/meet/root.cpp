@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "base/round.hpp"
 #include "kernels/disc/arith.hpp"
@@ -105,10 +106,11 @@ bool clearly_apart(const Piece& a, const Piece& b, double S, double c, double c2
     return dist > S + 0x1p-40 * m;
 }
 
-/// One coordinate of a piece's velocity, (x1 − x0)/(t1 − t0), bounded (exactly 0 where the coordinate stays).
-Approx2 fine_velocity(double x0, double x1, const Approx2& dt) {
-    if (x1 == x0) return fine(0.0);
-    return (fine(x1) - fine(x0)) / dt;
+/// An input double in type N (Approx2: exact, no bound; Rational).
+template <class N>
+N number(double x) {
+    if constexpr (std::is_same_v<N, Approx2>) return fine(x);
+    else return N(x);
 }
 
 /// The relative motion of two pieces over an interval from c: D(u) = D_c + W·u, and the quadratic's coefficients
@@ -118,54 +120,37 @@ struct Relative {
     N qa, B, A;
 };
 
-/// The piece's point at c and velocity, bounded; a piece of no duration moves with `end`.
-void fine_motion(const Piece& s, double c, Vec2 end, Approx2& px, Approx2& py, Approx2& vx, Approx2& vy) {
+/// The piece's point at c and velocity, in type N; a piece of no duration moves with `end`. (A coordinate that stays
+/// has velocity 0 exactly: Approx2's quotient would carry a bound.)
+template <class N>
+void motion(const Piece& s, double c, Vec2 end, N& px, N& py, N& vx, N& vy) {
     if (s.t1 == s.t0) {
-        px = fine(s.p0.x);
-        py = fine(s.p0.y);
-        vx = fine(end.x);
-        vy = fine(end.y);
+        px = number<N>(s.p0.x);
+        py = number<N>(s.p0.y);
+        vx = number<N>(end.x);
+        vy = number<N>(end.y);
         return;
     }
-    const Approx2 dt = fine(s.t1) - fine(s.t0), from = fine(c) - fine(s.t0);
-    vx = fine_velocity(s.p0.x, s.p1.x, dt);
-    vy = fine_velocity(s.p0.y, s.p1.y, dt);
-    px = fine(s.p0.x) + from * vx;
-    py = fine(s.p0.y) + from * vy;
+    const N dt = number<N>(s.t1) - number<N>(s.t0), from = number<N>(c) - number<N>(s.t0);
+    const auto velocity = [&](double x0, double x1) -> N {
+        if (x1 == x0) return number<N>(0.0);
+        return N((number<N>(x1) - number<N>(x0)) / dt);
+    };
+    vx = velocity(s.p0.x, s.p1.x);
+    vy = velocity(s.p0.y, s.p1.y);
+    px = number<N>(s.p0.x) + from * vx;
+    py = number<N>(s.p0.y) + from * vy;
 }
 
-/// The piece's velocity and its point at c, exactly; a piece of no duration moves with `end`.
-void exact_motion(const Piece& s, double c, Rational& px, Rational& py, Rational& vx, Rational& vy, Vec2 end = {}) {
-    if (s.t1 == s.t0) {
-        px = Rational(s.p0.x);
-        py = Rational(s.p0.y);
-        vx = Rational(end.x);
-        vy = Rational(end.y);
-        return;
-    }
-    const Rational dt = Rational(s.t1) - Rational(s.t0);
-    vx = (Rational(s.p1.x) - Rational(s.p0.x)) / dt;
-    vy = (Rational(s.p1.y) - Rational(s.p0.y)) / dt;
-    const Rational from = Rational(c) - Rational(s.t0);
-    px = Rational(s.p0.x) + from * vx;
-    py = Rational(s.p0.y) + from * vy;
-}
-
-Relative<Approx2> fine_relative(const Root& r) {
-    Approx2 ax, ay, avx, avy, bx, by, bvx, bvy;
-    fine_motion(r.a, r.c, r.end_a, ax, ay, avx, avy);
-    fine_motion(r.b, r.c, r.end_b, bx, by, bvx, bvy);
-    const Approx2 dx = ax - bx, dy = ay - by, wx = avx - bvx, wy = avy - bvy, sum = fine(r.S.a) + fine(r.S.b);
-    return {dx * dx + dy * dy - sum * sum, dx * wx + dy * wy, wx * wx + wy * wy};
-}
-
-Relative<Rational> exact_relative(const Root& r) {
-    Rational ax, ay, avx, avy, bx, by, bvx, bvy;
-    exact_motion(r.a, r.c, ax, ay, avx, avy, r.end_a);
-    exact_motion(r.b, r.c, bx, by, bvx, bvy, r.end_b);
-    const Rational dx = ax - bx, dy = ay - by, wx = avx - bvx, wy = avy - bvy;
-    const Rational sum = Rational(r.S.a) + Rational(r.S.b);
-    return {dx * dx + dy * dy - sum * sum, dx * wx + dy * wy, wx * wx + wy * wy};
+/// The root's two pieces relative to each other from its c, in type N.
+template <class N>
+Relative<N> relative(const Root& r) {
+    N ax, ay, avx, avy, bx, by, bvx, bvy;
+    motion<N>(r.a, r.c, r.end_a, ax, ay, avx, avy);
+    motion<N>(r.b, r.c, r.end_b, bx, by, bvx, bvy);
+    const N dx = ax - bx, dy = ay - by, wx = avx - bvx, wy = avy - bvy;
+    const N sum = number<N>(r.S.a) + number<N>(r.S.b);
+    return {N(dx * dx + dy * dy - sum * sum), N(dx * wx + dy * wy), N(wx * wx + wy * wy)};
 }
 
 /// What an interval holds: no meet, a meet at its start, a meet inside it, or (the bounded stage only) a meet inside
@@ -231,7 +216,7 @@ double exact_estimate(const Relative<Rational>& m, double c, const Root::Exact& 
 }  // namespace
 
 const Root::Exact& exact_of(const Root& root) {
-    if (!root.exact) root.exact = exact_time(exact_relative(root), root.c, root.at_start);
+    if (!root.exact) root.exact = exact_time(relative<Rational>(root), root.c, root.at_start);
     return *root.exact;
 }
 
@@ -264,10 +249,10 @@ std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const Pat
         root.S = S;
         if (clearly_apart(root.a, root.b, S.rounded(), c, c2)) continue;
         double estimate = c;
-        std::optional<Holds> holds = fine_verdict(fine_relative(root), c, c2, estimate);
+        std::optional<Holds> holds = fine_verdict(relative<Approx2>(root), c, c2, estimate);
         if (!holds || *holds == Holds::unsure) {
             // The rationals decide what the bounded stage did not (or round the time it could not).
-            const Relative<Rational> m = exact_relative(root);
+            const Relative<Rational> m = relative<Rational>(root);
             holds = exact_verdict(m, c, c2);
             if (*holds != Holds::nothing) {
                 root.exact = exact_time(m, c, *holds == Holds::meet_at_start);
@@ -315,7 +300,7 @@ PointOnPath point_at(std::span<const PathPoint> path, double t) {
     const std::optional<double> x = coordinate(s.p0.x, s.p1.x), y = coordinate(s.p0.y, s.p1.y);
     if (x && y) return {{*x, *y}, k};
     Rational px, py, vx, vy;
-    exact_motion(s, t, px, py, vx, vy);
+    motion<Rational>(s, t, {}, px, py, vx, vy);
     return {{nearest(px), nearest(py)}, k};
 }
 
