@@ -326,11 +326,8 @@ bool closer_than(Vec2 a, Vec2 b, Radii S) {
 bool surely_apart(Vec2 x, std::span<const PathPoint> path, double t, Radii S) {
     // The piece holding t in doubles is within a few ulps of its largest coordinate of the exact point, and point_at
     // rounds the exact point to within one; a margin of 2^−40 of the magnitudes covers both.
-    std::size_t k = 0;
-    while (k + 1 < path.size() && path[k + 1].t <= t) ++k;
-    const Piece s = k + 1 < path.size() ? Piece{path[k].t, path[k + 1].t, path[k].p, path[k + 1].p}
-                                        : Piece{path[k].t, path[k].t, path[k].p, path[k].p};
-    const Vec2 y = path[k].t == t ? path[k].p : approx_at(s, t);
+    const Piece s = piece_at(path, t);
+    const Vec2 y = s.t0 == t ? s.p0 : approx_at(s, t);
     const double m = std::max({std::fabs(x.x), std::fabs(x.y), std::fabs(s.p0.x), std::fabs(s.p0.y),
                                std::fabs(s.p1.x), std::fabs(s.p1.y), S.rounded()});
     const Vec2 d = x - y;
