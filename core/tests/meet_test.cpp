@@ -203,6 +203,35 @@ TEST(Meet, BallsInACorridorBounceBetweenWallsAndEachOther) {
     }
 }
 
+TEST(Meet, TwoBallsTouchingWhosePathsStillCloseInAfterTheMeetStayWhereTheyMet) {
+    // A point ball and a disc of radius 0.02 touching, both moving −9e18 a frame: the exact paths keep them 0.02
+    // apart, but an ulp there is 2048, so both ends round to −9e18 and the printed paths close in. They meet at
+    // t = 0 with no response (equal velocities), and the new paths close in at once again: both stay at their
+    // centres to the frame's end, keeping their velocities, never closer than S (rule 6).
+    const Scene s = meeting({{{0, 0}, {-9e18, 0}, 0}, {{0.02, 0}, {-9e18, 0}, 0.02}}, 3);
+    for (const KernelId k : {KernelId::robust, KernelId::exact}) {
+        World w(s, k);
+        std::vector<Event> events;
+        w.start(events);
+        for (std::int64_t f = 0; f < s.frames; ++f) {
+            ASSERT_FALSE(w.step(events));
+            ASSERT_EQ(w.meets().size(), 1u) << kernel_name(k) << " frame " << f + 1;
+            EXPECT_EQ(w.meets()[0].t, 0.0);
+            EXPECT_FALSE(w.meets()[0].responded);
+            const auto b = w.balls();
+            EXPECT_EQ(b[0].pos, (Vec2{0, 0})) << kernel_name(k);
+            EXPECT_EQ(b[1].pos, (Vec2{0.02, 0})) << kernel_name(k);
+            EXPECT_EQ(b[0].vel, (Vec2{-9e18, 0}));
+            EXPECT_EQ(b[1].vel, (Vec2{-9e18, 0}));
+            EXPECT_FALSE(meet::closer_than(b[0].pos, b[1].pos, {0.0, 0.02}));
+        }
+    }
+    // Two discs the scene places overlapping, moving alike, are no such pair: they are searched past the meet and
+    // move (a scene may start balls overlapping; they stay as they are).
+    const Scene overlapping = meeting({{{0, 0}, {-9e18, 0}, 0.01}, {{0.015, 0}, {-9e18, 0}, 0.01}}, 1);
+    EXPECT_EQ(last_states(overlapping, KernelId::robust)[0].pos, (Vec2{-9e18, 0}));
+}
+
 TEST(Meet, TheSameRunOnEveryThreadCountAndBroadPhase) {
     std::vector<Ball> balls;
     for (int i = 0; i < 40; ++i) balls.push_back({{i * 2.5 - 50, (i % 7) * 3.0}, {(i % 5) - 2.0, (i % 3) - 1.0}, 1});

@@ -106,7 +106,7 @@ public:
         grid_.build(box_);
         seen_.assign(n_, 0);
         for (std::uint32_t i = 0; i < n_; ++i) neighbours(i, [&](std::uint32_t j) {
-                if (j > i) consider(i, j, false);
+                if (j > i) consider(i, j);
             });
         const std::size_t limit = static_cast<std::size_t>(k_max_meets_per_ball) * n_;
         std::size_t taken = 0;
@@ -140,29 +140,34 @@ private:
         });
     }
 
-    /// Searches the pair's next meet on the current paths; `just_met`: they met at the start of these paths, so a
-    /// meet at that very start is the one taken already (its response decided).
-    void consider(std::uint32_t a, std::uint32_t b, bool just_met) {
+    /// The pair's next meet on the current paths, from `from` (default: the later of their starts) on.
+    std::optional<meet::Root> search(std::uint32_t a, std::uint32_t b, double from = -1.0) const {
         const meet::Radii S{radius(a), radius(b)};
-        if (!(S.rounded() > 0.0) || !boxes_overlap(box_[a], box_[b])) return;
-        const double from = std::max(seg_t_[a], seg_t_[b]);
-        const Vec2 end_a = balls_[a].state.vel, end_b = balls_[b].state.vel;
-        std::optional<meet::Root> root = meet::first_meet(balls_[a].path, balls_[b].path, S, from, end_a, end_b);
-        if (root && just_met && root->at_start && meet::compare(*root, from) == 0) {
-            // The start-in-reach rule at the meet itself: search past it, from the next printed time on.
-            root.reset();
-            double next = 1.0;
-            for (const auto* p : {&balls_[a].path, &balls_[b].path})
-                for (const PathPoint& q : *p)
-                    if (q.t > from) {
-                        next = std::min(next, q.t);
-                        break;
-                    }
-            if (next > from) root = meet::first_meet(balls_[a].path, balls_[b].path, S, next, end_a, end_b);
-        }
-        if (!root) return;
-        heap_.push_back({a, b, version_[a], version_[b], std::move(*root)});
+        if (!(S.rounded() > 0.0) || !boxes_overlap(box_[a], box_[b])) return std::nullopt;
+        from = std::max({from, seg_t_[a], seg_t_[b]});
+        return meet::first_meet(balls_[a].path, balls_[b].path, S, from, balls_[a].state.vel, balls_[b].state.vel);
+    }
+
+    /// The next printed time of either ball's current path after t (1 if none).
+    double next_printed(std::uint32_t a, std::uint32_t b, double t) const {
+        double next = 1.0;
+        for (const std::uint32_t i : {a, b})
+            for (const PathPoint& q : balls_[i].path)
+                if (q.t > t) {
+                    next = std::min(next, q.t);
+                    break;
+                }
+        return next;
+    }
+
+    void push(std::uint32_t a, std::uint32_t b, meet::Root root) {
+        heap_.push_back({a, b, version_[a], version_[b], std::move(root)});
         std::push_heap(heap_.begin(), heap_.end(), later);
+    }
+
+    /// Searches the pair's next meet on the current paths and puts it on the heap.
+    void consider(std::uint32_t a, std::uint32_t b) {
+        if (std::optional<meet::Root> root = search(a, b)) push(a, b, std::move(*root));
     }
 
     /// The last placement of a ball: its path's rounded point and where that point was placed.
@@ -271,6 +276,19 @@ private:
         ++version_[i];
     }
 
+    /// Ball i, just stepped on from a meet at frame time t, stays where it starts to the frame's end instead, keeping
+    /// the velocity it left the meet with (docs/scene-log.md, "Balls that meet", 6).
+    void hold(std::size_t i, double t) {
+        BallFrame& f = balls_[i];
+        const Vec2 x = f.path.front().p;
+        f.events.clear();
+        if (f.status != FrameStatus::out_of_range) f.status = FrameStatus::ok;
+        f.state = {x, seg_vel_[i], radius(i)};
+        f.path = {{t, x}, {1.0, x}};
+        box_[i] = path_box(f.path, radius(i));
+        ++version_[i];
+    }
+
     /// True if another meet due now, at c's exact time, shares a ball with c: the heap's next entries at that time
     /// are looked at (stale ones dropped) and put back.
     bool tied(const Candidate& c) {
@@ -323,14 +341,29 @@ private:
         done_[b].push_back({a, t, pb.x, false, true, bb.vel});
         restart(a, t, pa.x, ba.vel);
         restart(b, t, pb.x, bb.vel);
+        // The new paths close in at t itself again (rule 6): two balls the scene placed closer than S are searched
+        // past it, from the next printed time on (the start-in-reach rule at the meet itself, its response decided);
+        // two that touch both stay at their centres to the frame's end (far from the origin their rounded ends can
+        // converge where no velocity a double holds keeps them apart).
+        std::optional<meet::Root> again = search(a, b);
+        if (again && again->at_start && meet::compare(*again, t) == 0) {
+            again.reset();
+            if (meet::closer_than(pa.x, pb.x, S)) {
+                const double next = next_printed(a, b, t);
+                if (next > t) again = search(a, b, next);
+            } else {
+                hold(a, t);
+                hold(b, t);
+            }
+        }
         grid_.insert(a, box_[a]);
         grid_.insert(b, box_[b]);
-        consider(a, b, true);
+        if (again) push(a, b, std::move(*again));
         neighbours(a, [&](std::uint32_t k) {
-            if (k != b) consider(std::min(a, k), std::max(a, k), false);
+            if (k != b) consider(std::min(a, k), std::max(a, k));
         });
         neighbours(b, [&](std::uint32_t k) {
-            if (k != a) consider(std::min(b, k), std::max(b, k), false);
+            if (k != a) consider(std::min(b, k), std::max(b, k));
         });
     }
 
