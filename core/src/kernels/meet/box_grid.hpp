@@ -27,8 +27,8 @@ inline bool boxes_overlap(const Box& a, const Box& b) {
 /// after meets, few) in a list per cell.
 class BoxGrid {
 public:
-    /// The grid made afresh over boxes (its arrays reused), cells as large as the median box's larger side, at most
-    /// about one cell per ball, with every ball i entered with boxes[i].
+    /// The grid made afresh over boxes (its arrays reused), cells as large as the median box's larger side (of a
+    /// sample), at most about one cell per ball, with every ball i entered with boxes[i].
     void build(const std::vector<Box>& boxes) {
         everyone_.clear();
         later_.clear();
@@ -39,16 +39,19 @@ public:
         const std::size_t n = boxes.size();
         if (n == 0) return;
         Box all = boxes[0];
-        std::vector<double>& sides = sides_;
-        sides.clear();
         for (const Box& b : boxes) {
             all.lo = {std::min(all.lo.x, b.lo.x), std::min(all.lo.y, b.lo.y)};
             all.hi = {std::max(all.hi.x, b.hi.x), std::max(all.hi.y, b.hi.y)};
-            sides.push_back(std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y));
         }
-        std::nth_element(sides.begin(), sides.begin() + static_cast<std::ptrdiff_t>(n / 2), sides.end());
+        // The median of the larger sides of at most k_sampled boxes spread evenly over the array.
+        std::vector<double>& sides = sides_;
+        sides.clear();
+        const std::size_t stride = (n + k_sampled - 1) / k_sampled;
+        for (std::size_t i = 0; i < n; i += stride)
+            sides.push_back(std::max(boxes[i].hi.x - boxes[i].lo.x, boxes[i].hi.y - boxes[i].lo.y));
+        std::nth_element(sides.begin(), sides.begin() + static_cast<std::ptrdiff_t>(sides.size() / 2), sides.end());
         const double w = all.hi.x - all.lo.x, h = all.hi.y - all.lo.y;
-        double cell = sides[n / 2];
+        double cell = sides[sides.size() / 2];
         // At most about n cells: a median far below the extent (most balls at rest) would make too many, and every
         // cell is cleared each frame.
         const double floor_cell = std::sqrt(std::max(w * h, 0.0) / static_cast<double>(n));
@@ -62,13 +65,46 @@ public:
         cell_ = cell;
         nx_ = static_cast<std::size_t>(std::min(w / cell, 4096.0)) + 1;
         ny_ = static_cast<std::size_t>(std::min(h / cell, 4096.0)) + 1;
-        // Count each cell's balls, then place them: start_[c] .. start_[c + 1] are cell c's.
+        // Each box's cells once (both passes and pairs() read them), then each cell's balls counted and placed:
+        // start_[c] .. start_[c + 1] are cell c's.
+        ranges_.resize(n);
+        for (std::size_t i = 0; i < n; ++i) ranges_[i] = range(boxes[i]);
         start_.assign(nx_ * ny_ + 1, 0);
-        for_cells(boxes, true, [&](std::uint32_t, std::size_t c) { ++start_[c + 1]; });
+        for_cells(true, [&](std::uint32_t, std::size_t c) { ++start_[c + 1]; });
         for (std::size_t c = 0; c + 1 < start_.size(); ++c) start_[c + 1] += start_[c];
         entries_.resize(start_.back());
         next_.assign(start_.begin(), start_.end() - 1);
-        for_cells(boxes, false, [&](std::uint32_t i, std::size_t c) { entries_[next_[c]++] = i; });
+        for_cells(false, [&](std::uint32_t i, std::size_t c) { entries_[next_[c]++] = i; });
+    }
+
+    /// Calls f(i, j), i < j, once for every two balls entered by build whose boxes overlap (and possibly for a few
+    /// that do not: f tests the boxes), before any insert. A pair is listed in the first cell (lowest row, then
+    /// column) both boxes reach: two overlapping boxes reach that cell, since a box's cells grow with its corners.
+    template <class F>
+    void pairs(const std::vector<Box>& boxes, F&& f) const {
+        const std::size_t n = boxes.size();
+        if (nx_ == 0) {
+            for (std::uint32_t i = 0; i < n; ++i)
+                for (std::uint32_t j = i + 1; j < n; ++j) f(i, j);
+            return;
+        }
+        // The balls listed as reaching everywhere meet every other one.
+        std::vector<bool> big(everyone_.empty() ? 0 : n, false);
+        for (const std::uint32_t i : everyone_) big[i] = true;
+        for (const std::uint32_t i : everyone_)
+            for (std::uint32_t j = 0; j < n; ++j)
+                if (j != i && !(big[j] && j < i) && boxes_overlap(boxes[i], boxes[j])) f(std::min(i, j), std::max(i, j));
+        for (std::size_t y = 0; y < ny_; ++y)
+            for (std::size_t x = 0; x < nx_; ++x) {
+                const std::size_t c = y * nx_ + x;
+                for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k)
+                    for (std::uint32_t m = k + 1; m < start_[c + 1]; ++m) {
+                        const std::uint32_t i = std::min(entries_[k], entries_[m]), j = std::max(entries_[k], entries_[m]);
+                        const Range &a = ranges_[i], &b = ranges_[j];
+                        if (std::max(a.x0, b.x0) != x || std::max(a.y0, b.y0) != y) continue;  // listed in an earlier cell
+                        if (boxes_overlap(boxes[i], boxes[j])) f(i, j);
+                    }
+            }
     }
 
     /// Enters ball i again with box b (its entries under its old box stay: stale, the caller tests boxes).
@@ -107,6 +143,8 @@ public:
     }
 
 private:
+    /// How many boxes' sides the cell size is the median of.
+    static constexpr std::size_t k_sampled = 255;
     /// A box larger than this many cells is listed as reaching everywhere.
     static constexpr std::size_t k_big_cells = 256;
     static constexpr std::uint32_t k_none = 0xffffffffu;
@@ -124,9 +162,9 @@ private:
     /// Calls f(i, c) for each ball i and each cell c its box reaches; a ball whose box reaches too many is entered
     /// as reaching everywhere instead (if enter_big: on the first of the two passes).
     template <class F>
-    void for_cells(const std::vector<Box>& boxes, bool enter_big, F&& f) {
-        for (std::uint32_t i = 0; i < boxes.size(); ++i) {
-            const Range r = range(boxes[i]);
+    void for_cells(bool enter_big, F&& f) {
+        for (std::uint32_t i = 0; i < ranges_.size(); ++i) {
+            const Range& r = ranges_[i];
             if (cells(r) > k_big_cells) {
                 if (enter_big) everyone_.push_back(i);
                 continue;
@@ -154,6 +192,7 @@ private:
     std::vector<std::uint32_t> head_;      // cell c's latest later entry, or k_none (empty: none made yet)
     std::vector<Later> later_;             // the boxes entered since
     std::vector<std::uint32_t> everyone_;  // balls whose boxes reach too many cells (or every ball: no grid)
+    std::vector<Range> ranges_;            // the cells each box entered by build reaches
     std::vector<double> sides_;            // build's scratch: the boxes' larger sides
     std::vector<std::uint32_t> next_;      // build's scratch: each cell's next free entry
 };

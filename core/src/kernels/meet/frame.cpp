@@ -102,12 +102,11 @@ public:
             build_path(f.path, 0.0, f.before.pos, f.events, f.state.pos);
             box_[i] = path_box(f.path, f.before.r);
         }
-        // Every pair whose boxes overlap, found through a grid of the boxes.
+        // Every pair whose boxes overlap, found through a grid of the boxes (the heap's order is total: the order
+        // pairs are found in changes nothing).
         grid_.build(box_);
         seen_.assign(n_, 0);
-        for (std::uint32_t i = 0; i < n_; ++i) neighbours(i, [&](std::uint32_t j) {
-                if (j > i) consider(i, j);
-            });
+        grid_.pairs(box_, [&](std::uint32_t i, std::uint32_t j) { consider(i, j); });
         const std::size_t limit = static_cast<std::size_t>(k_max_meets_per_ball) * n_;
         std::size_t taken = 0;
         while (!heap_.empty()) {
