@@ -92,16 +92,20 @@ public:
         std::vector<bool> big(everyone_.empty() ? 0 : n, false);
         for (const std::uint32_t i : everyone_) big[i] = true;
         for (const std::uint32_t i : everyone_)
-            for (std::uint32_t j = 0; j < n; ++j)
-                if (j != i && !(big[j] && j < i) && boxes_overlap(boxes[i], boxes[j])) f(std::min(i, j), std::max(i, j));
+            for (std::uint32_t j = 0; j < n; ++j) {
+                if (j == i || (big[j] && j < i) || !boxes_overlap(boxes[i], boxes[j])) continue;
+                f(std::min(i, j), std::max(i, j));
+            }
         for (std::size_t y = 0; y < ny_; ++y)
             for (std::size_t x = 0; x < nx_; ++x) {
                 const std::size_t c = y * nx_ + x;
                 for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k)
                     for (std::uint32_t m = k + 1; m < start_[c + 1]; ++m) {
-                        const std::uint32_t i = std::min(entries_[k], entries_[m]), j = std::max(entries_[k], entries_[m]);
+                        const std::uint32_t i = std::min(entries_[k], entries_[m]);
+                        const std::uint32_t j = std::max(entries_[k], entries_[m]);
                         const Range &a = ranges_[i], &b = ranges_[j];
-                        if (std::max(a.x0, b.x0) != x || std::max(a.y0, b.y0) != y) continue;  // listed in an earlier cell
+                        // Listed in an earlier cell?
+                        if (std::max(a.x0, b.x0) != x || std::max(a.y0, b.y0) != y) continue;
                         if (boxes_overlap(boxes[i], boxes[j])) f(i, j);
                     }
             }
