@@ -209,8 +209,8 @@ private:
         if (r && meet::compare(*r, t) < 0) return true;
         // A third ball k (three balls meeting at one time, or a graze the rounded centre makes): the centre must not
         // be closer to k's point at t, rounded where k's path puts it, than their radii's sum, nor the piece to the
-        // centre enter k's reach after lo and before t where the ball's own path does not — where the two were not
-        // closer than that at lo.
+        // centre enter k's reach at or after lo (touching k there and approaching) and before t where the ball's own
+        // path does not — where the two were not closer than that at lo.
         bool crowded = false;
         for (const auto& [ball, centre, cut] : {std::tuple{a, pa.x, &cut_a_}, std::tuple{b, pb.x, &cut_b_}}) {
             const std::uint32_t i = ball;
@@ -232,7 +232,7 @@ private:
                 // (Where the ball's own path enters k's reach by t too, k is due at t as well, a tie, not a graze
                 // the rounding made: the ties' rule takes it.)
                 const std::optional<meet::Root> entry = meet::first_meet(piece, path, Sk, lo, {}, {}, t);
-                if (!entry || meet::compare(*entry, lo) <= 0 || meet::compare(*entry, t) >= 0) return;
+                if (!entry || meet::compare(*entry, t) >= 0) return;
                 if (!meet::first_meet(balls_[i].path, path, Sk, lo, {}, {}, t)) crowded = apart_at_lo();
             });
         }
