@@ -24,6 +24,9 @@
 #   never depends on the machine's load) with a fresh cache per mutant (seeded from fuzz/corpus/), every fuzz
 #   target the clang build defines (its RICOCHET_FUZZ_TARGETS); RICOCHET_SHRINK_TRIES=$MUT_SHRINK_TRIES (default
 #   200) bounds each failing property's shrinking by a count (a timeout of 1800 s guards against a hang only).
+#   libFuzzer's -timeout is $MUT_FUZZ_TIMEOUT s (default 120, not its 10): a campaign by runs does not restart a
+#   worker, and under six workers on two cores a slow meet input took over 10 s and ended the meet worker early;
+#   a timeout saves no log, so it is never a catch either way.
 # Seconds to bug: from the start of the property suite to the moment the reproducing log was written (for a
 # fuzz catch: the suite's time plus the campaign's until then, the clang build left out).
 # Exit status: 0 after a complete run (the score is a measurement), 2 on a broken setup (a patch that does
@@ -35,6 +38,7 @@ src=$(cd "$here/../.." && pwd)
 out="$src/build-mutants"
 only=""
 fuzz_runs=${MUT_FUZZ_RUNS:-30000}
+fuzz_timeout=${MUT_FUZZ_TIMEOUT:-120}
 do_fuzz=1
 do_unit=1
 seed=${MUT_SEED:-1}
@@ -228,7 +232,7 @@ for p in "${patches[@]}"; do
     echo "   clang build $(( $(now) - fs )) s; fuzzing $fuzz_runs inputs per target: $fuzz_targets"
     fs=$(now)
     "$out/clang/cli/ricochet" fuzz --kernel robust --runs "$fuzz_runs" --seed "$seed" \
-      --cache-dir "$work/fuzz-cache" --replay-dir "$work/fuzz" > "$work/fuzz.txt" 2>&1
+      --cache-dir "$work/fuzz-cache" --replay-dir "$work/fuzz" -- -timeout="$fuzz_timeout" > "$work/fuzz.txt" 2>&1
     frc=$?
     echo "   fuzz: exit $frc in $(( $(now) - fs )) s; logs: $(find "$work/fuzz" -name '*.scene' 2>/dev/null | wc -l)"
     hit=$(reproduced_log "$work/fuzz" "$work/fuzz-verdicts.txt")
