@@ -89,6 +89,18 @@ TEST(Meet, UnequalMassesKeepMomentumAndEnergy) {
     }
 }
 
+TEST(Meet, SubnormalVelocitiesAreExchangedExactly) {
+    // A disc of radius 2.9e7 touching a point ball at rest, moving 2e−316 a frame toward it: u = (Δv·n)/(n·n) is
+    // 6.9e−324 in doubles, one ulp of the subnormals, and the response made from it kept a fraction of the speed.
+    // Equal masses exchange their normal components: exactly (0, 0) and (2e−316, 0).
+    for (const KernelId k : {KernelId::robust, KernelId::exact}) {
+        const Scene s = meeting({{{0, 80}, {2e-316, 0}, 29000000}, {{29000000, 80}, {0, 0}, 0}});
+        const std::vector<Ball> end = last_states(s, k);
+        EXPECT_EQ(end[0].vel, (Vec2{0, 0})) << kernel_name(k);
+        EXPECT_EQ(end[1].vel, (Vec2{2e-316, 0})) << kernel_name(k);
+    }
+}
+
 TEST(Meet, NewtonsCradlePassesTheMomentumDownTheLine) {
     // Five unit discs, four touching in a row, the first one arriving at 1 per frame: it meets the row at the end of
     // frame 1 and stops there; the last one leaves at 1, within the same time; the middle ones do not move.

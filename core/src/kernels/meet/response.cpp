@@ -50,17 +50,26 @@ bool respond_rounded(Ball& a, Ball& b, double ma, double mb) {
     const double nn = dot(n, n);
     const double M = ma + mb;
     if (std::isnormal(nn) && std::isfinite(M)) {
-        const double u = dot(a.vel - b.vel, n) / nn;
+        const Vec2 w = a.vel - b.vel;
+        const double wn_x = w.x * n.x, wn_y = w.y * n.y;
+        const double u = (wn_x + wn_y) / nn;
         // v_a′ = v_a − (2·m_b/M)·u·n, v_b′ = v_b + (2·m_a/M)·u·n.
         const double ka = 2.0 * (mb / M) * u, kb = 2.0 * (ma / M) * u;
-        const Vec2 va = a.vel - ka * n, vb = b.vel + kb * n;
-        if (std::isfinite(va.x) && std::isfinite(va.y) && std::isfinite(vb.x) && std::isfinite(vb.y)) {
+        const Vec2 ka_n = ka * n, kb_n = kb * n;
+        const Vec2 va = a.vel - ka_n, vb = b.vel + kb_n;
+        // A product or quotient among the subnormals keeps only the bits above 2^−1074, which may be none of them
+        // (a subnormal Δv against centres 3e7 apart left u one ulp of 2^−1074): the exact response, rounded.
+        const auto lost = [](double x) { return x != 0.0 && !std::isnormal(x); };
+        const bool underflow = lost(wn_x) || lost(wn_y) || lost(u) || lost(ka) || lost(kb) || lost(ka_n.x) ||
+                               lost(ka_n.y) || lost(kb_n.x) || lost(kb_n.y);
+        if (!underflow && std::isfinite(va.x) && std::isfinite(va.y) && std::isfinite(vb.x) && std::isfinite(vb.y)) {
             a.vel = va;
             b.vel = vb;
             return true;
         }
     }
-    // Degenerate: n·n under- or overflows in doubles: the exact response, rounded.
+    // Degenerate: n·n under- or overflows in doubles, or the response's terms underflow: the exact response,
+    // rounded.
     return respond_nearest(a, b, ma, mb);
 }
 
