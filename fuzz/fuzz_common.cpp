@@ -2,6 +2,7 @@
 
 #include "check_tiers.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -193,6 +194,89 @@ Rect ByteReader::rect() {
     remember(Vec2{r.right, r.top});
     remember(Vec2{r.left, r.top});
     return r;
+}
+
+namespace {
+
+/// A near-degenerate scale (1 + 16 bits)·2^e from one of three bands: tiny (2^-1000 and up: GMP decides), near 1,
+/// huge (up to 2^229, so that λ·d ≤ 2^250 and 2·Be stay in range). The mantissa is read first.
+double near_scale(ByteReader& in) {
+    const double m = 1.0 + in.u16();
+    const unsigned b = in.u8();
+    constexpr int k_base[3] = {-1000, -60, 170};
+    const int e = k_base[b % 3] + static_cast<int>((b / 3) % 60) * (b % 3 == 1 ? 2 : 1);
+    return std::ldexp(in.u8() & 1 ? -m : m, e);
+}
+
+/// A small direction with both components non-zero, each in ±[1, 15].
+Vec2 near_direction(ByteReader& in) {
+    const unsigned x = in.u8();
+    const unsigned y = in.u8();
+    return {(x & 16 ? -1.0 : 1.0) * (1 + x % 15), (y & 16 ? -1.0 : 1.0) * (1 + y % 15)};
+}
+
+}  // namespace
+
+void ByteReader::near_degenerate(std::vector<Wall>& walls, Ball& ball, bool crossings) {
+    const unsigned mode = u8() % 4;
+    if (mode == 0 || (mode == 3 && !crossings)) return;
+    if (walls.empty()) walls.push_back({});
+    if (mode == 1 || mode == 2) {
+        // Three points λ·d on one line through the origin, exact (17 + 4 bits); their differences round.
+        const Vec2 d = near_direction(*this);
+        const double l0 = near_scale(*this);
+        const double l1 = near_scale(*this);
+        const double l2 = near_scale(*this);
+        walls[0] = {l0 * d, l1 * d};
+        Vec2 on = l2 * d;
+        // k ulps off, in x or y.
+        const unsigned k = u8();
+        const int ulps = static_cast<int>(k % 7) - 3;
+        for (int i = 0; i < ulps; ++i) (k & 8 ? on.y : on.x) = std::nextafter(k & 8 ? on.y : on.x, INFINITY);
+        for (int i = 0; i > ulps; --i) (k & 8 ? on.y : on.x) = std::nextafter(k & 8 ? on.y : on.x, -INFINITY);
+        // The other end: each coordinate times 0, 1/2, 2 or 1 (different, so off a ray's line); f·x, x − f·x and
+        // their sum are exact, so the leg starts or ends exactly at the point on the line.
+        constexpr double k_f[4] = {0.0, 0.5, 2.0, 1.0};
+        const unsigned f = u8();
+        const unsigned fx = f % 4, fy = (f / 4) % 4 == fx ? (fx + 1) % 4 : (f / 4) % 4;
+        const Vec2 other{k_f[fx] * on.x, k_f[fy] * on.y};
+        ball = mode == 1 ? Ball{other, on - other} : Ball{on, other - on};
+        return;
+    }
+    // A lattice leg Bs → Bs + 2^q·d and two walls crossing it at Bs + j·d and Bs + (j + k)·d: every coordinate an
+    // integer below 2^53 (|Bs| < 2^51, 2^q·|d| ≤ 3·2^50, a wall's half ≤ 16·2^10·4), so points and parameters are
+    // exact; the whole case times 2^e.
+    const int q = 30 + static_cast<int>(u8() % 21);
+    const unsigned dy = u8();
+    const Vec2 d{1.0 + u8() % 3, (dy & 4 ? -1.0 : 1.0) * (dy % 4)};
+    const double r = std::ldexp(1.0, static_cast<int>(u8() % 49));
+    const double ox = static_cast<std::int8_t>(u8()) % 8;
+    const double oy = static_cast<std::int8_t>(u8()) % 8;
+    const Vec2 bs{r * ox, r * oy};
+    const std::uint64_t jbits = u64();
+    const std::int64_t j0 = static_cast<std::int64_t>(jbits % (std::uint64_t{1} << q));
+    const int e = static_cast<int>(u8() % 201) - 100;
+    const double scale = std::ldexp(1.0, e);
+    if (walls.size() < 2) walls.push_back({});
+    for (int i = 0; i < 2; ++i) {
+        const unsigned kb = u8();
+        const std::int64_t j = i == 0 ? j0 : std::clamp<std::int64_t>(j0 + static_cast<int>(kb % 7) - 3, 0,
+                                                                        std::int64_t{1} << q);
+        const Vec2 x = bs + static_cast<double>(j) * d;
+        const unsigned wb = u8();
+        Vec2 w{static_cast<double>(wb % 9) - 4.0, static_cast<double>((wb / 9) % 9) - 4.0};
+        if (w.x * d.y == w.y * d.x) w = {-d.y, d.x};  // along the leg: turned a quarter
+        const unsigned ab = u8();
+        const double len = std::ldexp(1.0, static_cast<int>((ab / 16) % 11));
+        // a = 0: the wall ends exactly on the leg; a tilt of one unit moves the crossing off the lattice.
+        Vec2 p0 = x - (static_cast<double>(ab % 4) * len) * w;
+        if (kb & 8) p0.x += 1.0;
+        if (kb & 16) p0.y += 1.0;
+        Wall wall{scale * p0, scale * (x + (1.0 + (ab / 4) % 4) * len * w)};
+        if (kb & 32) std::swap(wall.p0, wall.p1);
+        walls[static_cast<std::size_t>(i)] = wall;
+    }
+    ball = {scale * bs, scale * (std::ldexp(1.0, q) * d)};
 }
 
 /// Before a plug-in kernel steps scene: its guard is told (plugin_guard.hpp), and where the campaign asks for the

@@ -75,6 +75,14 @@ public:
     Circle circle();
     /// A rectangle with left ≤ right and bottom ≤ top.
     Rect rect();
+    /// Read after a case is decoded: a byte that may rewrite its first walls and its ball into a near-degenerate
+    /// case the predicates' filters cannot decide, each point exact (fuzz/README.md, "Near-degenerate inputs").
+    /// byte % 4: 0 nothing; 1 "collinear + k ulps": walls[0] on a line through the origin and the leg ending on
+    /// it, points at mixed magnitudes (2^-1000 to 2^250), Be moved k ulps; 2 the same with the leg starting on
+    /// it; 3 "tie + k ulps" (when crossings): a lattice leg and walls[0], walls[1] (added if missing) crossing
+    /// it at parameters j/2^q and (j + k)/2^q, ends on the leg or tilted so the crossing rounds; k in [−3, 3].
+    /// Exhausted input reads 0: an input this decoder used to read to its end decodes as it did.
+    void near_degenerate(std::vector<Wall>& walls, Ball& ball, bool crossings);
 
 private:
     const std::uint8_t* data_;

@@ -3,6 +3,7 @@
 // Oracle: the shared checker (run_checked) with the checks below, exactly as `ricochet replay` runs
 // them on the saved log.
 #include <cstdint>
+#include <vector>
 
 #include "fuzz_common.hpp"
 
@@ -28,6 +29,14 @@ StaticCase decode(const std::uint8_t* data, std::size_t size) {
     c.rb = in.rect();
     c.p = in.point();
     c.v = in.velocity(c.p);
+    // Last, so that inputs read to their end before it decode as they did: the wall and point (or the motion
+    // from it) made near-collinear.
+    std::vector<Wall> walls = {c.wall};
+    Ball ball{c.p, c.v};
+    in.near_degenerate(walls, ball, false);
+    c.wall = walls.front();
+    c.p = ball.pos;
+    c.v = ball.vel;
     return c;
 }
 

@@ -24,6 +24,8 @@ SweepCase decode(const std::uint8_t* data, std::size_t size) {
     c.ball.pos = in.point();
     c.ball.vel = in.velocity(c.ball.pos);
     c.frames = 1 + in.below(3);
+    // Last, so that inputs read to their end before it decode as they did: near-collinear or tied crossings.
+    in.near_degenerate(c.walls, c.ball, true);
     return c;
 }
 
