@@ -220,10 +220,11 @@ private:
                 const meet::Radii Sk{radius(i), radius(k)};
                 const std::vector<PathPoint>& path = balls_[k].path;
                 if (crowded || k == a || k == b || !(Sk.rounded() > 0.0) || path.front().t > t) return;
+                // Apart at lo as the printed paths put them: the piece to the centre (which may start before lo)
+                // and k's path, their exact points (k's first point where its path starts later).
                 const auto apart_at_lo = [&] {
-                    const Vec2 i_lo = meet::point_at(balls_[i].path, lo).x;
-                    const Vec2 k_lo = path.front().t <= lo ? meet::point_at(path, lo).x : path.front().p;
-                    return !meet::closer_than(i_lo, k_lo, Sk);
+                    if (path.front().t <= lo) return !meet::closer_on_paths(piece, path, lo, Sk);
+                    return !meet::closer_than(meet::point_at(piece, lo).x, path.front().p, Sk);
                 };
                 if (!meet::surely_apart(x, path, t, Sk) && meet::closer_than(x, meet::point_at(path, t).x, Sk)) {
                     crowded = apart_at_lo();

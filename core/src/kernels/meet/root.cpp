@@ -323,6 +323,17 @@ bool closer_than(Vec2 a, Vec2 b, Radii S) {
     return ex * ex + ey * ey < sum_exact * sum_exact;
 }
 
+bool closer_on_paths(std::span<const PathPoint> a, std::span<const PathPoint> b, double t, Radii S) {
+    // |D(t)|² − S², the quadratic's qa at c = t: bounded first, then exactly.
+    Root at;
+    at.c = t;
+    at.a = piece_at(a, t);
+    at.b = piece_at(b, t);
+    at.S = S;
+    if (const auto sign = disc::sign(relative<Approx2>(at).qa)) return *sign < 0;
+    return bignum::sign(relative<Rational>(at).qa) < 0;
+}
+
 bool surely_apart(Vec2 x, std::span<const PathPoint> path, double t, Radii S) {
     // The piece holding t in doubles is within a few ulps of its largest coordinate of the exact point, and point_at
     // rounds the exact point to within one; a margin of 2^−40 of the magnitudes covers both.

@@ -72,6 +72,10 @@ PointOnPath point_at(std::span<const PathPoint> path, double t);
 /// |a − b|² < S², exactly (a filter in doubles first).
 bool closer_than(Vec2 a, Vec2 b, Radii S);
 
+/// |P_a(t) − P_b(t)|² < S² on the paths' exact points at t (not rounded), exactly: the balls closer than S there.
+/// Both paths must reach t (their first times at most t).
+bool closer_on_paths(std::span<const PathPoint> a, std::span<const PathPoint> b, double t, Radii S);
+
 /// True if the filter proves that the path's centre at t (point_at's, rounded) is farther than S from x: a cheap
 /// look before point_at's exact one. False decides nothing.
 bool surely_apart(Vec2 x, std::span<const PathPoint> path, double t, Radii S);
