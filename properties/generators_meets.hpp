@@ -2,7 +2,8 @@
 // with radii and masses on collision courses (each aimed at where another ball will be, head-on or off centre, some
 // fast enough to cross it within one frame), in the open or in a closed box; head-on pairs along an axis; a Newton's
 // cradle; a break shot (a triangle rack and a cue ball in a box); balls converging on one point at one time; fast
-// pairs crossing within a frame. Everything is laid out in integer units and placed by Placement's exact map
+// pairs crossing within a frame; two paths that only touch (a tangent, no meet). Everything is laid out in integer
+// units and placed by Placement's exact map
 // (generators_discs.hpp), so "touching", "head-on" and "at the same time" hold bit for bit.
 #pragma once
 
@@ -295,6 +296,43 @@ inline rc::Gen<Scene> crossing_scene() {
             return s;
         },
         near_placement(), spec);
+}
+
+/// Two balls whose paths only touch: ball 0 from c moving v, ball 1 from c + (−d, S) moving v + (w, 0), S = R_0 + R_1,
+/// so that their distance √((w·u − d)² + S²) reaches S at the one instant u = d/w (a double root: no meet, docs/
+/// scene-log.md "Balls that meet", 2), within frame 1 or, with over, just past it. The hand-made tangent `ball 0 0 0 0
+/// 0.5`, `ball -3 1 4 0 0.5` is one of them (c = 0, v = 0, d = 3, w = 4). Radii in 64ths and everything else in quarter
+/// units, placed by Placement's exact map, so the tangent is exact in doubles at every scale and offset.
+struct TangentSpec {
+    int cx = 0, cy = 0;    ///< c, quarter units, −32..32
+    int vx = 0, vy = 0;    ///< v, quarter units a frame, −16..16 (0 half the time: ball 0 at rest)
+    int ra = 32, rb = 32;  ///< radii /64 units, 1..64 and 0..64 (0: a point ball passing a disc)
+    int w = 16;            ///< quarter units a frame, 1..64
+    int k = 6;             ///< d = w·k/8 quarter units: the tangent at u = k/8, 1..8 (over: k + 8)
+    bool over = false;     ///< the tangent after the frame's end
+};
+
+inline rc::Gen<Scene> tangent_scene() {
+    const auto spec = rcg::build<TangentSpec>(
+        rcg::set(&TangentSpec::cx, signed_upto(32)), rcg::set(&TangentSpec::cy, signed_upto(32)),
+        rcg::set(&TangentSpec::vx, rcg::weightedOneOf<int>({{1, rcg::just(0)}, {1, signed_upto(16)}})),
+        rcg::set(&TangentSpec::vy, rcg::weightedOneOf<int>({{1, rcg::just(0)}, {1, signed_upto(16)}})),
+        rcg::set(&TangentSpec::ra, rcg::inRange(1, 65)), rcg::set(&TangentSpec::rb, upto(64)),
+        rcg::set(&TangentSpec::w, rcg::inRange(1, 65)), rcg::set(&TangentSpec::k, rcg::inRange(1, 9)),
+        rcg::set(&TangentSpec::over, rcg::weightedOneOf<bool>({{4, rcg::just(false)}, {1, rcg::just(true)}})));
+    return rcg::apply(
+        [](const Placement& at, const TangentSpec& x) {
+            Scene s;
+            s.balls_collide = true;
+            s.frames = 1;
+            const double unit = std::ldexp(1.0, at.scale_exp), S = (x.ra + x.rb) / 64.0;
+            const Vec2 c{x.cx / 4.0, x.cy / 4.0}, v{x.vx / 4.0, x.vy / 4.0};
+            const double d = x.w * (x.k + (x.over ? 8 : 0)) / 32.0;
+            s.balls = {{at.place(c), at.vector(v), unit * (x.ra / 64.0)},
+                       {at.place(c + Vec2{-d, S}), at.vector(v + Vec2{x.w / 4.0, 0}), unit * (x.rb / 64.0)}};
+            return s;
+        },
+        placement(), spec);
 }
 
 }  // namespace ricochet::props::gen

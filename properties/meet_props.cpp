@@ -4,7 +4,8 @@
 // printed centres and keeps momentum and energy; a Newton's cradle passes its momentum down the line; a break shot and
 // random meeting scenes never leave two balls closer than R_i + R_j, at a frame's end, at a meet or between printed
 // points; simultaneous meets give the same bits on every run; a mirrored scene gives the mirrored run and a relabelled
-// one the same physics; and where robust and exact meet fast crossing balls, the lecture kernels let them through.
+// one the same physics; two paths that only touch do not meet; of meets tied at one exact time the lowest pair goes
+// first (`oracle`); and where robust and exact meet fast crossing balls, the lecture kernels let them through.
 // Generators: generators_meets.hpp.
 //
 // The statements are judged here, not by run_checked's ball-overlap, pass-through, momentum and relabel, which the
@@ -615,13 +616,37 @@ std::optional<Failure> lecture_passes_through(KernelId k, const Scene& s) {
     return std::nullopt;
 }
 
+/// Two balls alone whose straight paths through frame 1 only touch: the least |D + W·u|² over all u is S² exactly,
+/// (D × W)² = S²·(W·W), W ≠ 0 (a double root, decided in rationals). A tangent is no meet (docs/scene-log.md "Balls
+/// that meet", 2): frame 1 prints none. The same statement as `oracle`'s, which the saved log names.
+std::optional<Failure> tangent_no_meet(KernelId k, const Scene& s) {
+    if (s.balls.size() != 2 || !s.walls.empty() || !s.bumpers.empty() || s.frames < 1) return std::nullopt;
+    const Ball& a = s.balls[0];
+    const Ball& b = s.balls[1];
+    if (!(a.r + b.r > 0)) return std::nullopt;
+    const mpq_class dx = q(b.pos.x) - q(a.pos.x), dy = q(b.pos.y) - q(a.pos.y);
+    const mpq_class wx = q(b.vel.x) - q(a.vel.x), wy = q(b.vel.y) - q(a.vel.y), ww = wx * wx + wy * wy;
+    const mpq_class cross = dx * wy - dy * wx;
+    if (sgn(ww) == 0 || cross * cross != reach2(a.r, b.r) * ww) return std::nullopt;
+    // Where along the frame the paths touch: u = −D·W/(W·W).
+    const mpq_class u = -(dx * wx + dy * wy) / ww;
+    classify(u >= 0 && u <= 1, "a tangent within frame 1");
+    const MeetRun r = run_meets(s, k);
+    if (r.error || r.frames.size() < 2 || r.frames[1].meets.empty()) return std::nullopt;
+    const MeetRecord& m = r.frames[1].meets.front();
+    return fail(Check::oracle, fmt::format("balls 0 and 1, whose paths only touch (at u = {}), meet at t = {} in frame "
+                                           "1: a tangent is no meet",
+                                           qstr(u), m.t));
+}
+
 /// Every meeting scene the generators draw.
 rc::Gen<Scene> any_meeting_scene() {
     return rc::gen::weightedOneOf<Scene>({{4, gen::meeting_scene(8, 6)},
                                           {1, gen::head_on_scene(6)},
                                           {1, gen::cradle_scene()},
                                           {1, gen::break_shot_scene(6)},
-                                          {1, gen::converging_scene(4)}});
+                                          {1, gen::converging_scene(4)},
+                                          {1, gen::tangent_scene()}});
 }
 
 // ---- the suite --------------------------------------------------------------------------------------------
@@ -699,6 +724,26 @@ TEST_P(Meets, LecturePassesThrough) {
     RICOCHET_SKIP_UNLESS_SWEPT(GetParam());
     run_property({"LecturePassesThrough", Check::pass_through, gen::crossing_scene(), lecture_passes_through, 200},
                  GetParam());
+}
+
+/// Two paths that only touch, at every scale and offset: no meet (the tangent rule), and `oracle` holds.
+TEST_P(Meets, Tangent) {
+    RICOCHET_SKIP_UNLESS_SWEPT(GetParam());
+    const Statement oracle = checked({Check::oracle});
+    run_property({"Tangent", Check::oracle, gen::tangent_scene(),
+                  [oracle](KernelId k, const Scene& s) {
+                      if (auto bad = tangent_no_meet(k, s)) return bad;
+                      return oracle(k, s);
+                  },
+                  150},
+                 GetParam());
+}
+
+/// Balls converging on one point, pairs sharing a ball meeting at the same exact time: `oracle` holds, so of tied
+/// meets the lowest pair is taken first (rule 3), which ThreeAtOnePoint's same bits on every run cannot see.
+TEST_P(Meets, LowestPairFirst) {
+    RICOCHET_SKIP_UNLESS_SWEPT(GetParam());
+    run_property({"LowestPairFirst", Check::oracle, gen::converging_scene(4), checked({Check::oracle}), 150}, GetParam());
 }
 
 /// Every meeting scene under the shared checker's checks for meets (meet_checks()).

@@ -409,7 +409,8 @@ TEST(Relabel, TheImageTakesTheMassesAlong) {
 
 // The older checks in a frame with a meet.
 TEST(MeetsInOlderChecks, SpeedAndOracleLeaveABallThatMetToTheNewChecks) {
-    Scene s = discs({{0, 0}, {10, 0}}, {1, 1});
+    // Ball 0 moving (1, 0) meets ball 1 at rest 2.5 away at t = 1/2 (the oracle judges that first meet too).
+    Scene s = discs({{0, 0}, {2.5, 0}}, {1, 1});
     s.walls = {{{-20, -20}, {-20, 20}}};
     s.balls[0].vel = {1, 0};
     const std::vector<Ball> before = s.balls;
@@ -431,7 +432,8 @@ TEST(MeetsInOlderChecks, SpeedAndOracleLeaveABallThatMetToTheNewChecks) {
     const auto said = oracle->frame(Frame{1, hit_alone, before, memory, traces});
     ASSERT_TRUE(said.has_value());
     EXPECT_TRUE(has(said->message, "the frame printed 1 hit(s) and bump(s)")) << said->message;
-    EXPECT_FALSE(oracle->frame(Frame{1, hit_met, before, memory, traces}).has_value());
+    const std::vector<MeetRecord> taken = {{0, 1, 0.5, {1, 0}, {3, 0}, {1, 0}, {}, {1, 0}, {}, true}};
+    EXPECT_FALSE(oracle->frame(Frame{1, hit_met, before, memory, traces, taken}).has_value());
     // The frame's meets at the limit (16 a ball): every ball is left to the new checks.
     const std::vector<MeetRecord> limit(32);
     EXPECT_FALSE(speed->frame(Frame{1, alone, before, memory, traces, limit}).has_value());

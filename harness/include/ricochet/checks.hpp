@@ -72,6 +72,18 @@
 //                  order; at most 16 a frame, as above; and the frame's first contact equals the exact kernel's
 //                  from the same state. The exact kernel's disc legs are doubles (its contact points are
 //                  rounded), so it is judged leg by leg too.
+//                  In a scene whose balls collide, the frame's first meet (World::meets()'s first record) is
+//                  judged against the exact one, the meet limit reached or not: under the swept rule (robust,
+//                  exact) it is, on the paths the balls make alone (each stepped again from its state before the
+//                  frame: its start at t = 0, each contact at its t_i, its end at t = 1), the earliest entry over
+//                  every pair with S = R_i + R_j > 0 by rule 2 of "Balls that meet" (the smaller root of
+//                  |D_a + W·u|² = S² on a common interval of pieces, a tangent none, a pair within S at the
+//                  interval's start meeting there if D_a·W < 0; S not rounded; times compared exactly as
+//                  (A − √C)/D), ties to the lowest (i, j); the printed meet is that pair at a time in [0, t°], t°
+//                  the double nearest t*; and a frame prints a meet exactly where there is one
+//                  (truth::first_meet). The lecture kernels' first meet is their own rule decided exactly: the
+//                  lowest pair whose centres, each stepped alone to the frame's end, are within S at two points
+//                  and approach ((v_i − v_j)·(B_i − B_j) < 0).
 //   swap           circles_overlap(a, b) = circles_overlap(b, a) and rects_overlap likewise for every pair of
 //                  static shapes (frame 0); for each printed state p, v and every wall w, the wall walked the
 //                  other way gives p and Be = p + v the opposite side and the sweep from p the same hit or miss.
@@ -217,10 +229,10 @@
 // with J as J with I. Every ball is stepped by the disc frame (a point ball as a disc of radius 0): the disc readings
 // of oracle, accuracy, bounce-side and translation apply. A ball that met another in a frame (every ball, in a frame
 // whose meets reached the limit of 16·N) is not stepped again alone: its frame is not the one it makes alone, so it
-// has no trace, and speed, oracle (its legs and first contact) and accuracy do not judge it; ball-overlap,
-// pass-through and momentum do. The images of symmetry and swap and translation's moved scenes carry `balls collide`
-// and the masses (the balls in reverse order take theirs along, and relabel's exception holds for that image); a
-// meet's other ball maps like its ball; where first contacts are compared (swap, translation), a ball whose first
+// has no trace, and speed, oracle (its legs and first contact) and accuracy do not judge it (oracle judges the
+// frame's first meet instead); ball-overlap, pass-through and momentum do. The images of symmetry and swap and
+// translation's moved scenes carry `balls collide` and the masses (the balls in reverse order take theirs along, and
+// relabel's exception holds for that image); a meet's other ball maps like its ball; where first contacts are compared (swap, translation), a ball whose first
 // contact is a meet, in either run, is not, a meet being decided on paths of rounded contact points; and translation
 // counts a meet as a contact.
 //

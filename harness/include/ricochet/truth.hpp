@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "ricochet/kernel.hpp"
@@ -204,6 +205,31 @@ struct PairClearance {
     int least = 1;
 };
 PairClearance pieces_clearance(PathPoint a0, PathPoint a1, PathPoint b0, PathPoint b1, double Ra, double Rb);
+
+/// The frame's first meet by the swept rule (`oracle`; docs/scene-log.md "Balls that meet", 1–3), decided exactly
+/// apart from core/src/kernels/meet/ (truth_meets.cpp). paths: each ball's path as stepped alone through the frame
+/// (its printed points with their frame times, from t = 0 to t = 1, uniform motion between; pieces of zero duration
+/// left out); radii: each ball's reach (R, or 0 for a point ball); pairs: the pairs i < j, sorted, whose paths may
+/// come within S = R_i + R_j (every other pair never does). On each common interval [a, b] of two pieces, with
+/// D_a = P_i(a) − P_j(a) and W the difference of the pieces' velocities, a meet is the smaller root a + u of
+/// |D_a + W·u|² = S² with u in [0, b − a] while the distance decreases (a double root, a tangent, is none), or a
+/// itself where the pair is within S there and D_a·W < 0; S is not rounded. The first meet is the earliest over the
+/// pairs (times compared exactly as numbers (A − √C)/D), ties to the lowest pair.
+struct FirstMeet {
+    bool found = false;
+    std::uint32_t i = 0, j = 0;  ///< the pair, i < j
+    bool at_start = false;       ///< within S at an interval's start, approaching: t* is that start
+    bool tied = false;           ///< a higher pair meets at the same exact time
+    double approx = 0.0;         ///< t*, to about double precision (for messages)
+    /// The time asked about (first_meet's `printed`) lies in [0, t°], t° the double nearest t* (ties to even; rule 4
+    /// rounds t* so, then may only take it earlier), decided exactly: no square root rounded.
+    bool printed_in_time = false;
+};
+FirstMeet first_meet(std::span<const std::vector<PathPoint>> paths, std::span<const double> radii,
+                     std::span<const std::pair<std::uint32_t, std::uint32_t>> pairs, double printed);
+/// sign((va − vb)·(pa − pb)), exactly: −1 where two balls at pa and pb moving va and vb approach (the lecture's
+/// end-of-frame test, "Balls that meet").
+int approach_sign(Vec2 pa, Vec2 va, Vec2 pb, Vec2 vb);
 
 /// A meet's response against the laws it keeps (`momentum`): masses ma, mb arriving with va, vb, leaving with oa, ob;
 /// p = ma·v_a + mb·v_b and E = ma·|v_a|² + mb·|v_b|² (twice the kinetic energy) before and after, exactly.

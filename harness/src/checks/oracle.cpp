@@ -1,9 +1,11 @@
 // oracle: every decision the kernel makes equals the exact one (truth.hpp), leg by leg on its own legs,
-// and every static test the scene poses. A ball stepped as a disc has its legs judged by oracle_discs.cpp.
+// and every static test the scene poses. A ball stepped as a disc has its legs judged by oracle_discs.cpp; a frame
+// whose balls collide has its first meet judged by oracle_meets.cpp.
 #include <fmt/format.h>
 
 #include "checks/frame_check.hpp"
 #include "checks/oracle_discs.hpp"
+#include "checks/oracle_meets.hpp"
 #include "ricochet/bits.hpp"
 #include "ricochet/format.hpp"
 #include "ricochet/truth.hpp"
@@ -15,7 +17,7 @@ std::string wall_name(long w) { return w < 0 ? std::string("no wall") : fmt::for
 
 class Oracle final : public FrameCheck {
 public:
-    Oracle(const Scene& scene, KernelId kernel) : scene_(scene), kernel_(kernel), discs_(scene, kernel) {}
+    Oracle(const Scene& scene, KernelId kernel) : scene_(scene), kernel_(kernel), discs_(scene, kernel), meets_(scene, kernel) {}
 
     bool needs_traces() const override { return true; }
 
@@ -24,13 +26,17 @@ public:
             if (auto bad = statics()) return bad;
         if (auto bad = positions(f)) return bad;
         if (f.index == 0) return std::nullopt;
+        // Balls that collide: the frame's first meet against the exact one (oracle_meets.cpp), reported in ball order
+        // among the legs' failures.
+        std::optional<CheckFailure> meet = meets_.first_meet(f);
         // A ball that met another was not stepped alone: it has no legs of its own to judge (met_in_frame).
         const std::vector<bool> met = met_in_frame(f, f.before.size());
         for (std::uint32_t i = 0; i < f.before.size(); ++i) {
+            if (meet && meet->ball < i) return meet;
             if (met[i]) continue;
             if (auto bad = stepped_as_disc(scene_, i) ? discs_.legs(f, i) : legs(f, i)) return bad;
         }
-        return std::nullopt;
+        return meet;
     }
 
 private:
@@ -210,6 +216,7 @@ private:
     const Scene& scene_;
     KernelId kernel_;
     DiscOracle discs_;
+    MeetOracle meets_;
     std::vector<HitEvent> hits_;
     StepScratch scratch_;
     std::vector<Wall> others_;

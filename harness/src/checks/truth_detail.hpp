@@ -17,6 +17,32 @@ inline int sgn(const Rational& q) { return bignum::sign(q); }
 /// Exact: every finite double is a rational.
 inline Rational Q(double x) { return bignum::rational(x); }
 
+/// sign(x + y·√u), u ≥ 0.
+inline int sign2(const Rational& x, const Rational& y, const Rational& u) {
+    const int sx = sgn(x), sy = sgn(u) == 0 ? 0 : sgn(y);
+    if (sy == 0) return sx;
+    if (sx == 0 || sx == sy) return sy;
+    // Opposite signs: |x| against |y|·√u, by their squares.
+    return sx * sgn(x * x - y * y * u);
+}
+
+/// sign(x + y·√u + z·√v), u, v ≥ 0.
+inline int sign3(const Rational& x, const Rational& y, const Rational& u, const Rational& z, const Rational& v) {
+    const int sl = sign2(x, y, u), sz = sgn(v) == 0 ? 0 : sgn(z);
+    if (sz == 0) return sl;
+    if (sl == 0 || sl == sz) return sz;
+    // L = x + y·√u against |z|·√v, by their squares: L² − z²v = x² + y²u − z²v + 2xy·√u.
+    return sl * sign2(x * x + y * y * u - z * z * v, Rational(2) * x * y, u);
+}
+
+/// An entry time t = (A − √C)/D, D > 0, C ≥ 0 (a disc's contact, a meet of two balls).
+struct Root {
+    Rational A, C, D;
+};
+
+/// sign(t1 − t2) = sign((D2·A1 − D1·A2) − D2·√C1 + D1·√C2), both denominators positive.
+inline int compare(const Root& r1, const Root& r2) { return sign3(r2.D * r1.A - r1.D * r2.A, -r2.D, r1.C, r1.D, r2.C); }
+
 /// Every coordinate of the boxes of a → b and of c → d apart by more than reach, decided on doubles with a
 /// margin (a computed gap g > 0 is at least g/(1 + 2^−53) exactly): no point of one is within reach of the
 /// other. False says nothing.

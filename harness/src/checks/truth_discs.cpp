@@ -16,32 +16,6 @@
 namespace ricochet::truth {
 namespace {
 
-/// sign(x + y·√u), u ≥ 0.
-int sign2(const Rational& x, const Rational& y, const Rational& u) {
-    const int sx = sgn(x), sy = sgn(u) == 0 ? 0 : sgn(y);
-    if (sy == 0) return sx;
-    if (sx == 0 || sx == sy) return sy;
-    // Opposite signs: |x| against |y|·√u, by their squares.
-    return sx * sgn(x * x - y * y * u);
-}
-
-/// sign(x + y·√u + z·√v), u, v ≥ 0.
-int sign3(const Rational& x, const Rational& y, const Rational& u, const Rational& z, const Rational& v) {
-    const int sl = sign2(x, y, u), sz = sgn(v) == 0 ? 0 : sgn(z);
-    if (sz == 0) return sl;
-    if (sl == 0 || sl == sz) return sz;
-    // L = x + y·√u against |z|·√v, by their squares: L² − z²v = x² + y²u − z²v + 2xy·√u.
-    return sl * sign2(x * x + y * y * u - z * z * v, Rational(2) * x * y, u);
-}
-
-/// An entry time t = (A − √C)/D, D > 0, C ≥ 0.
-struct Root {
-    Rational A, C, D;
-};
-
-/// sign(t1 − t2) = sign((D2·A1 − D1·A2) − D2·√C1 + D1·√C2), both denominators positive.
-int compare(const Root& r1, const Root& r2) { return sign3(r2.D * r1.A - r1.D * r2.A, -r2.D, r1.C, r1.D, r2.C); }
-
 /// t ≤ 1: A − √C ≤ D.
 bool at_most_one(const Root& r) { return sign2(r.A - r.D, Rational(-1), r.C) <= 0; }
 
