@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "kernels/disc/frame.hpp"
@@ -34,6 +35,7 @@ struct MeetFrameScratch {
     std::vector<std::uint32_t> seen;
     std::vector<MeetCandidate> heap;
     std::vector<PathPoint> cut_a, cut_b;
+    std::vector<PathPoint> full_a, full_b;
 };
 
 namespace {
@@ -81,7 +83,7 @@ public:
         : k_(k), obstacles_(obstacles), masses_(masses), balls_(balls), meets_(meets), scratch_(scratch),
           n_(balls.size()), seg_t_(kept.seg_t), seg_vel_(kept.seg_vel), version_(kept.version),
           committed_(kept.committed), done_(kept.done), box_(kept.box), grid_(kept.grid), seen_(kept.seen),
-          heap_(kept.heap), cut_a_(kept.cut_a), cut_b_(kept.cut_b) {
+          heap_(kept.heap), cut_a_(kept.cut_a), cut_b_(kept.cut_b), full_a_(kept.full_a), full_b_(kept.full_b) {
         seg_t_.assign(n_, 0.0);
         seg_vel_.resize(n_);
         version_.assign(n_, 0);
@@ -207,6 +209,14 @@ private:
         // An entry before t on the pieces that end at the centres (one at t itself is the meet).
         const std::optional<meet::Root> r = meet::first_meet(cut_a_, cut_b_, S, lo, {}, {}, t);
         if (r && meet::compare(*r, t) < 0) return true;
+        // A piece to a rounded centre starts at its ball's last printed point, which may lie before lo, where the
+        // other ball was on a path it has left since: there, an entry of that piece into the other's printed path.
+        const double s = std::min(piece_start(cut_a_), piece_start(cut_b_));
+        if (s < lo) {
+            const std::vector<PathPoint>&fa = printed(a, cut_a_, full_a_), &fb = printed(b, cut_b_, full_b_);
+            const std::optional<meet::Root> e = meet::first_meet(fa, fb, S, s, {}, {}, lo);
+            if (e && meet::compare(*e, lo) < 0 && entered(*e, fa, fb, S)) return true;
+        }
         // A third ball k (three balls meeting at one time, or a graze the rounded centre makes): the centre must not
         // be closer to k's point at t, rounded where k's path puts it, than their radii's sum, nor the piece to the
         // centre enter k's reach at or after lo (touching k there and approaching) and before t where the ball's own
@@ -238,6 +248,67 @@ private:
             });
         }
         return crowded;
+    }
+
+    /// Whether a meet of paths a and b is an entry into reach from outside it: a crossing inside its interval, or
+    /// one at the interval's start c where the two touch exactly (two balls already closer than S enter nothing).
+    static bool entered(const meet::Root& m, std::span<const PathPoint> a, std::span<const PathPoint> b,
+                        meet::Radii S) {
+        return !m.at_start || !meet::closer_on_paths(a, b, m.c, S);
+    }
+
+    /// The time a path cut at a meet's centre (too_close) leaves its last printed point: its last piece's start.
+    static double piece_start(const std::vector<PathPoint>& cut) {
+        return cut.size() >= 2 ? cut[cut.size() - 2].t : cut.back().t;
+    }
+
+    /// Ball k's printed path so far, its committed points then `current` (its current path, or that cut at a
+    /// centre), in out where it has committed points.
+    const std::vector<PathPoint>& printed(std::uint32_t k, const std::vector<PathPoint>& current,
+                                          std::vector<PathPoint>& out) const {
+        if (committed_[k].empty()) return current;
+        out.assign(committed_[k].begin(), committed_[k].end());
+        out.insert(out.end(), current.begin(), current.end());
+        return out;
+    }
+
+    /// The walk back reached the pieces' common start lo and the centres still leave the balls too close (a centre
+    /// rounded back onto its ball's last printed point holds that ball still on its piece, while the other went by
+    /// it earlier on a path it has left since): one of the two centres moved to a neighbouring double (one ulp in x,
+    /// y or both) whose piece stays clear of the walls and with which no clause of too_close holds, the one nearest
+    /// its rounded centre, exactly; none where two are as near (no choice a mirror image or a renumbering would
+    /// make the other way), nor where none clears.
+    void nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, meet::PointOnPath& pa,
+               meet::PointOnPath& pb) {
+        using bignum::Rational;
+        std::optional<std::pair<bool, Vec2>> best;
+        Rational best_d2;
+        bool tie = false;
+        for (const bool on_a : {true, false}) {
+            const meet::PointOnPath& p = on_a ? pa : pb;
+            const std::uint32_t i = on_a ? a : b;
+            const Vec2 q = balls_[i].path[p.from].p;
+            for (const double sx : {-1.0, 0.0, 1.0})
+                for (const double sy : {-1.0, 0.0, 1.0}) {
+                    const Vec2 c{sx == 0.0 ? p.x.x : std::nextafter(p.x.x, sx * HUGE_VAL),
+                                 sy == 0.0 ? p.x.y : std::nextafter(p.x.y, sy * HUGE_VAL)};
+                    if (c == p.x || !std::isfinite(c.x) || !std::isfinite(c.y)) continue;
+                    if (c != q && !same_bits(disc::walk_back(q, c, radius(i), obstacles_, scratch_), c)) continue;
+                    const meet::PointOnPath moved{c, p.from};
+                    if (too_close(a, b, S, lo, lo, on_a ? moved : pa, on_a ? pb : moved)) continue;
+                    const Rational dx = Rational(c.x) - Rational(p.x.x), dy = Rational(c.y) - Rational(p.x.y);
+                    const Rational d2 = dx * dx + dy * dy;
+                    if (!best || d2 < best_d2) {
+                        best = {on_a, c};
+                        best_d2 = d2;
+                        tie = false;
+                    } else if (d2 == best_d2) {
+                        tie = true;
+                    }
+                }
+        }
+        if (!best || tie) return;
+        (best->first ? pa : pb).x = best->second;
     }
 
     /// The velocity ball i has on the piece of its current path that starts at printed point k.
@@ -328,6 +399,7 @@ private:
             pa = place(a, t, last_a);
             pb = place(b, t, last_b);
         }
+        if (t == lo && too_close(a, b, S, lo, t, pa, pb)) nudge(a, b, S, lo, pa, pb);
         Ball ba{pa.x, velocity_on(a, pa.from), radius(a)}, bb{pb.x, velocity_on(b, pb.from), radius(b)};
         last_t_ = t;
         MeetRecord record{a, b, t, pa.x, pb.x, ba.vel, bb.vel, {}, {}, false, tied};
@@ -415,6 +487,7 @@ private:
     std::uint32_t stamp_ = 0;
     std::vector<Candidate>& heap_;
     std::vector<PathPoint>&cut_a_, &cut_b_;  // the paths to a meet's centres (too_close)
+    std::vector<PathPoint>&full_a_, &full_b_;  // the same with their committed points (too_close)
     double last_t_ = 0.0;                   // the time of the last meet taken
 };
 
