@@ -35,7 +35,7 @@ struct MeetFrameScratch {
     std::vector<std::uint32_t> seen;
     std::vector<MeetCandidate> heap;
     std::vector<PathPoint> cut_a, cut_b;
-    std::vector<PathPoint> full_a, full_b;
+    std::vector<PathPoint> full_a, full_b, full_k;
 };
 
 namespace {
@@ -83,7 +83,8 @@ public:
         : k_(k), obstacles_(obstacles), masses_(masses), balls_(balls), meets_(meets), scratch_(scratch),
           n_(balls.size()), seg_t_(kept.seg_t), seg_vel_(kept.seg_vel), version_(kept.version),
           committed_(kept.committed), done_(kept.done), box_(kept.box), grid_(kept.grid), seen_(kept.seen),
-          heap_(kept.heap), cut_a_(kept.cut_a), cut_b_(kept.cut_b), full_a_(kept.full_a), full_b_(kept.full_b) {
+          heap_(kept.heap), cut_a_(kept.cut_a), cut_b_(kept.cut_b), full_a_(kept.full_a), full_b_(kept.full_b),
+          full_k_(kept.full_k) {
         seg_t_.assign(n_, 0.0);
         seg_vel_.resize(n_);
         version_.assign(n_, 0);
@@ -296,6 +297,7 @@ private:
                     if (c != q && !same_bits(disc::walk_back(q, c, radius(i), obstacles_, scratch_), c)) continue;
                     const meet::PointOnPath moved{c, p.from};
                     if (too_close(a, b, S, lo, lo, on_a ? moved : pa, on_a ? pb : moved)) continue;
+                    if (crowds_others(i, a, b, moved, p.x, lo)) continue;
                     const Rational dx = Rational(c.x) - Rational(p.x.x), dy = Rational(c.y) - Rational(p.x.y);
                     const Rational d2 = dx * dx + dy * dy;
                     if (!best || d2 < best_d2) {
@@ -309,6 +311,32 @@ private:
         }
         if (!best || tie) return;
         (best->first ? pa : pb).x = best->second;
+    }
+
+    /// For nudge: whether ball i's centre moved to `moved` at lo (from `rounded`) comes closer than their radii's sum
+    /// to a third ball's point there where the rounded centre did not, or its piece, where it starts before lo,
+    /// enters a third ball's printed path before lo. (too_close judges a third ball against the piece's own point at
+    /// lo, which is the moved centre itself here.)
+    bool crowds_others(std::uint32_t i, std::uint32_t a, std::uint32_t b, const meet::PointOnPath& moved, Vec2 rounded,
+                       double lo) {
+        std::vector<PathPoint> piece(balls_[i].path.begin(),
+                                     balls_[i].path.begin() + static_cast<std::ptrdiff_t>(moved.from + 1));
+        if (piece.back().t < lo) piece.push_back({lo, moved.x});
+        else piece.back().p = moved.x;
+        const double s = piece_start(piece);
+        bool crowded = false;
+        neighbours(i, [&](std::uint32_t k) {
+            const meet::Radii Sk{radius(i), radius(k)};
+            if (crowded || k == a || k == b || !(Sk.rounded() > 0.0)) return;
+            const std::vector<PathPoint>& whole = printed(k, balls_[k].path, full_k_);
+            if (whole.back().t < lo) return;
+            const Vec2 at = meet::point_at(whole, lo).x;
+            if (meet::closer_than(moved.x, at, Sk) && !meet::closer_than(rounded, at, Sk)) crowded = true;
+            if (crowded || !(s < lo)) return;
+            const std::optional<meet::Root> e = meet::first_meet(piece, whole, Sk, s, {}, {}, lo);
+            crowded = e && meet::compare(*e, lo) < 0 && entered(*e, piece, whole, Sk);
+        });
+        return crowded;
     }
 
     /// The velocity ball i has on the piece of its current path that starts at printed point k.
@@ -487,7 +515,7 @@ private:
     std::uint32_t stamp_ = 0;
     std::vector<Candidate>& heap_;
     std::vector<PathPoint>&cut_a_, &cut_b_;  // the paths to a meet's centres (too_close)
-    std::vector<PathPoint>&full_a_, &full_b_;  // the same with their committed points (too_close)
+    std::vector<PathPoint>&full_a_, &full_b_, &full_k_;  // printed paths with their committed points
     double last_t_ = 0.0;                   // the time of the last meet taken
 };
 
