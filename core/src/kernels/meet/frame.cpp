@@ -273,13 +273,14 @@ private:
         return out;
     }
 
-    /// The walk back reached the pieces' common start lo and the centres still leave the balls too close (a centre
-    /// rounded back onto its ball's last printed point holds that ball still on its piece, while the other went by
-    /// it earlier on a path it has left since): one of the two centres moved to a neighbouring double (one ulp in x,
-    /// y or both) whose piece stays clear of the walls and with which no clause of too_close holds, the one nearest
-    /// its rounded centre, exactly; none where two are as near (no choice a mirror image or a renumbering would
-    /// make the other way), nor where none clears.
-    void nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, meet::PointOnPath& pa,
+    /// The walk back reached its floor t (the pieces' common start lo, or the last meet's time) and the centres still
+    /// leave the balls too close (a centre rounded back onto its ball's last printed point holds that ball still on
+    /// its piece, while the other went by it earlier on a path it has left since): one of the two centres moved to a
+    /// neighbouring double (one ulp in x, y or both) whose piece stays clear of the walls, with which no clause of
+    /// too_close holds and which crowds no third ball (crowds_others), the one nearest its rounded centre, exactly;
+    /// none where two are as near (no choice a mirror image or a renumbering would make the other way), nor where
+    /// none clears.
+    void nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, meet::PointOnPath& pa,
                meet::PointOnPath& pb) {
         using bignum::Rational;
         std::optional<std::pair<bool, Vec2>> best;
@@ -296,8 +297,8 @@ private:
                     if (c == p.x || !std::isfinite(c.x) || !std::isfinite(c.y)) continue;
                     if (c != q && !same_bits(disc::walk_back(q, c, radius(i), obstacles_, scratch_), c)) continue;
                     const meet::PointOnPath moved{c, p.from};
-                    if (too_close(a, b, S, lo, lo, on_a ? moved : pa, on_a ? pb : moved)) continue;
-                    if (crowds_others(i, a, b, moved, p.x, lo)) continue;
+                    if (too_close(a, b, S, lo, t, on_a ? moved : pa, on_a ? pb : moved)) continue;
+                    if (crowds_others(i, a, b, moved, p.x, t)) continue;
                     const Rational dx = Rational(c.x) - Rational(p.x.x), dy = Rational(c.y) - Rational(p.x.y);
                     const Rational d2 = dx * dx + dy * dy;
                     if (!best || d2 < best_d2) {
@@ -313,15 +314,15 @@ private:
         (best->first ? pa : pb).x = best->second;
     }
 
-    /// For nudge: whether ball i's centre moved to `moved` at lo (from `rounded`) comes closer than their radii's sum
-    /// to a third ball's point there where the rounded centre did not, or its piece, where it starts before lo,
-    /// enters a third ball's printed path before lo. (too_close judges a third ball against the piece's own point at
-    /// lo, which is the moved centre itself here.)
+    /// For nudge: whether ball i's centre moved to `moved` at t (from `rounded`) comes closer than their radii's sum
+    /// to a third ball's point there where the rounded centre did not, or its piece enters a third ball's printed
+    /// path before t. (too_close excuses a third ball the piece's own point at lo was already that close to, which
+    /// is the moved centre itself where the piece starts at lo.)
     bool crowds_others(std::uint32_t i, std::uint32_t a, std::uint32_t b, const meet::PointOnPath& moved, Vec2 rounded,
-                       double lo) {
+                       double t) {
         std::vector<PathPoint> piece(balls_[i].path.begin(),
                                      balls_[i].path.begin() + static_cast<std::ptrdiff_t>(moved.from + 1));
-        if (piece.back().t < lo) piece.push_back({lo, moved.x});
+        if (piece.back().t < t) piece.push_back({t, moved.x});
         else piece.back().p = moved.x;
         const double s = piece_start(piece);
         bool crowded = false;
@@ -329,12 +330,12 @@ private:
             const meet::Radii Sk{radius(i), radius(k)};
             if (crowded || k == a || k == b || !(Sk.rounded() > 0.0)) return;
             const std::vector<PathPoint>& whole = printed(k, balls_[k].path, full_k_);
-            if (whole.back().t < lo) return;
-            const Vec2 at = meet::point_at(whole, lo).x;
+            if (whole.back().t < t) return;
+            const Vec2 at = meet::point_at(whole, t).x;
             if (meet::closer_than(moved.x, at, Sk) && !meet::closer_than(rounded, at, Sk)) crowded = true;
-            if (crowded || !(s < lo)) return;
-            const std::optional<meet::Root> e = meet::first_meet(piece, whole, Sk, s, {}, {}, lo);
-            crowded = e && meet::compare(*e, lo) < 0 && entered(*e, piece, whole, Sk);
+            if (crowded || !(s < t)) return;
+            const std::optional<meet::Root> e = meet::first_meet(piece, whole, Sk, s, {}, {}, t);
+            crowded = e && meet::compare(*e, t) < 0 && entered(*e, piece, whole, Sk);
         });
         return crowded;
     }
@@ -417,17 +418,20 @@ private:
         const std::uint32_t a = c.a, b = c.b;
         const meet::Radii S{radius(a), radius(b)};
         const double lo = std::max(seg_t_[a], seg_t_[b]);
-        double t = std::clamp(c.root.estimate, lo, 1.0);
-        // The printed centres, no closer than S (exactly): t taken earlier, 1, 2, 4, … ulps, then lo.
+        // Never before the meet taken last: the frame's meets keep their time order as printed too (the pair's
+        // other meets with balls met since are searched from there on).
+        const double floor = std::max(lo, last_t_);
+        double t = std::clamp(c.root.estimate, floor, 1.0);
+        // The printed centres, no closer than S (exactly): t taken earlier, 1, 2, 4, … ulps, then the floor.
         Placed last_a, last_b;
         meet::PointOnPath pa = place(a, t, last_a), pb = place(b, t, last_b);
-        for (double step = std::max(std::fabs(t) * 0x1p-52, 0x1p-1074); t > lo && too_close(a, b, S, lo, t, pa, pb);
+        for (double step = std::max(std::fabs(t) * 0x1p-52, 0x1p-1074); t > floor && too_close(a, b, S, lo, t, pa, pb);
              step *= 2.0) {
-            t = t - step > lo ? t - step : lo;
+            t = t - step > floor ? t - step : floor;
             pa = place(a, t, last_a);
             pb = place(b, t, last_b);
         }
-        if (t == lo && too_close(a, b, S, lo, t, pa, pb)) nudge(a, b, S, lo, pa, pb);
+        if (t == floor && too_close(a, b, S, lo, t, pa, pb)) nudge(a, b, S, lo, t, pa, pb);
         Ball ba{pa.x, velocity_on(a, pa.from), radius(a)}, bb{pb.x, velocity_on(b, pb.from), radius(b)};
         last_t_ = t;
         MeetRecord record{a, b, t, pa.x, pb.x, ba.vel, bb.vel, {}, {}, false, tied};
