@@ -231,11 +231,17 @@ private:
                 const meet::Radii Sk{radius(i), radius(k)};
                 const std::vector<PathPoint>& path = balls_[k].path;
                 if (crowded || k == a || k == b || !(Sk.rounded() > 0.0) || path.front().t > t) return;
-                // Apart at lo as the printed paths put them: the piece to the centre (which may start before lo)
-                // and k's path, their exact points (k's first point where its path starts later).
+                // Apart at lo, as the printed paths put them (the piece to the centre, which may start before lo,
+                // and k's path, their exact points) or as the ball's own path does (its point there, rounded): two
+                // balls are excused only where both have them closer than that (placed so by the scene). k's first
+                // point stands for it where its path starts later.
                 const auto apart_at_lo = [&] {
-                    if (path.front().t <= lo) return !meet::closer_on_paths(piece, path, lo, Sk);
-                    return !meet::closer_than(meet::point_at(piece, lo).x, path.front().p, Sk);
+                    const Vec2 own = meet::point_at(balls_[i].path, lo).x;
+                    if (path.front().t > lo)
+                        return !meet::closer_than(meet::point_at(piece, lo).x, path.front().p, Sk) ||
+                               !meet::closer_than(own, path.front().p, Sk);
+                    return !meet::closer_on_paths(piece, path, lo, Sk) ||
+                           !meet::closer_than(own, meet::point_at(path, lo).x, Sk);
                 };
                 if (!meet::surely_apart(x, path, t, Sk) && meet::closer_than(x, meet::point_at(path, t).x, Sk)) {
                     crowded = apart_at_lo();
