@@ -199,14 +199,8 @@ private:
     bool too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, const meet::PointOnPath& pa,
                    const meet::PointOnPath& pb) {
         if (meet::closer_than(pa.x, pb.x, S)) return true;
-        const auto cut_path = [&](std::uint32_t i, const meet::PointOnPath& p, std::vector<PathPoint>& out) {
-            const std::vector<PathPoint>& path = balls_[i].path;
-            out.assign(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(p.from + 1));
-            if (out.back().t < t) out.push_back({t, p.x});
-            else out.back().p = p.x;
-        };
-        cut_path(a, pa, cut_a_);
-        cut_path(b, pb, cut_b_);
+        cut_to(a, pa, t, cut_a_);
+        cut_to(b, pb, t, cut_b_);
         // An entry before t on the pieces that end at the centres (one at t itself is the meet).
         const std::optional<meet::Root> r = meet::first_meet(cut_a_, cut_b_, S, lo, {}, {}, t);
         if (r && meet::compare(*r, t) < 0) return true;
@@ -255,6 +249,15 @@ private:
             });
         }
         return crowded;
+    }
+
+    /// Ball i's current path cut at frame time t, where it would be at centre p: its points up to the one the piece
+    /// holding p starts from, then p at t.
+    void cut_to(std::uint32_t i, const meet::PointOnPath& p, double t, std::vector<PathPoint>& out) const {
+        const std::vector<PathPoint>& path = balls_[i].path;
+        out.assign(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(p.from + 1));
+        if (out.back().t < t) out.push_back({t, p.x});
+        else out.back().p = p.x;
     }
 
     /// Whether a meet of paths a and b is an entry into reach from outside it: a crossing inside its interval, or
@@ -326,10 +329,8 @@ private:
     /// is the moved centre itself where the piece starts at lo.)
     bool crowds_others(std::uint32_t i, std::uint32_t a, std::uint32_t b, const meet::PointOnPath& moved, Vec2 rounded,
                        double t) {
-        std::vector<PathPoint> piece(balls_[i].path.begin(),
-                                     balls_[i].path.begin() + static_cast<std::ptrdiff_t>(moved.from + 1));
-        if (piece.back().t < t) piece.push_back({t, moved.x});
-        else piece.back().p = moved.x;
+        std::vector<PathPoint> piece;
+        cut_to(i, moved, t, piece);
         const double s = piece_start(piece);
         bool crowded = false;
         neighbours(i, [&](std::uint32_t k) {
@@ -431,8 +432,8 @@ private:
         // The printed centres, no closer than S (exactly): t taken earlier, 1, 2, 4, … ulps, then the floor.
         Placed last_a, last_b;
         meet::PointOnPath pa = place(a, t, last_a), pb = place(b, t, last_b);
-        for (double step = std::max(std::fabs(t) * 0x1p-52, 0x1p-1074); t > floor && too_close(a, b, S, lo, t, pa, pb);
-             step *= 2.0) {
+        for (double step = std::max(std::fabs(t) * 0x1p-52, 0x1p-1074);
+             t > floor && too_close(a, b, S, lo, t, pa, pb); step *= 2.0) {
             t = t - step > floor ? t - step : floor;
             pa = place(a, t, last_a);
             pb = place(b, t, last_b);
