@@ -164,7 +164,7 @@ struct CrossWall {
 };
 
 /// How to build a leg and 2–3 walls crossing it at parameters equal or a few units apart.
-struct CrossSpec {
+struct LatticeCrossing {
     int q = 48;                 ///< the leg Bs → Bs + 2^q·d
     Vec2 d;
     int r = 0, ox = 0, oy = 0;  ///< Bs = 2^r·(ox, oy)
@@ -184,9 +184,9 @@ inline rc::Gen<CrossWall> cross_wall() {
         rcg::set(&CrossWall::reverse, rcg::arbitrary<bool>()));
 }
 
-/// The scene a CrossSpec describes. Every coordinate is an integer below 2^53 before the scale 2^e: |Bs| ≤ 7·2^48,
+/// The scene a LatticeCrossing describes. Every coordinate is an integer below 2^53 before the scale 2^e: |Bs| ≤ 7·2^48,
 /// 2^q·|d| ≤ 3·2^50, a·2^len_exp·|w| ≤ 2^50, so each point is exact and each crossing parameter j/2^q exact.
-inline Scene make_crossings(const CrossSpec& c) {
+inline Scene make_crossings(const LatticeCrossing& c) {
     Scene s;
     const double scale = std::ldexp(1.0, c.e);
     const double n = std::ldexp(1.0, c.q);
