@@ -221,6 +221,10 @@ private:
             const std::uint32_t i = ball;
             const Vec2 x = centre;
             const std::vector<PathPoint>& piece = *cut;
+            // A centre printed already, by a meet taken at t before this one (the ball's path starts there at t), was
+            // judged against the third balls then.
+            const PathPoint& start = balls_[i].path.front();
+            if (start.t == t && same_bits(start.p, x)) continue;
             neighbours(i, [&](std::uint32_t k) {
                 const meet::Radii Sk{radius(i), radius(k)};
                 const std::vector<PathPoint>& path = balls_[k].path;
@@ -292,13 +296,24 @@ private:
     void nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, meet::PointOnPath& pa,
                meet::PointOnPath& pb) {
         using bignum::Rational;
-        std::optional<std::pair<bool, Vec2>> best;
-        Rational best_d2;
-        bool tie = false;
+        // Every candidate that clears, with what chooses among them: its exact squared distance from its rounded
+        // centre, then from its ball's exact centre at t (the point the rounded one rounds), then whether its piece
+        // starts at t (a centre moved where the ball already was at t: last), then how far it moves along its ball's
+        // approach to the other, (c − X)·(v_i − v_j) (least first: back along it).
+        struct Clear {
+            bool on_a;
+            Vec2 c;
+            Rational d2, e2;
+            bool jump;
+            Rational along;
+        };
+        std::vector<Clear> clear;
         for (const bool on_a : {true, false}) {
             const meet::PointOnPath& p = on_a ? pa : pb;
             const std::uint32_t i = on_a ? a : b;
             const Vec2 q = balls_[i].path[p.from].p;
+            const Vec2 w = velocity_on(i, p.from) - velocity_on(on_a ? b : a, (on_a ? pb : pa).from);
+            const auto [ex, ey] = meet::exact_point(balls_[i].path, t);
             for (const double sx : {-1.0, 0.0, 1.0})
                 for (const double sy : {-1.0, 0.0, 1.0}) {
                     const Vec2 c{sx == 0.0 ? p.x.x : std::nextafter(p.x.x, sx * HUGE_VAL),
@@ -309,18 +324,33 @@ private:
                     if (too_close(a, b, S, lo, t, on_a ? moved : pa, on_a ? pb : moved)) continue;
                     if (crowds_others(i, a, b, moved, p.x, t)) continue;
                     const Rational dx = Rational(c.x) - Rational(p.x.x), dy = Rational(c.y) - Rational(p.x.y);
-                    const Rational d2 = dx * dx + dy * dy;
-                    if (!best || d2 < best_d2) {
-                        best = {on_a, c};
-                        best_d2 = d2;
-                        tie = false;
-                    } else if (d2 == best_d2) {
-                        tie = true;
-                    }
+                    const Rational fx = Rational(c.x) - ex, fy = Rational(c.y) - ey;
+                    clear.push_back({on_a, c, dx * dx + dy * dy, fx * fx + fy * fy, balls_[i].path[p.from].t == t,
+                                     dx * Rational(w.x) + dy * Rational(w.y)});
                 }
         }
-        if (!best || tie) return;
-        (best->first ? pa : pb).x = best->second;
+        // Past the distance from the rounded centre only where the rounded centres themselves overlap.
+        const bool overlap = meet::closer_than(pa.x, pb.x, S);
+        const auto order = [overlap](const Clear& x, const Clear& y) {
+            if (x.d2 != y.d2) return x.d2 < y.d2 ? -1 : 1;
+            if (!overlap) return 0;
+            if (x.e2 != y.e2) return x.e2 < y.e2 ? -1 : 1;
+            if (x.jump != y.jump) return x.jump ? 1 : -1;
+            if (x.along != y.along) return x.along < y.along ? -1 : 1;
+            return 0;
+        };
+        const Clear* best = nullptr;
+        bool tie = false;
+        for (const Clear& x : clear) {
+            const int o = best ? order(x, *best) : -1;
+            if (o < 0) {
+                best = &x;
+                tie = false;
+            } else if (o == 0) {
+                tie = true;
+            }
+        }
+        if (best && !tie) (best->on_a ? pa : pb).x = best->c;
     }
 
     /// For nudge: whether ball i's centre moved to `moved` at t (from `rounded`) comes closer than their radii's sum

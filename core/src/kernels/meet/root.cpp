@@ -304,6 +304,12 @@ PointOnPath point_at(std::span<const PathPoint> path, double t) {
     return {{nearest(px), nearest(py)}, k};
 }
 
+std::pair<Rational, Rational> exact_point(std::span<const PathPoint> path, double t) {
+    Rational px, py, vx, vy;
+    motion<Rational>(piece_at(path, t), t, {}, px, py, vx, vy);
+    return {std::move(px), std::move(py)};
+}
+
 bool closer_than(Vec2 a, Vec2 b, Radii S) {
     // The filter: d² = |a − b|² and s² = (R_i + R_j)² in doubles are each within 6 ulps of their exact values, and
     // where d² + s² ≥ 2^−900 an underflow loses at most a few 2^−1074; farther apart than 2^−45·(d² + s²), the doubles

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <span>
+#include <utility>
 
 #include "base/bignum.hpp"
 #include "ricochet/meet.hpp"
@@ -68,6 +69,9 @@ struct PointOnPath {
     std::size_t from = 0;
 };
 PointOnPath point_at(std::span<const PathPoint> path, double t);
+
+/// The ball's centre at frame time t on its path (t within the path's times), exactly: the point point_at rounds.
+std::pair<bignum::Rational, bignum::Rational> exact_point(std::span<const PathPoint> path, double t);
 
 /// |a − b|² < S², exactly (a filter in doubles first).
 bool closer_than(Vec2 a, Vec2 b, Radii S);
