@@ -3,8 +3,10 @@
 // static test lets pass through, balls boxed in by walls — and the exact root order (root.hpp) on its own.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <span>
 #include <string>
 
 #include <fmt/format.h>
@@ -242,6 +244,45 @@ TEST(Meet, TwoBallsTouchingWhosePathsStillCloseInAfterTheMeetStayWhereTheyMet) {
     // move (a scene may start balls overlapping; they stay as they are).
     const Scene overlapping = meeting({{{0, 0}, {-9e18, 0}, 0.01}, {{0.015, 0}, {-9e18, 0}, 0.01}}, 1);
     EXPECT_EQ(last_states(overlapping, KernelId::robust)[0].pos, (Vec2{-9e18, 0}));
+}
+
+/// Whether two printed paths come within S of each other from outside it, pass-through's rule: on a common interval
+/// of their pieces, at least S apart at its start and closer within it (an interval that starts closer is not judged).
+bool enters(std::span<const PathPoint> a, std::span<const PathPoint> b, meet::Radii S) {
+    double from = 0.0;
+    while (from < 1.0) {
+        const std::optional<meet::Root> m = meet::first_meet(a, b, S, from);
+        if (!m) return false;
+        if (!m->at_start || !meet::closer_on_paths(a, b, m->c, S)) return true;
+        double next = 1.0;
+        for (const std::span<const PathPoint> path : {a, b})
+            for (const PathPoint& q : path)
+                if (q.t > m->c) {
+                    next = std::min(next, q.t);
+                    break;
+                }
+        from = next;
+    }
+    return false;
+}
+
+TEST(Meet, ASafeStopsPieceEntersNoOtherBall) {
+    // Far out (an ulp of y is 1024 to 2048) a point ball jammed between two discs and walls meets them until the
+    // bound (16·N meets) stops the frame. Disc 0 moves 4e17 a frame in y, far less than an ulp since its last printed
+    // point: its stop rounded to its path's point would print it standing still at that y while ball 2 passed along
+    // it, through it. Rule 7 stops it a neighbouring double away instead, and no printed path enters another's.
+    Scene s = meeting({{{0, -9.223372036854776e18}, {-9e18, 0}, 1},
+                       {{1, -9.223372036854776e18}, {0, 0}, 1},
+                       {{1, -9.223372036854776e18}, {0, 0}, 0}});
+    s.walls = {{{0, 0}, {10, -9.2234e18}}, {{6, -9.22337203685478e18}, {-6, -9.223372036854776e18}}};
+    World w(s, KernelId::robust);
+    std::vector<Event> events;
+    w.start(events);
+    ASSERT_FALSE(w.step(events));
+    EXPECT_EQ(w.meets().size(), 16u * 3u);
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = i + 1; j < 3; ++j)
+            EXPECT_FALSE(enters(w.path(i), w.path(j), {s.balls[i].r, s.balls[j].r})) << i << " " << j;
 }
 
 TEST(Meet, TheSameRunOnEveryThreadCountAndBroadPhase) {
