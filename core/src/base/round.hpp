@@ -60,4 +60,7 @@ inline double round_quotient(const Integer& num, const Integer& den, long k) {
     return sg > 0 ? mag : -mag;
 }
 
+/// The double nearest to q, with the same conventions.
+inline double nearest(const Rational& q) { return round_quotient(numerator(q), denominator(q), 0); }
+
 }  // namespace ricochet::bignum

@@ -33,13 +33,7 @@ namespace {
 
 using bignum::Integer;
 using bignum::Rational;
-
-/// The nearest double to q (round.hpp's conventions).
-double nearest(const Rational& q) {
-    const Integer& num = bignum::numerator(q);
-    const Integer& den = bignum::denominator(q);
-    return bignum::round_quotient(num, den, 0);
-}
+using bignum::nearest;
 
 Rational rat(double x) { return bignum::rational(x); }
 Rational rat(const Integer& z) { return bignum::rational(z, Integer(1)); }

@@ -11,8 +11,7 @@ namespace ricochet::meet {
 namespace {
 
 using bignum::Rational;
-
-double nearest(const Rational& q) { return bignum::round_quotient(bignum::numerator(q), bignum::denominator(q), 0); }
+using bignum::nearest;
 
 }  // namespace
 

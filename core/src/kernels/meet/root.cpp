@@ -17,10 +17,8 @@ namespace ricochet::meet {
 namespace {
 
 using bignum::Rational;
+using bignum::nearest;
 using disc::Approx2;
-
-/// The double nearest to q.
-double nearest(const Rational& q) { return bignum::round_quotient(bignum::numerator(q), bignum::denominator(q), 0); }
 
 /// An input double, exact.
 Approx2 fine(double x) { return {x, 0.0, 0.0}; }

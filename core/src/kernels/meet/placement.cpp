@@ -1,0 +1,183 @@
+// A meet's centres (swept_frame.hpp; docs/scene-log.md, "Balls that meet", 4): each its path's point at t* rounded
+// and walked back from the walls, t* taken earlier while the centres or the pieces to them come too close to each
+// other or to a third ball, and at the floor one centre moved to a neighbouring double that clears.
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <tuple>
+#include <vector>
+
+#include "base/bignum.hpp"
+#include "kernels/disc/frame.hpp"
+#include "kernels/meet/swept_frame.hpp"
+#include "ricochet/bits.hpp"
+
+namespace ricochet {
+
+meet::PointOnPath SweptFrame::place(std::size_t i, double t, Placed& last) {
+    const std::vector<PathPoint>& path = balls_[i].path;
+    meet::PointOnPath at = meet::point_at(path, t);
+    if (last.valid && at.from == last.raw.from && same_bits(at.x, last.raw.x)) return last.at;
+    last.valid = true;
+    last.raw = at;
+    const Vec2 q = path[at.from].p;
+    if (at.x != q) at.x = disc::walk_back(q, at.x, radius(i), obstacles_, scratch_);
+    last.at = at;
+    return at;
+}
+
+bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t,
+                           const meet::PointOnPath& pa, const meet::PointOnPath& pb) {
+    if (meet::closer_than(pa.x, pb.x, S)) return true;
+    cut_to(a, pa, t, cut_a_);
+    cut_to(b, pb, t, cut_b_);
+    // An entry before t on the pieces that end at the centres (one at t itself is the meet).
+    const std::optional<meet::Root> r = meet::first_meet(cut_a_, cut_b_, S, lo, {}, {}, t);
+    if (r && meet::compare(*r, t) < 0) return true;
+    // A piece to a rounded centre starts at its ball's last printed point, which may lie before lo, where the
+    // other ball was on a path it has left since: there, an entry of that piece into the other's printed path.
+    const double s = std::min(piece_start(cut_a_), piece_start(cut_b_));
+    if (s < lo) {
+        const std::vector<PathPoint>&fa = printed(a, cut_a_, full_a_), &fb = printed(b, cut_b_, full_b_);
+        const std::optional<meet::Root> e = meet::first_meet(fa, fb, S, s, {}, {}, lo);
+        if (e && meet::compare(*e, lo) < 0 && entered(*e, fa, fb, S)) return true;
+    }
+    // A third ball k (three balls meeting at one time, or a graze the rounded centre makes): the centre must not
+    // be closer to k's point at t, rounded where k's path puts it, than their radii's sum, nor the piece to the
+    // centre enter k's reach at or after lo (touching k there and approaching) and before t where the ball's own
+    // path does not — where the two were not closer than that at lo.
+    bool crowded = false;
+    for (const auto& [ball, centre, cut] : {std::tuple{a, pa.x, &cut_a_}, std::tuple{b, pb.x, &cut_b_}}) {
+        const std::uint32_t i = ball;
+        const Vec2 x = centre;
+        const std::vector<PathPoint>& piece = *cut;
+        // A centre printed already, by a meet taken at t before this one (the ball's path starts there at t), was
+        // judged against the third balls then.
+        const PathPoint& start = balls_[i].path.front();
+        if (start.t == t && same_bits(start.p, x)) continue;
+        neighbours(i, [&](std::uint32_t k) {
+            const meet::Radii Sk{radius(i), radius(k)};
+            const std::vector<PathPoint>& path = balls_[k].path;
+            if (crowded || k == a || k == b || !(Sk.rounded() > 0.0) || path.front().t > t) return;
+            // Apart at lo, as the printed paths put them (the piece to the centre, which may start before lo,
+            // and k's path, their exact points) or as the ball's own path does (its point there, rounded): two
+            // balls are excused only where both have them closer than that (placed so by the scene). k's first
+            // point stands for it where its path starts later.
+            const auto apart_at_lo = [&] {
+                const Vec2 own = meet::point_at(balls_[i].path, lo).x;
+                if (path.front().t > lo)
+                    return !meet::closer_than(meet::point_at(piece, lo).x, path.front().p, Sk) ||
+                           !meet::closer_than(own, path.front().p, Sk);
+                return !meet::closer_on_paths(piece, path, lo, Sk) ||
+                       !meet::closer_than(own, meet::point_at(path, lo).x, Sk);
+            };
+            if (!meet::surely_apart(x, path, t, Sk) && meet::closer_than(x, meet::point_at(path, t).x, Sk)) {
+                crowded = apart_at_lo();
+                return;
+            }
+            // (Where the ball's own path enters k's reach by t too, k is due at t as well, a tie, not a graze
+            // the rounding made: the ties' rule takes it.)
+            const std::optional<meet::Root> entry = meet::first_meet(piece, path, Sk, lo, {}, {}, t);
+            if (!entry || meet::compare(*entry, t) >= 0) return;
+            if (!meet::first_meet(balls_[i].path, path, Sk, lo, {}, {}, t)) crowded = apart_at_lo();
+        });
+    }
+    return crowded;
+}
+
+void SweptFrame::cut_to(std::uint32_t i, const meet::PointOnPath& p, double t, std::vector<PathPoint>& out) const {
+    const std::vector<PathPoint>& path = balls_[i].path;
+    out.assign(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(p.from + 1));
+    if (out.back().t < t) out.push_back({t, p.x});
+    else out.back().p = p.x;
+}
+
+const std::vector<PathPoint>& SweptFrame::printed(std::uint32_t k, const std::vector<PathPoint>& current,
+                                                  std::vector<PathPoint>& out) const {
+    if (committed_[k].empty()) return current;
+    out.assign(committed_[k].begin(), committed_[k].end());
+    out.insert(out.end(), current.begin(), current.end());
+    return out;
+}
+
+void SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, meet::PointOnPath& pa,
+                       meet::PointOnPath& pb) {
+    using bignum::Rational;
+    // Every candidate that clears, with what chooses among them: its exact squared distance from its rounded
+    // centre, then from its ball's exact centre at t (the point the rounded one rounds), then whether its piece
+    // starts at t (a centre moved where the ball already was at t: last), then how far it moves along its ball's
+    // approach to the other, (c − X)·(v_i − v_j) (least first: back along it).
+    struct Clear {
+        bool on_a;
+        Vec2 c;
+        Rational d2, e2;
+        bool jump;
+        Rational along;
+    };
+    std::vector<Clear> clear;
+    for (const bool on_a : {true, false}) {
+        const meet::PointOnPath& p = on_a ? pa : pb;
+        const std::uint32_t i = on_a ? a : b;
+        const Vec2 q = balls_[i].path[p.from].p;
+        const Vec2 w = velocity_on(i, p.from) - velocity_on(on_a ? b : a, (on_a ? pb : pa).from);
+        const auto [ex, ey] = meet::exact_point(balls_[i].path, t);
+        for (const double sx : {-1.0, 0.0, 1.0})
+            for (const double sy : {-1.0, 0.0, 1.0}) {
+                const Vec2 c{sx == 0.0 ? p.x.x : std::nextafter(p.x.x, sx * HUGE_VAL),
+                             sy == 0.0 ? p.x.y : std::nextafter(p.x.y, sy * HUGE_VAL)};
+                if (c == p.x || !std::isfinite(c.x) || !std::isfinite(c.y)) continue;
+                if (c != q && !same_bits(disc::walk_back(q, c, radius(i), obstacles_, scratch_), c)) continue;
+                const meet::PointOnPath moved{c, p.from};
+                if (too_close(a, b, S, lo, t, on_a ? moved : pa, on_a ? pb : moved)) continue;
+                if (crowds_others(i, a, b, moved, p.x, t)) continue;
+                const Rational dx = Rational(c.x) - Rational(p.x.x), dy = Rational(c.y) - Rational(p.x.y);
+                const Rational fx = Rational(c.x) - ex, fy = Rational(c.y) - ey;
+                clear.push_back({on_a, c, dx * dx + dy * dy, fx * fx + fy * fy, balls_[i].path[p.from].t == t,
+                                 dx * Rational(w.x) + dy * Rational(w.y)});
+            }
+    }
+    // Past the distance from the rounded centre only where the rounded centres themselves overlap.
+    const bool overlap = meet::closer_than(pa.x, pb.x, S);
+    const auto order = [overlap](const Clear& x, const Clear& y) {
+        if (x.d2 != y.d2) return x.d2 < y.d2 ? -1 : 1;
+        if (!overlap) return 0;
+        if (x.e2 != y.e2) return x.e2 < y.e2 ? -1 : 1;
+        if (x.jump != y.jump) return x.jump ? 1 : -1;
+        if (x.along != y.along) return x.along < y.along ? -1 : 1;
+        return 0;
+    };
+    const Clear* best = nullptr;
+    bool tie = false;
+    for (const Clear& x : clear) {
+        const int o = best ? order(x, *best) : -1;
+        if (o < 0) {
+            best = &x;
+            tie = false;
+        } else if (o == 0) {
+            tie = true;
+        }
+    }
+    if (best && !tie) (best->on_a ? pa : pb).x = best->c;
+}
+
+bool SweptFrame::crowds_others(std::uint32_t i, std::uint32_t a, std::uint32_t b, const meet::PointOnPath& moved,
+                               Vec2 rounded, double t) {
+    std::vector<PathPoint> piece;
+    cut_to(i, moved, t, piece);
+    const double s = piece_start(piece);
+    bool crowded = false;
+    neighbours(i, [&](std::uint32_t k) {
+        const meet::Radii Sk{radius(i), radius(k)};
+        if (crowded || k == a || k == b || !(Sk.rounded() > 0.0)) return;
+        const std::vector<PathPoint>& whole = printed(k, balls_[k].path, full_k_);
+        if (whole.back().t < t) return;
+        const Vec2 at = meet::point_at(whole, t).x;
+        if (meet::closer_than(moved.x, at, Sk) && !meet::closer_than(rounded, at, Sk)) crowded = true;
+        if (crowded || !(s < t)) return;
+        const std::optional<meet::Root> e = meet::first_meet(piece, whole, Sk, s, {}, {}, t);
+        crowded = e && meet::compare(*e, t) < 0 && entered(*e, piece, whole, Sk);
+    });
+    return crowded;
+}
+
+}  // namespace ricochet

@@ -1,0 +1,216 @@
+// The swept frame's search and its meets (swept_frame.hpp): every ball's path and the pairs whose boxes overlap
+// through a grid, a heap of each pair's next meet in exact time order, and each meet taken (docs/scene-log.md, "Balls
+// that meet", 3 to 6).
+#include "kernels/meet/swept_frame.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "ricochet/limits.hpp"
+
+namespace ricochet {
+
+SweptFrame::SweptFrame(KernelId k, const Obstacles& obstacles, std::span<const double> masses,
+                       std::span<BallFrame> balls, std::vector<MeetRecord>& meets, StepScratch& scratch,
+                       MeetFrameScratch& kept)
+    : k_(k), obstacles_(obstacles), masses_(masses), balls_(balls), meets_(meets), scratch_(scratch),
+      n_(balls.size()), seg_t_(kept.seg_t), seg_vel_(kept.seg_vel), version_(kept.version),
+      committed_(kept.committed), done_(kept.done), box_(kept.box), grid_(kept.grid), seen_(kept.seen),
+      heap_(kept.heap), cut_a_(kept.cut_a), cut_b_(kept.cut_b), full_a_(kept.full_a), full_b_(kept.full_b),
+      full_k_(kept.full_k) {
+    seg_t_.assign(n_, 0.0);
+    seg_vel_.resize(n_);
+    version_.assign(n_, 0);
+    committed_.resize(n_);
+    done_.resize(n_);
+    for (std::size_t i = 0; i < n_; ++i) {
+        committed_[i].clear();
+        done_[i].clear();
+    }
+    box_.resize(n_);
+    heap_.clear();
+}
+
+void SweptFrame::run() {
+    for (std::size_t i = 0; i < n_; ++i) {
+        BallFrame& f = balls_[i];
+        seg_vel_[i] = f.before.vel;
+        meet::build_path(f.path, 0.0, f.before.pos, f.events, f.state.pos);
+        box_[i] = meet::path_box(f.path, f.before.r);
+    }
+    // Every pair whose boxes overlap, found through a grid of the boxes (the heap's order is total: the order
+    // pairs are found in changes nothing).
+    grid_.build(box_);
+    seen_.assign(n_, 0);
+    grid_.pairs(box_, [&](std::uint32_t i, std::uint32_t j) { consider(i, j); });
+    const std::size_t limit = static_cast<std::size_t>(k_max_meets_per_ball) * n_;
+    std::size_t taken = 0;
+    while (!heap_.empty()) {
+        std::pop_heap(heap_.begin(), heap_.end(), meet::later);
+        const Candidate c = std::move(heap_.back());
+        heap_.pop_back();
+        if (c.version_a != version_[c.a] || c.version_b != version_[c.b]) continue;  // a path it was found on changed
+        if (taken == limit) {
+            safe_stop(last_t_);
+            break;
+        }
+        ++taken;
+        take(c, tied(c));
+    }
+    for (std::size_t i = 0; i < n_; ++i) finish(i);
+}
+
+std::optional<meet::Root> SweptFrame::search(std::uint32_t a, std::uint32_t b, double from) const {
+    const meet::Radii S{radius(a), radius(b)};
+    if (!(S.rounded() > 0.0) || !meet::boxes_overlap(box_[a], box_[b])) return std::nullopt;
+    from = std::max({from, seg_t_[a], seg_t_[b]});
+    return meet::first_meet(balls_[a].path, balls_[b].path, S, from, balls_[a].state.vel, balls_[b].state.vel);
+}
+
+double SweptFrame::next_printed(std::uint32_t a, std::uint32_t b, double t) const {
+    double next = 1.0;
+    for (const std::uint32_t i : {a, b})
+        for (const PathPoint& q : balls_[i].path)
+            if (q.t > t) {
+                next = std::min(next, q.t);
+                break;
+            }
+    return next;
+}
+
+Vec2 SweptFrame::velocity_on(std::size_t i, std::size_t k) const {
+    const BallFrame& f = balls_[i];
+    if (k == 0) return seg_vel_[i];
+    if (k <= f.events.size()) return f.events[k - 1].out;
+    return f.state.vel;
+}
+
+void SweptFrame::cut(std::size_t i, std::size_t k) {
+    BallFrame& f = balls_[i];
+    // Its start and contacts up to k; the path's end (k past the last contact: a meet at t = 1) is not printed,
+    // the meet's point is.
+    const std::size_t kept = std::min(k, f.events.size());
+    done_[i].insert(done_[i].end(), f.events.begin(), f.events.begin() + static_cast<std::ptrdiff_t>(kept));
+    committed_[i].insert(committed_[i].end(), f.path.begin(), f.path.begin() + static_cast<std::ptrdiff_t>(kept + 1));
+}
+
+void SweptFrame::restart(std::size_t i, double t, Vec2 x, Vec2 v) {
+    BallFrame& f = balls_[i];
+    Ball ball{x, v, radius(i)};
+    BallMemory memory = f.memory;
+    f.events.clear();
+    scratch_.start = t;
+    f.status = step_ball(k_, ball, memory, obstacles_, f.events, scratch_);
+    scratch_.start = 0.0;
+    f.state = ball;
+    seg_t_[i] = t;
+    seg_vel_[i] = v;
+    meet::build_path(f.path, t, x, f.events, ball.pos);
+    box_[i] = meet::path_box(f.path, radius(i));
+    ++version_[i];
+}
+
+void SweptFrame::hold(std::size_t i, double t) {
+    BallFrame& f = balls_[i];
+    const Vec2 x = f.path.front().p;
+    f.events.clear();
+    if (f.status != FrameStatus::out_of_range) f.status = FrameStatus::ok;
+    f.state = {x, seg_vel_[i], radius(i)};
+    f.path = {{t, x}, {1.0, x}};
+    box_[i] = meet::path_box(f.path, radius(i));
+    ++version_[i];
+}
+
+bool SweptFrame::tied(const Candidate& c) {
+    bool shared = false;
+    std::vector<Candidate> same;
+    while (!heap_.empty()) {
+        const Candidate& next = heap_.front();
+        const bool stale = next.version_a != version_[next.a] || next.version_b != version_[next.b];
+        if (!stale && meet::compare(next.root, c.root) != 0) break;
+        std::pop_heap(heap_.begin(), heap_.end(), meet::later);
+        // The entry just looked at is at the back now.
+        const Candidate& x = heap_.back();
+        if (!stale) {
+            shared = shared || x.a == c.a || x.a == c.b || x.b == c.a || x.b == c.b;
+            same.push_back(std::move(heap_.back()));
+        }
+        heap_.pop_back();
+    }
+    for (Candidate& x : same) {
+        heap_.push_back(std::move(x));
+        std::push_heap(heap_.begin(), heap_.end(), meet::later);
+    }
+    return shared;
+}
+
+void SweptFrame::take(const Candidate& c, bool tied) {
+    const std::uint32_t a = c.a, b = c.b;
+    const meet::Radii S{radius(a), radius(b)};
+    const double lo = std::max(seg_t_[a], seg_t_[b]);
+    // Never before the meet taken last: the frame's meets keep their time order as printed too (the pair's
+    // other meets with balls met since are searched from there on).
+    const double floor = std::max(lo, last_t_);
+    double t = std::clamp(c.root.estimate, floor, 1.0);
+    // The printed centres, no closer than S (exactly): t taken earlier, 1, 2, 4, … ulps, then the floor.
+    Placed last_a, last_b;
+    meet::PointOnPath pa = place(a, t, last_a), pb = place(b, t, last_b);
+    for (double step = std::max(std::fabs(t) * 0x1p-52, 0x1p-1074);
+         t > floor && too_close(a, b, S, lo, t, pa, pb); step *= 2.0) {
+        t = t - step > floor ? t - step : floor;
+        pa = place(a, t, last_a);
+        pb = place(b, t, last_b);
+    }
+    if (t == floor && too_close(a, b, S, lo, t, pa, pb)) nudge(a, b, S, lo, t, pa, pb);
+    Ball ba{pa.x, velocity_on(a, pa.from), radius(a)}, bb{pb.x, velocity_on(b, pb.from), radius(b)};
+    last_t_ = t;
+    MeetRecord record{a, b, t, pa.x, pb.x, ba.vel, bb.vel, {}, {}, false, tied};
+    record.responded = kernel_ops(k_).respond(ba, bb, masses_[a], masses_[b]);
+    record.out_a = ba.vel;
+    record.out_b = bb.vel;
+    meets_.push_back(record);
+    cut(a, pa.from);
+    cut(b, pb.from);
+    done_[a].push_back({b, t, pa.x, false, true, ba.vel});
+    done_[b].push_back({a, t, pb.x, false, true, bb.vel});
+    restart(a, t, pa.x, ba.vel);
+    restart(b, t, pb.x, bb.vel);
+    // The new paths close in at t itself again (rule 6): two balls the scene placed closer than S are searched
+    // past it, from the next printed time on (the start-in-reach rule at the meet itself, its response decided);
+    // two that touch both stay at their centres to the frame's end (far from the origin their rounded ends can
+    // converge where no velocity a double holds keeps them apart).
+    std::optional<meet::Root> again = search(a, b);
+    if (again && again->at_start && meet::compare(*again, t) == 0) {
+        again.reset();
+        if (meet::closer_than(pa.x, pb.x, S)) {
+            const double next = next_printed(a, b, t);
+            if (next > t) again = search(a, b, next);
+        } else {
+            hold(a, t);
+            hold(b, t);
+        }
+    }
+    grid_.insert(a, box_[a]);
+    grid_.insert(b, box_[b]);
+    if (again) push(a, b, std::move(*again));
+    neighbours(a, [&](std::uint32_t k) {
+        if (k != b) consider(std::min(a, k), std::max(a, k));
+    });
+    neighbours(b, [&](std::uint32_t k) {
+        if (k != a) consider(std::min(b, k), std::max(b, k));
+    });
+}
+
+void SweptFrame::finish(std::size_t i) {
+    BallFrame& f = balls_[i];
+    if (done_[i].empty() && committed_[i].empty()) return;
+    done_[i].insert(done_[i].end(), f.events.begin(), f.events.end());
+    f.events.swap(done_[i]);  // (the old lists stay behind, their storage for the next frame)
+    committed_[i].insert(committed_[i].end(), f.path.begin(), f.path.end());
+    f.path.swap(committed_[i]);
+}
+
+}  // namespace ricochet

@@ -1,0 +1,234 @@
+// The swept rule of robust and exact (docs/scene-log.md, "Balls that meet"): one frame's meets in exact time order
+// on the balls' paths, every decision exact (root.hpp). Internal to kernels/meet/: frame.cpp runs it for step_meets;
+// swept_frame.cpp finds and takes the meets, placement.cpp places a meet's centres (rule 4), safe_stop.cpp stops the
+// frame at the bound of meets (rule 7).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "kernels/meet/box_grid.hpp"
+#include "kernels/meet/root.hpp"
+#include "ricochet/kernel.hpp"
+#include "ricochet/meet.hpp"
+#include "ricochet/step.hpp"
+
+namespace ricochet {
+
+/// A meet found between two balls at some version of their paths.
+struct MeetCandidate {
+    std::uint32_t a = 0, b = 0;
+    std::uint32_t version_a = 0, version_b = 0;
+    meet::Root root;
+};
+
+/// The swept rule's arrays, kept between frames (StepScratch::meets).
+struct MeetFrameScratch {
+    std::vector<double> seg_t;
+    std::vector<Vec2> seg_vel;
+    std::vector<std::uint32_t> version;
+    std::vector<std::vector<PathPoint>> committed;
+    std::vector<std::vector<HitEvent>> done;
+    std::vector<meet::Box> box;
+    meet::BoxGrid grid;
+    std::vector<std::uint32_t> seen;
+    std::vector<MeetCandidate> heap;
+    std::vector<PathPoint> cut_a, cut_b;
+    std::vector<PathPoint> full_a, full_b, full_k;
+};
+
+namespace meet {
+
+/// A box around a ball's path, widened by its radius.
+Box path_box(std::span<const PathPoint> path, double R);
+
+/// The path of a step from (t0, p0): its start, each contact at its time (never before the previous one, never
+/// after 1: rounded times), its end at 1.
+void build_path(std::vector<PathPoint>& path, double t0, Vec2 p0, std::span<const HitEvent> hits, Vec2 end);
+
+/// The heap's order: a comes out after b (later time; on an exact tie the higher pair).
+bool later(const MeetCandidate& x, const MeetCandidate& y);
+
+}  // namespace meet
+
+/// The swept rule: meets in exact time order on the balls' paths.
+class SweptFrame {
+public:
+    SweptFrame(KernelId k, const Obstacles& obstacles, std::span<const double> masses, std::span<BallFrame> balls,
+               std::vector<MeetRecord>& meets, StepScratch& scratch, MeetFrameScratch& kept);
+
+    /// The frame: every ball's path, the meets in time order, each ball's whole story.
+    void run();
+
+private:
+    using Candidate = MeetCandidate;
+    using Box = meet::Box;
+
+    double radius(std::size_t i) const { return balls_[i].before.r; }
+
+    // Finding meets (swept_frame.cpp).
+
+    /// Calls f(j) once for every other ball j the grid lists near ball i's box.
+    template <class F>
+    void neighbours(std::uint32_t i, F&& f) {
+        ++stamp_;
+        seen_[i] = stamp_;
+        grid_.query(box_[i], [&](std::uint32_t j) {
+            if (seen_[j] == stamp_) return;
+            seen_[j] = stamp_;
+            f(j);
+        });
+    }
+
+    /// The pair's next meet on the current paths, from `from` (default: the later of their starts) on.
+    std::optional<meet::Root> search(std::uint32_t a, std::uint32_t b, double from = -1.0) const;
+
+    /// The next printed time of either ball's current path after t (1 if none).
+    double next_printed(std::uint32_t a, std::uint32_t b, double t) const;
+
+    void push(std::uint32_t a, std::uint32_t b, meet::Root root) {
+        heap_.push_back({a, b, version_[a], version_[b], std::move(root)});
+        std::push_heap(heap_.begin(), heap_.end(), meet::later);
+    }
+
+    /// Searches the pair's next meet on the current paths and puts it on the heap.
+    void consider(std::uint32_t a, std::uint32_t b) {
+        if (std::optional<meet::Root> root = search(a, b)) push(a, b, std::move(*root));
+    }
+
+    // Placing a meet's centres (placement.cpp).
+
+    /// The last placement of a ball: its path's rounded point and where that point was placed.
+    struct Placed {
+        bool valid = false;
+        meet::PointOnPath raw, at;
+    };
+
+    /// Ball i's centre at frame time t on its current path, placed clear of the walls (walked back toward the
+    /// printed point the piece starts from), and the index of that point. The walk back depends on the rounded point
+    /// alone: where it is the last one's, bit for bit (an earlier t often rounds to the same centre), the last
+    /// placement is the answer.
+    meet::PointOnPath place(std::size_t i, double t, Placed& last);
+
+    /// Would the meet's printed centres at t leave balls a and b closer than S: the centres themselves, or the pieces
+    /// to them from their last printed points (a grazing meet's rounded centres may be apart while the pieces dip)?
+    bool too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, const meet::PointOnPath& pa,
+                   const meet::PointOnPath& pb);
+
+    /// Ball i's current path cut at frame time t, where it would be at centre p: its points up to the one the piece
+    /// holding p starts from, then p at t.
+    void cut_to(std::uint32_t i, const meet::PointOnPath& p, double t, std::vector<PathPoint>& out) const;
+
+    /// Whether a meet of paths a and b is an entry into reach from outside it: a crossing inside its interval, or
+    /// one at the interval's start c where the two touch exactly (two balls already closer than S enter nothing).
+    static bool entered(const meet::Root& m, std::span<const PathPoint> a, std::span<const PathPoint> b,
+                        meet::Radii S) {
+        return !m.at_start || !meet::closer_on_paths(a, b, m.c, S);
+    }
+
+    /// The time a path cut at a meet's centre (too_close) leaves its last printed point: its last piece's start.
+    static double piece_start(const std::vector<PathPoint>& cut) {
+        return cut.size() >= 2 ? cut[cut.size() - 2].t : cut.back().t;
+    }
+
+    /// Ball k's printed path so far, its committed points then `current` (its current path, or that cut at a
+    /// centre), in out where it has committed points.
+    const std::vector<PathPoint>& printed(std::uint32_t k, const std::vector<PathPoint>& current,
+                                          std::vector<PathPoint>& out) const;
+
+    /// The walk back reached its floor t (the pieces' common start lo, or the last meet's time) and the centres still
+    /// leave the balls too close (a centre rounded back onto its ball's last printed point holds that ball still on
+    /// its piece, while the other went by it earlier on a path it has left since): one of the two centres moved to a
+    /// neighbouring double (one ulp in x, y or both) whose piece stays clear of the walls, with which no clause of
+    /// too_close holds and which crowds no third ball (crowds_others), the one nearest its rounded centre, exactly;
+    /// none where two are as near (no choice a mirror image or a renumbering would make the other way), nor where
+    /// none clears.
+    void nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, meet::PointOnPath& pa,
+               meet::PointOnPath& pb);
+
+    /// For nudge: whether ball i's centre moved to `moved` at t (from `rounded`) comes closer than their radii's sum
+    /// to a third ball's point there where the rounded centre did not, or its piece enters a third ball's printed
+    /// path before t. (too_close excuses a third ball the piece's own point at lo was already that close to, which
+    /// is the moved centre itself where the piece starts at lo.)
+    bool crowds_others(std::uint32_t i, std::uint32_t a, std::uint32_t b, const meet::PointOnPath& moved, Vec2 rounded,
+                       double t);
+
+    // Taking a meet (swept_frame.cpp).
+
+    /// The velocity ball i has on the piece of its current path that starts at printed point k.
+    Vec2 velocity_on(std::size_t i, std::size_t k) const;
+
+    /// Ends ball i's current path at (t, x), reached from printed point k: its contacts up to k are kept, its path's
+    /// points up to k committed.
+    void cut(std::size_t i, std::size_t k);
+
+    /// Ball i steps on from x at frame time t with velocity v: a new path.
+    void restart(std::size_t i, double t, Vec2 x, Vec2 v);
+
+    /// Ball i, just stepped on from a meet at frame time t, stays where it starts to the frame's end instead, keeping
+    /// the velocity it left the meet with (docs/scene-log.md, "Balls that meet", 6).
+    void hold(std::size_t i, double t);
+
+    /// True if another meet due now, at c's exact time, shares a ball with c: the heap's next entries at that time
+    /// are looked at (stale ones dropped) and put back.
+    bool tied(const Candidate& c);
+
+    /// Takes meet c (tied: another meet sharing a ball is due at its exact time): its centres placed (rule 4), the
+    /// response (5), both balls stepped on (6), their pairs with their neighbours searched again.
+    void take(const Candidate& c, bool tied);
+
+    /// The frame's whole story of ball i: its committed contacts and points, then its current path's.
+    void finish(std::size_t i);
+
+    // The bound of meets (safe_stop.cpp).
+
+    /// The bound of meets reached: every ball stops where its path is at time t, the last meet's (placed as a meet's
+    /// centre is; no meet was due before it, so no two balls were closer than their R_i + R_j there), keeping the
+    /// velocity it has there. A stop is a rounded point: the piece to it can come within R_i + R_j of another ball's
+    /// path where the ball's own path does not (far out, a ball moving less than an ulp since its last printed point
+    /// prints standing still while another passes where it was). Such a ball, in ball order, is moved to the
+    /// neighbouring double nearest its stop whose piece stays clear of the walls and of every other ball's path to its
+    /// stop (the nearest to its path's exact point there among two as near; none where those tie too, or none clears).
+    void safe_stop(double t);
+
+    /// Ball i's printed path with a stop at p, time t: its committed points, its current path's up to the last
+    /// before the stop, the stop, and the stop again at t = 1.
+    void stop_path(std::uint32_t i, const meet::PointOnPath& p, double t, std::vector<PathPoint>& out) const;
+
+    /// Whether ball i's piece to its stop (from its last printed point, at time s, on its printed path to_stop[i])
+    /// comes within R_i + R_k of another ball k's printed path to its stop from outside it (pass-through's rule: on a
+    /// common interval, at least that far apart at its start and closer within it; one that starts closer is not
+    /// judged).
+    bool stop_enters(std::uint32_t i, double s, const std::vector<std::vector<PathPoint>>& to_stop);
+
+    /// The first time after t at which path a or b has a point (1 if none).
+    static double next_point(std::span<const PathPoint> a, std::span<const PathPoint> b, double t);
+
+    KernelId k_;
+    const Obstacles& obstacles_;
+    std::span<const double> masses_;
+    std::span<BallFrame> balls_;
+    std::vector<MeetRecord>& meets_;
+    StepScratch& scratch_;
+    std::size_t n_;
+    // Kept between frames (MeetFrameScratch), made afresh for this one:
+    std::vector<double>& seg_t_;                     // the frame time each ball's current path starts at
+    std::vector<Vec2>& seg_vel_;                     // the velocity it starts with
+    std::vector<std::uint32_t>& version_;            // bumped when its path changes
+    std::vector<std::vector<PathPoint>>& committed_;  // its path's points before the current path
+    std::vector<std::vector<HitEvent>>& done_;       // its contacts before the current path, meets included
+    std::vector<Box>& box_;
+    meet::BoxGrid& grid_;
+    std::vector<std::uint32_t>& seen_;  // the stamp of the last neighbours() call that listed the ball
+    std::uint32_t stamp_ = 0;
+    std::vector<Candidate>& heap_;
+    std::vector<PathPoint>&cut_a_, &cut_b_;  // the paths to a meet's centres (too_close)
+    std::vector<PathPoint>&full_a_, &full_b_, &full_k_;  // printed paths with their committed points
+    double last_t_ = 0.0;                   // the time of the last meet taken
+};
+
+}  // namespace ricochet
