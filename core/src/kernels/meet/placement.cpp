@@ -1,6 +1,7 @@
 // A meet's centres (swept_frame.hpp; docs/scene-log.md, "Balls that meet", 4): each its path's point at t* rounded
 // and walked back from the walls, t* taken earlier while the centres or the pieces to them come too close to each
 // other or to a third ball, and at the floor one centre moved to a neighbouring double that clears.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -75,11 +76,13 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
                 crowded = apart_at_lo();
                 return;
             }
-            // (Where the ball's own path enters k's reach by t too, k is due at t as well, a tie, not a graze
-            // the rounding made: the ties' rule takes it.)
+            // (Where the ball's own path enters k's reach at t too, k is due at t as well, a tie, not a graze
+            // the rounding made: the ties' rule takes it. Where it enters before t — a tie at t*, t rounded past
+            // it — the piece printed to t would hold the ball in k's way after k is due: t is taken earlier.)
             const std::optional<meet::Root> entry = meet::first_meet(piece, path, Sk, lo, {}, {}, t);
             if (!entry || meet::compare(*entry, t) >= 0) return;
-            if (!meet::first_meet(balls_[i].path, path, Sk, lo, {}, {}, t)) crowded = apart_at_lo();
+            const std::optional<meet::Root> own = meet::first_meet(balls_[i].path, path, Sk, lo, {}, {}, t);
+            if (!own || meet::compare(*own, t) < 0) crowded = apart_at_lo();
         });
     }
     return crowded;
@@ -136,28 +139,32 @@ void SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double l
                                  dx * Rational(w.x) + dy * Rational(w.y)});
             }
     }
-    // Past the distance from the rounded centre only where the rounded centres themselves overlap.
+    // The nearest; among several as near, none — but where the rounded centres themselves overlap, the first by the
+    // order above, and where two tie on all of it too, the next distance out (a mirror image or a renumbering of the
+    // balls makes the same choice).
     const bool overlap = meet::closer_than(pa.x, pb.x, S);
-    const auto order = [overlap](const Clear& x, const Clear& y) {
+    const auto order = [](const Clear& x, const Clear& y) {
         if (x.d2 != y.d2) return x.d2 < y.d2 ? -1 : 1;
-        if (!overlap) return 0;
         if (x.e2 != y.e2) return x.e2 < y.e2 ? -1 : 1;
         if (x.jump != y.jump) return x.jump ? 1 : -1;
         if (x.along != y.along) return x.along < y.along ? -1 : 1;
         return 0;
     };
-    const Clear* best = nullptr;
-    bool tie = false;
-    for (const Clear& x : clear) {
-        const int o = best ? order(x, *best) : -1;
-        if (o < 0) {
-            best = &x;
-            tie = false;
-        } else if (o == 0) {
-            tie = true;
+    std::sort(clear.begin(), clear.end(), [&](const Clear& x, const Clear& y) { return order(x, y) < 0; });
+    for (std::size_t k = 0; k < clear.size(); ++k) {
+        const bool as_near = k + 1 < clear.size() && clear[k + 1].d2 == clear[k].d2;
+        if (!as_near) {
+            (clear[k].on_a ? pa : pb).x = clear[k].c;
+            return;
         }
+        if (!overlap) return;
+        if (order(clear[k], clear[k + 1]) != 0) {
+            (clear[k].on_a ? pa : pb).x = clear[k].c;
+            return;
+        }
+        // A tie on everything: past every candidate at this distance.
+        while (k + 1 < clear.size() && clear[k + 1].d2 == clear[k].d2) ++k;
     }
-    if (best && !tie) (best->on_a ? pa : pb).x = best->c;
 }
 
 bool SweptFrame::crowds_others(std::uint32_t i, std::uint32_t a, std::uint32_t b, const meet::PointOnPath& moved,

@@ -146,7 +146,8 @@ private:
     /// neighbouring double (one ulp in x, y or both) whose piece stays clear of the walls, with which no clause of
     /// too_close holds and which crowds no third ball (crowds_others), the one nearest its rounded centre, exactly;
     /// none where two are as near (no choice a mirror image or a renumbering would make the other way), nor where
-    /// none clears.
+    /// none clears — except where the rounded centres themselves overlap: there ties go on to the nearest to the
+    /// ball's exact point, then by a later piece start, then back along the approach, then to the next distance out.
     void nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, meet::PointOnPath& pa,
                meet::PointOnPath& pb);
 
