@@ -14,6 +14,20 @@
 #include "ricochet/bits.hpp"
 
 namespace ricochet {
+namespace {
+
+/// x moved n doubles up (n > 0) or down (n < 0).
+double ulps_from(double x, int n) {
+    for (; n > 0; --n) x = std::nextafter(x, HUGE_VAL);
+    for (; n < 0; ++n) x = std::nextafter(x, -HUGE_VAL);
+    return x;
+}
+
+/// How many rings of neighbouring doubles a nudge of overlapping centres tries (docs/scene-log.md, "Balls that
+/// meet", 4).
+constexpr int k_nudge_rings = 3;
+
+}  // namespace
 
 meet::PointOnPath SweptFrame::place(std::size_t i, double t, Placed& last) {
     const std::vector<PathPoint>& path = balls_[i].path;
@@ -117,31 +131,8 @@ void SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double l
         bool jump;
         Rational along;
     };
-    std::vector<Clear> clear;
-    for (const bool on_a : {true, false}) {
-        const meet::PointOnPath& p = on_a ? pa : pb;
-        const std::uint32_t i = on_a ? a : b;
-        const Vec2 q = balls_[i].path[p.from].p;
-        const Vec2 w = velocity_on(i, p.from) - velocity_on(on_a ? b : a, (on_a ? pb : pa).from);
-        const auto [ex, ey] = meet::exact_point(balls_[i].path, t);
-        for (const double sx : {-1.0, 0.0, 1.0})
-            for (const double sy : {-1.0, 0.0, 1.0}) {
-                const Vec2 c{sx == 0.0 ? p.x.x : std::nextafter(p.x.x, sx * HUGE_VAL),
-                             sy == 0.0 ? p.x.y : std::nextafter(p.x.y, sy * HUGE_VAL)};
-                if (c == p.x || !std::isfinite(c.x) || !std::isfinite(c.y)) continue;
-                if (c != q && !same_bits(disc::walk_back(q, c, radius(i), obstacles_, scratch_), c)) continue;
-                const meet::PointOnPath moved{c, p.from};
-                if (too_close(a, b, S, lo, t, on_a ? moved : pa, on_a ? pb : moved)) continue;
-                if (crowds_others(i, a, b, moved, p.x, t)) continue;
-                const Rational dx = Rational(c.x) - Rational(p.x.x), dy = Rational(c.y) - Rational(p.x.y);
-                const Rational fx = Rational(c.x) - ex, fy = Rational(c.y) - ey;
-                clear.push_back({on_a, c, dx * dx + dy * dy, fx * fx + fy * fy, balls_[i].path[p.from].t == t,
-                                 dx * Rational(w.x) + dy * Rational(w.y)});
-            }
-    }
-    // The nearest; among several as near, none — but where the rounded centres themselves overlap, the first by the
-    // order above, and where two tie on all of it too, the next distance out (a mirror image or a renumbering of the
-    // balls makes the same choice).
+    // Where the rounded centres themselves overlap, the ring of doubles 2, then 3 ulps out is tried after the
+    // first (a meet far out among balls whose rounded centres crowd every neighbouring double).
     const bool overlap = meet::closer_than(pa.x, pb.x, S);
     const auto order = [](const Clear& x, const Clear& y) {
         if (x.d2 != y.d2) return x.d2 < y.d2 ? -1 : 1;
@@ -150,20 +141,44 @@ void SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double l
         if (x.along != y.along) return x.along < y.along ? -1 : 1;
         return 0;
     };
-    std::sort(clear.begin(), clear.end(), [&](const Clear& x, const Clear& y) { return order(x, y) < 0; });
-    for (std::size_t k = 0; k < clear.size(); ++k) {
-        const bool as_near = k + 1 < clear.size() && clear[k + 1].d2 == clear[k].d2;
-        if (!as_near) {
-            (clear[k].on_a ? pa : pb).x = clear[k].c;
-            return;
+    std::vector<Clear> clear;
+    for (int ring = 1; ring <= (overlap ? k_nudge_rings : 1); ++ring) {
+        clear.clear();
+        for (const bool on_a : {true, false}) {
+            const meet::PointOnPath& p = on_a ? pa : pb;
+            const std::uint32_t i = on_a ? a : b;
+            const Vec2 q = balls_[i].path[p.from].p;
+            const Vec2 w = velocity_on(i, p.from) - velocity_on(on_a ? b : a, (on_a ? pb : pa).from);
+            const auto [ex, ey] = meet::exact_point(balls_[i].path, t);
+            for (int sx = -ring; sx <= ring; ++sx)
+                for (int sy = -ring; sy <= ring; ++sy) {
+                    if (std::max(std::abs(sx), std::abs(sy)) != ring) continue;
+                    const Vec2 c{ulps_from(p.x.x, sx), ulps_from(p.x.y, sy)};
+                    if (!std::isfinite(c.x) || !std::isfinite(c.y)) continue;
+                    if (c != q && !same_bits(disc::walk_back(q, c, radius(i), obstacles_, scratch_), c)) continue;
+                    const meet::PointOnPath moved{c, p.from};
+                    if (too_close(a, b, S, lo, t, on_a ? moved : pa, on_a ? pb : moved)) continue;
+                    if (crowds_others(i, a, b, moved, p.x, t)) continue;
+                    const Rational dx = Rational(c.x) - Rational(p.x.x), dy = Rational(c.y) - Rational(p.x.y);
+                    const Rational fx = Rational(c.x) - ex, fy = Rational(c.y) - ey;
+                    clear.push_back({on_a, c, dx * dx + dy * dy, fx * fx + fy * fy, balls_[i].path[p.from].t == t,
+                                     dx * Rational(w.x) + dy * Rational(w.y)});
+                }
         }
-        if (!overlap) return;
-        if (order(clear[k], clear[k + 1]) != 0) {
-            (clear[k].on_a ? pa : pb).x = clear[k].c;
-            return;
+        // The nearest; among several as near, none — but where the rounded centres themselves overlap, the first by
+        // the order above, and where two tie on all of it too, the next distance out (a mirror image or a
+        // renumbering of the balls makes the same choice).
+        std::sort(clear.begin(), clear.end(), [&](const Clear& x, const Clear& y) { return order(x, y) < 0; });
+        for (std::size_t k = 0; k < clear.size(); ++k) {
+            const bool as_near = k + 1 < clear.size() && clear[k + 1].d2 == clear[k].d2;
+            if (!as_near || (overlap && order(clear[k], clear[k + 1]) != 0)) {
+                (clear[k].on_a ? pa : pb).x = clear[k].c;
+                return;
+            }
+            if (!overlap) return;
+            // A tie on everything: past every candidate at this distance.
+            while (k + 1 < clear.size() && clear[k + 1].d2 == clear[k].d2) ++k;
         }
-        // A tie on everything: past every candidate at this distance.
-        while (k + 1 < clear.size() && clear[k + 1].d2 == clear[k].d2) ++k;
     }
 }
 

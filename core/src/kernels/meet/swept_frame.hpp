@@ -147,7 +147,8 @@ private:
     /// too_close holds and which crowds no third ball (crowds_others), the one nearest its rounded centre, exactly;
     /// none where two are as near (no choice a mirror image or a renumbering would make the other way), nor where
     /// none clears — except where the rounded centres themselves overlap: there ties go on to the nearest to the
-    /// ball's exact point, then by a later piece start, then back along the approach, then to the next distance out.
+    /// ball's exact point, then by a later piece start, then back along the approach, then to the next distance out,
+    /// and where no neighbouring double clears, the doubles 2, then 3 ulps out are tried the same way.
     void nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, meet::PointOnPath& pa,
                meet::PointOnPath& pb);
 
