@@ -70,6 +70,7 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
         // judged against the third balls then.
         const PathPoint& start = balls_[i].path.front();
         if (start.t == t && same_bits(start.p, x)) continue;
+        if (enters_before(i, a, b, piece, lo)) return true;
         neighbours(i, [&](std::uint32_t k) {
             const meet::Radii Sk{radius(i), radius(k)};
             const std::vector<PathPoint>& path = balls_[k].path;
@@ -131,9 +132,16 @@ void SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double l
         bool jump;
         Rational along;
     };
-    // Where the rounded centres themselves overlap, the ring of doubles 2, then 3 ulps out is tried after the
-    // first (a meet far out among balls whose rounded centres crowd every neighbouring double).
-    const bool overlap = meet::closer_than(pa.x, pb.x, S);
+    // Which one (docs/scene-log.md, "Balls that meet", 4): the nearest; among several as near, none — unless the
+    // rounded centres overlap or a piece to them would pass through a third ball as printed (what ball-overlap and
+    // pass-through see): then the first by the order above; where the first two tie on all of it, and a piece
+    // passes through a third ball, the first that ties with none (a mirror image maps a tied pair onto itself, and
+    // that one onto itself), else the next distance out; and where none is taken, the rings of doubles 2, then 3
+    // ulps out (a meet far out among balls whose rounded centres crowd every neighbouring double).
+    cut_to(a, pa, t, cut_a_);
+    cut_to(b, pb, t, cut_b_);
+    const bool passes = enters_before(a, a, b, cut_a_, t) || enters_before(b, a, b, cut_b_, t);
+    const bool overlap = meet::closer_than(pa.x, pb.x, S) || passes;
     const auto order = [](const Clear& x, const Clear& y) {
         if (x.d2 != y.d2) return x.d2 < y.d2 ? -1 : 1;
         if (x.e2 != y.e2) return x.e2 < y.e2 ? -1 : 1;
@@ -165,21 +173,45 @@ void SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double l
                                      dx * Rational(w.x) + dy * Rational(w.y)});
                 }
         }
-        // The nearest; among several as near, none — but where the rounded centres themselves overlap, the first by
-        // the order above, and where two tie on all of it too, the next distance out (a mirror image or a
-        // renumbering of the balls makes the same choice).
         std::sort(clear.begin(), clear.end(), [&](const Clear& x, const Clear& y) { return order(x, y) < 0; });
-        for (std::size_t k = 0; k < clear.size(); ++k) {
-            const bool as_near = k + 1 < clear.size() && clear[k + 1].d2 == clear[k].d2;
-            if (!as_near || (overlap && order(clear[k], clear[k + 1]) != 0)) {
+        for (std::size_t k = 0; k < clear.size();) {
+            std::size_t end = k + 1;  // the candidates as near as clear[k]
+            while (end < clear.size() && clear[end].d2 == clear[k].d2) ++end;
+            if (end == k + 1) {
                 (clear[k].on_a ? pa : pb).x = clear[k].c;
                 return;
             }
             if (!overlap) return;
-            // A tie on everything: past every candidate at this distance.
-            while (k + 1 < clear.size() && clear[k + 1].d2 == clear[k].d2) ++k;
+            if (order(clear[k], clear[k + 1]) != 0) {
+                (clear[k].on_a ? pa : pb).x = clear[k].c;
+                return;
+            }
+            for (std::size_t m = k; passes && m < end; ++m) {
+                const bool tied = (m > k && order(clear[m - 1], clear[m]) == 0) ||
+                                  (m + 1 < end && order(clear[m], clear[m + 1]) == 0);
+                if (!tied) {
+                    (clear[m].on_a ? pa : pb).x = clear[m].c;
+                    return;
+                }
+            }
+            k = end;
         }
     }
+}
+
+bool SweptFrame::enters_before(std::uint32_t i, std::uint32_t a, std::uint32_t b, const std::vector<PathPoint>& cut,
+                               double until) {
+    const double from = piece_start(cut);
+    if (!(from < until)) return false;
+    bool enters = false;
+    neighbours(i, [&](std::uint32_t k) {
+        const meet::Radii Sk{radius(i), radius(k)};
+        if (enters || k == a || k == b || !(Sk.rounded() > 0.0)) return;
+        const std::vector<PathPoint>&fi = printed(i, cut, full_a_), &fk = printed(k, balls_[k].path, full_k_);
+        const std::optional<meet::Root> e = meet::first_meet(fi, fk, Sk, from, {}, {}, until);
+        enters = e && meet::compare(*e, until) < 0 && entered(*e, fi, fk, Sk);
+    });
+    return enters;
 }
 
 bool SweptFrame::crowds_others(std::uint32_t i, std::uint32_t a, std::uint32_t b, const meet::PointOnPath& moved,

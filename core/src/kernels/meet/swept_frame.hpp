@@ -146,11 +146,19 @@ private:
     /// neighbouring double (one ulp in x, y or both) whose piece stays clear of the walls, with which no clause of
     /// too_close holds and which crowds no third ball (crowds_others), the one nearest its rounded centre, exactly;
     /// none where two are as near (no choice a mirror image or a renumbering would make the other way), nor where
-    /// none clears — except where the rounded centres themselves overlap: there ties go on to the nearest to the
-    /// ball's exact point, then by a later piece start, then back along the approach, then to the next distance out,
-    /// and where no neighbouring double clears, the doubles 2, then 3 ulps out are tried the same way.
+    /// none clears — except where the rounded centres themselves overlap or a piece to them would pass through a
+    /// third ball as printed: there ties go on to the nearest to the ball's exact point, then by a later piece start,
+    /// then back along the approach, then (where a piece passes through a third ball) to the first tied with none,
+    /// else to the next distance out, and where none is taken, the doubles 2, then 3 ulps out are tried the same way.
     void nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, meet::PointOnPath& pa,
                meet::PointOnPath& pb);
+
+    /// Whether the piece to ball i's centre (cut: its current path cut there), where it starts before `until`,
+    /// enters the printed path of a ball other than a and b from outside its reach before `until`: pass-through's
+    /// rule (too_close asks it before lo, of a piece that starts before the other ball of the meet stepped on, as it
+    /// asks it of a and b; nudge before t, where it decides how a tie is broken).
+    bool enters_before(std::uint32_t i, std::uint32_t a, std::uint32_t b, const std::vector<PathPoint>& cut,
+                       double until);
 
     /// For nudge: whether ball i's centre moved to `moved` at t (from `rounded`) comes closer than their radii's sum
     /// to a third ball's point there where the rounded centre did not, or its piece enters a third ball's printed
