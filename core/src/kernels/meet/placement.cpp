@@ -80,12 +80,10 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
             // balls are excused only where both have them closer than that (placed so by the scene). k's first
             // point stands for it where its path starts later.
             const auto apart_at_lo = [&] {
-                const Vec2 own = meet::point_at(balls_[i].path, lo).x;
-                if (path.front().t > lo)
-                    return !meet::closer_than(meet::point_at(piece, lo).x, path.front().p, Sk) ||
-                           !meet::closer_than(own, path.front().p, Sk);
-                return !meet::closer_on_paths(piece, path, lo, Sk) ||
-                       !meet::closer_than(own, meet::point_at(path, lo).x, Sk);
+                const double at = std::max(lo, path.front().t);
+                const Vec2 own = meet::point_at(balls_[i].path, at).x;
+                return !meet::closer_on_paths(piece, path, at, Sk) ||
+                       !meet::closer_than(own, meet::point_at(path, at).x, Sk);
             };
             if (!meet::surely_apart(x, path, t, Sk) && meet::closer_than(x, meet::point_at(path, t).x, Sk)) {
                 crowded = apart_at_lo();
