@@ -30,6 +30,7 @@
 #include "base/bignum.hpp"
 #include "kernels/candidates.hpp"
 #include "kernels/disc/contact.hpp"
+#include "kernels/disc/neighbours.hpp"
 #include "ricochet/step_trace.hpp"
 
 namespace ricochet {
@@ -106,24 +107,20 @@ std::optional<Vec2> nearest_allowed_neighbour(Vec2 q, Vec2 x, Vec2 d, double R, 
     std::optional<Vec2> best;
     Rational best_across, best_along;
     bool tied = false;
-    for (const double sx : {-1.0, 0.0, 1.0})
-        for (const double sy : {-1.0, 0.0, 1.0}) {
-            const Vec2 c{sx == 0.0 ? x.x : std::nextafter(x.x, sx * HUGE_VAL),
-                         sy == 0.0 ? x.y : std::nextafter(x.y, sy * HUGE_VAL)};
-            if (c == x || !std::isfinite(c.x) || !std::isfinite(c.y) || !piece_allowed(q, c, R, obstacles, scratch))
-                continue;
-            const Rational ux = bignum::rational(c.x) - qx, uy = bignum::rational(c.y) - qy;
-            // |(c − q) × d|, compared by its square.
-            const Rational cross = ux * dy - uy * dx, across = cross * cross, along = ux * dx + uy * dy;
-            if (!best || across < best_across || (across == best_across && along > best_along)) {
-                best = c;
-                best_across = across;
-                best_along = along;
-                tied = false;
-            } else if (across == best_across && along == best_along) {
-                tied = true;
-            }
+    for_each_on_ring(x, 1, [&](Vec2 c) {
+        if (!piece_allowed(q, c, R, obstacles, scratch)) return;
+        const Rational ux = bignum::rational(c.x) - qx, uy = bignum::rational(c.y) - qy;
+        // |(c − q) × d|, compared by its square.
+        const Rational cross = ux * dy - uy * dx, across = cross * cross, along = ux * dx + uy * dy;
+        if (!best || across < best_across || (across == best_across && along > best_along)) {
+            best = c;
+            best_across = across;
+            best_along = along;
+            tied = false;
+        } else if (across == best_across && along == best_along) {
+            tied = true;
         }
+    });
     return tied ? std::nullopt : best;
 }
 

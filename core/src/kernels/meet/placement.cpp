@@ -6,22 +6,17 @@
 #include <cstdint>
 #include <optional>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "base/bignum.hpp"
 #include "kernels/disc/frame.hpp"
+#include "kernels/disc/neighbours.hpp"
 #include "kernels/meet/swept_frame.hpp"
 #include "ricochet/bits.hpp"
 
 namespace ricochet {
 namespace {
-
-/// x moved n doubles up (n > 0) or down (n < 0).
-double ulps_from(double x, int n) {
-    for (; n > 0; --n) x = std::nextafter(x, HUGE_VAL);
-    for (; n < 0; ++n) x = std::nextafter(x, -HUGE_VAL);
-    return x;
-}
 
 /// How many rings of neighbouring doubles a nudge of overlapping centres tries (docs/scene-log.md, "Balls that
 /// meet", 4).
@@ -155,21 +150,17 @@ void SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double l
             const std::uint32_t i = on_a ? a : b;
             const Vec2 q = balls_[i].path[p.from].p;
             const Vec2 w = velocity_on(i, p.from) - velocity_on(on_a ? b : a, (on_a ? pb : pa).from);
-            const auto [ex, ey] = meet::exact_point(balls_[i].path, t);
-            for (int sx = -ring; sx <= ring; ++sx)
-                for (int sy = -ring; sy <= ring; ++sy) {
-                    if (std::max(std::abs(sx), std::abs(sy)) != ring) continue;
-                    const Vec2 c{ulps_from(p.x.x, sx), ulps_from(p.x.y, sy)};
-                    if (!std::isfinite(c.x) || !std::isfinite(c.y)) continue;
-                    if (c != q && !same_bits(disc::walk_back(q, c, radius(i), obstacles_, scratch_), c)) continue;
-                    const meet::PointOnPath moved{c, p.from};
-                    if (too_close(a, b, S, lo, t, on_a ? moved : pa, on_a ? pb : moved)) continue;
-                    if (crowds_others(i, a, b, moved, p.x, t)) continue;
-                    const Rational dx = Rational(c.x) - Rational(p.x.x), dy = Rational(c.y) - Rational(p.x.y);
-                    const Rational fx = Rational(c.x) - ex, fy = Rational(c.y) - ey;
-                    clear.push_back({on_a, c, dx * dx + dy * dy, fx * fx + fy * fy, balls_[i].path[p.from].t == t,
-                                     dx * Rational(w.x) + dy * Rational(w.y)});
-                }
+            const std::pair<bignum::Rational, bignum::Rational> exact = meet::exact_point(balls_[i].path, t);
+            for_each_on_ring(p.x, ring, [&](Vec2 c) {
+                if (c != q && !same_bits(disc::walk_back(q, c, radius(i), obstacles_, scratch_), c)) return;
+                const meet::PointOnPath moved{c, p.from};
+                if (too_close(a, b, S, lo, t, on_a ? moved : pa, on_a ? pb : moved)) return;
+                if (crowds_others(i, a, b, moved, p.x, t)) return;
+                const Rational dx = Rational(c.x) - Rational(p.x.x), dy = Rational(c.y) - Rational(p.x.y);
+                const Rational fx = Rational(c.x) - exact.first, fy = Rational(c.y) - exact.second;
+                clear.push_back({on_a, c, dx * dx + dy * dy, fx * fx + fy * fy, balls_[i].path[p.from].t == t,
+                                 dx * Rational(w.x) + dy * Rational(w.y)});
+            });
         }
         std::sort(clear.begin(), clear.end(), [&](const Clear& x, const Clear& y) { return order(x, y) < 0; });
         for (std::size_t k = 0; k < clear.size();) {

@@ -11,6 +11,7 @@
 
 #include "base/bignum.hpp"
 #include "kernels/disc/frame.hpp"
+#include "kernels/disc/neighbours.hpp"
 #include "kernels/meet/swept_frame.hpp"
 #include "ricochet/bits.hpp"
 
@@ -32,33 +33,29 @@ void SweptFrame::safe_stop(double t) {
         if (!stop_enters(i, s, to_stop)) continue;
         using bignum::Rational;
         const Vec2 x = at[i].x, q = balls_[i].path[at[i].from].p;
-        const auto [ex, ey] = meet::exact_point(balls_[i].path, when[i]);
+        const std::pair<bignum::Rational, bignum::Rational> exact = meet::exact_point(balls_[i].path, when[i]);
         std::optional<Vec2> best;
         Rational best_d2, best_e2;
         bool tie = false;
-        for (const double sx : {-1.0, 0.0, 1.0})
-            for (const double sy : {-1.0, 0.0, 1.0}) {
-                const Vec2 c{sx == 0.0 ? x.x : std::nextafter(x.x, sx * HUGE_VAL),
-                             sy == 0.0 ? x.y : std::nextafter(x.y, sy * HUGE_VAL)};
-                if (c == x || !std::isfinite(c.x) || !std::isfinite(c.y)) continue;
-                if (c != q && !same_bits(disc::walk_back(q, c, radius(i), obstacles_, scratch_), c)) continue;
-                stop_path(i, {c, at[i].from}, when[i], moved);
-                std::swap(moved, to_stop[i]);
-                const bool enters = stop_enters(i, s, to_stop);
-                std::swap(moved, to_stop[i]);
-                if (enters) continue;
-                const Rational dx = Rational(c.x) - Rational(x.x), dy = Rational(c.y) - Rational(x.y);
-                const Rational fx = Rational(c.x) - ex, fy = Rational(c.y) - ey;
-                const Rational d2 = dx * dx + dy * dy, e2 = fx * fx + fy * fy;
-                if (!best || d2 < best_d2 || (d2 == best_d2 && e2 < best_e2)) {
-                    best = c;
-                    best_d2 = d2;
-                    best_e2 = e2;
-                    tie = false;
-                } else if (d2 == best_d2 && e2 == best_e2) {
-                    tie = true;
-                }
+        for_each_on_ring(x, 1, [&](Vec2 c) {
+            if (c != q && !same_bits(disc::walk_back(q, c, radius(i), obstacles_, scratch_), c)) return;
+            stop_path(i, {c, at[i].from}, when[i], moved);
+            std::swap(moved, to_stop[i]);
+            const bool enters = stop_enters(i, s, to_stop);
+            std::swap(moved, to_stop[i]);
+            if (enters) return;
+            const Rational dx = Rational(c.x) - Rational(x.x), dy = Rational(c.y) - Rational(x.y);
+            const Rational fx = Rational(c.x) - exact.first, fy = Rational(c.y) - exact.second;
+            const Rational d2 = dx * dx + dy * dy, e2 = fx * fx + fy * fy;
+            if (!best || d2 < best_d2 || (d2 == best_d2 && e2 < best_e2)) {
+                best = c;
+                best_d2 = d2;
+                best_e2 = e2;
+                tie = false;
+            } else if (d2 == best_d2 && e2 == best_e2) {
+                tie = true;
             }
+        });
         if (!best || tie) continue;
         at[i].x = *best;
         stop_path(i, at[i], when[i], to_stop[i]);
