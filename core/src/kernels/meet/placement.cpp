@@ -70,10 +70,10 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
             const meet::Radii Sk{radius(i), radius(k)};
             const std::vector<PathPoint>& path = balls_[k].path;
             if (crowded || k == a || k == b || !(Sk.rounded() > 0.0) || path.front().t > t) return;
-            // Apart at lo, as the printed paths put them (the piece to the centre, which may start before lo,
-            // and k's path, their exact points) or as the ball's own path does (its point there, rounded): two
-            // balls are excused only where both have them closer than that (placed so by the scene). k's first
-            // point stands for it where its path starts later.
+            // Apart at lo — or where k's path starts later, there — as the printed paths put them (the piece to
+            // the centre, which may start before lo, and k's path, their exact points) or as the ball's own path
+            // does (its point there, rounded): two balls are excused only where both have them closer than that
+            // (placed so by the scene).
             const auto apart_at_lo = [&] {
                 const double at = std::max(lo, path.front().t);
                 const Vec2 own = meet::point_at(balls_[i].path, at).x;
