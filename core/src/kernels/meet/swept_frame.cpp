@@ -71,14 +71,7 @@ std::optional<meet::Root> SweptFrame::search(std::uint32_t a, std::uint32_t b, d
 }
 
 double SweptFrame::next_printed(std::uint32_t a, std::uint32_t b, double t) const {
-    double next = 1.0;
-    for (const std::uint32_t i : {a, b})
-        for (const PathPoint& q : balls_[i].path)
-            if (q.t > t) {
-                next = std::min(next, q.t);
-                break;
-            }
-    return next;
+    return next_point(balls_[a].path, balls_[b].path, t);
 }
 
 Vec2 SweptFrame::velocity_on(std::size_t i, std::size_t k) const {
