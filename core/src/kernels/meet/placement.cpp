@@ -37,21 +37,11 @@ meet::PointOnPath SweptFrame::place(std::size_t i, double t, Placed& last) {
 }
 
 bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t,
-                           const meet::PointOnPath& pa, const meet::PointOnPath& pb) {
-    if (meet::closer_than(pa.x, pb.x, S)) return true;
+                           const meet::PointOnPath& pa, const meet::PointOnPath& pb, bool apart) {
+    if (apart && meet::closer_than(pa.x, pb.x, S)) return true;
     cut_to(a, pa, t, cut_a_);
     cut_to(b, pb, t, cut_b_);
-    // An entry before t on the pieces that end at the centres (one at t itself is the meet).
-    const std::optional<meet::Root> r = meet::first_meet(cut_a_, cut_b_, S, lo, {}, {}, t);
-    if (r && meet::compare(*r, t) < 0) return true;
-    // A piece to a rounded centre starts at its ball's last printed point, which may lie before lo, where the
-    // other ball was on a path it has left since: there, an entry of that piece into the other's printed path.
-    const double s = std::min(piece_start(cut_a_), piece_start(cut_b_));
-    if (s < lo) {
-        const std::vector<PathPoint>&fa = printed(a, cut_a_, full_a_), &fb = printed(b, cut_b_, full_b_);
-        const std::optional<meet::Root> e = meet::first_meet(fa, fb, S, s, {}, {}, lo);
-        if (e && meet::compare(*e, lo) < 0 && entered(*e, fa, fb, S)) return true;
-    }
+    if (pieces_enter(a, b, S, lo, t, apart)) return true;
     // A third ball k (three balls meeting at one time, or a graze the rounded centre makes): the centre must not
     // be closer to k's point at t, rounded where k's path puts it, than their radii's sum, nor the piece to the
     // centre enter k's reach at or after lo (touching k there and approaching) and before t where the ball's own
@@ -65,7 +55,7 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
         // judged against the third balls then.
         const PathPoint& start = balls_[i].path.front();
         if (start.t == t && same_bits(start.p, x)) continue;
-        if (enters_before(i, a, b, piece, lo)) return true;
+        if (enters_before(i, a, b, piece, lo, t)) return true;
         neighbours(i, [&](std::uint32_t k) {
             const meet::Radii Sk{radius(i), radius(k)};
             const std::vector<PathPoint>& path = balls_[k].path;
@@ -99,8 +89,24 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
 void SweptFrame::cut_to(std::uint32_t i, const meet::PointOnPath& p, double t, std::vector<PathPoint>& out) const {
     const std::vector<PathPoint>& path = balls_[i].path;
     out.assign(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(p.from + 1));
+    // A centre at the time of a printed point (the path's start, a meet's centre or the frame's; a hit or bump) moved
+    // off it is a jump after it: the point stays (the piece before it ends there). Only the path's end is no print.
     if (out.back().t < t) out.push_back({t, p.x});
-    else out.back().p = p.x;
+    else if (p.from > balls_[i].events.size() || same_bits(out.back().p, p.x)) out.back().p = p.x;
+    else out.push_back({t, p.x});
+}
+
+bool SweptFrame::pieces_enter(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, bool any) {
+    // An entry before t on the pieces that end at the centres (one at t itself is the meet).
+    const std::optional<meet::Root> r = meet::first_meet(cut_a_, cut_b_, S, lo, {}, {}, t);
+    if (r && meet::compare(*r, t) < 0 && (any || entered(*r, cut_a_, cut_b_, S))) return true;
+    // A piece to a rounded centre starts at its ball's last printed point, which may lie before lo, where the
+    // other ball was on a path it has left since: there, an entry of that piece into the other's printed path.
+    const double s = std::min(piece_start(cut_a_), piece_start(cut_b_));
+    if (!(s < lo)) return false;
+    const std::vector<PathPoint>&fa = printed(a, cut_a_, full_a_), &fb = printed(b, cut_b_, full_b_);
+    const std::optional<meet::Root> e = meet::first_meet(fa, fb, S, s, {}, {}, lo);
+    return e && meet::compare(*e, lo) < 0 && entered(*e, fa, fb, S);
 }
 
 const std::vector<PathPoint>& SweptFrame::printed(std::uint32_t k, const std::vector<PathPoint>& current,
@@ -111,8 +117,13 @@ const std::vector<PathPoint>& SweptFrame::printed(std::uint32_t k, const std::ve
     return out;
 }
 
-void SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, meet::PointOnPath& pa,
-                       meet::PointOnPath& pb) {
+bool SweptFrame::placed_in_reach(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo) const {
+    const std::vector<PathPoint>&pa = balls_[a].path, &pb = balls_[b].path;
+    return meet::closer_on_paths(pa, pb, lo, S) && meet::closer_than(meet::point_at(pa, lo).x, meet::point_at(pb, lo).x, S);
+}
+
+bool SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, meet::PointOnPath& pa,
+                       meet::PointOnPath& pb, bool apart) {
     using bignum::Rational;
     // Every candidate that clears, with what chooses among them: its exact squared distance from its rounded
     // centre, then from its ball's exact centre at t (the point the rounded one rounds), then whether its piece
@@ -131,10 +142,8 @@ void SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double l
     // passes through a third ball, the first that ties with none (a mirror image maps a tied pair onto itself, and
     // that one onto itself), else the next distance out; and where none is taken, the rings of doubles 2, then 3
     // ulps out (a meet far out among balls whose rounded centres crowd every neighbouring double).
-    cut_to(a, pa, t, cut_a_);
-    cut_to(b, pb, t, cut_b_);
-    const bool passes = enters_before(a, a, b, cut_a_, t) || enters_before(b, a, b, cut_b_, t);
-    const bool overlap = meet::closer_than(pa.x, pb.x, S) || passes;
+    const bool through = passes(a, b, S, lo, t, pa, pb, false);
+    const bool overlap = (apart && meet::closer_than(pa.x, pb.x, S)) || through;
     const auto order = [](const Clear& x, const Clear& y) {
         if (x.d2 != y.d2) return x.d2 < y.d2 ? -1 : 1;
         if (x.e2 != y.e2) return x.e2 < y.e2 ? -1 : 1;
@@ -154,7 +163,7 @@ void SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double l
             for_each_on_ring(p.x, ring, [&](Vec2 c) {
                 if (c != q && !same_bits(disc::walk_back(q, c, radius(i), obstacles_, scratch_), c)) return;
                 const meet::PointOnPath moved{c, p.from};
-                if (too_close(a, b, S, lo, t, on_a ? moved : pa, on_a ? pb : moved)) return;
+                if (too_close(a, b, S, lo, t, on_a ? moved : pa, on_a ? pb : moved, apart)) return;
                 if (crowds_others(i, a, b, moved, p.x, t)) return;
                 const Rational dx = Rational(c.x) - Rational(p.x.x), dy = Rational(c.y) - Rational(p.x.y);
                 const Rational fx = Rational(c.x) - exact.first, fy = Rational(c.y) - exact.second;
@@ -168,37 +177,51 @@ void SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double l
             while (end < clear.size() && clear[end].d2 == clear[k].d2) ++end;
             if (end == k + 1) {
                 (clear[k].on_a ? pa : pb).x = clear[k].c;
-                return;
+                return true;
             }
-            if (!overlap) return;
+            if (!overlap) return false;
             if (order(clear[k], clear[k + 1]) != 0) {
                 (clear[k].on_a ? pa : pb).x = clear[k].c;
-                return;
+                return true;
             }
-            for (std::size_t m = k; passes && m < end; ++m) {
+            for (std::size_t m = k; through && m < end; ++m) {
                 const bool tied = (m > k && order(clear[m - 1], clear[m]) == 0) ||
                                   (m + 1 < end && order(clear[m], clear[m + 1]) == 0);
                 if (!tied) {
                     (clear[m].on_a ? pa : pb).x = clear[m].c;
-                    return;
+                    return true;
                 }
             }
             k = end;
         }
     }
+    return false;
+}
+
+bool SweptFrame::passes(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t,
+                        const meet::PointOnPath& pa, const meet::PointOnPath& pb, bool apart) {
+    if (apart && meet::closer_than(pa.x, pb.x, S)) return true;
+    cut_to(a, pa, t, cut_a_);
+    cut_to(b, pb, t, cut_b_);
+    return pieces_enter(a, b, S, lo, t, false) || enters_before(a, a, b, cut_a_, t) ||
+           enters_before(b, a, b, cut_b_, t);
 }
 
 bool SweptFrame::enters_before(std::uint32_t i, std::uint32_t a, std::uint32_t b, const std::vector<PathPoint>& cut,
-                               double until) {
+                               double until, double through) {
     const double from = piece_start(cut);
-    if (!(from < until)) return false;
+    if (!(from < std::max(until, through))) return false;
     bool enters = false;
     neighbours(i, [&](std::uint32_t k) {
         const meet::Radii Sk{radius(i), radius(k)};
         if (enters || k == a || k == b || !(Sk.rounded() > 0.0)) return;
+        // Up to `until`, or where k's current path starts later (before `through`), there: k's points before it are
+        // printed already.
+        const double u = std::max(until, std::min(through, seg_t_[k]));
+        if (!(from < u)) return;
         const std::vector<PathPoint>&fi = printed(i, cut, full_a_), &fk = printed(k, balls_[k].path, full_k_);
-        const std::optional<meet::Root> e = meet::first_meet(fi, fk, Sk, from, {}, {}, until);
-        enters = e && meet::compare(*e, until) < 0 && entered(*e, fi, fk, Sk);
+        const std::optional<meet::Root> e = meet::first_meet(fi, fk, Sk, from, {}, {}, u);
+        enters = e && meet::compare(*e, u) < 0 && entered(*e, fi, fk, Sk);
     });
     return enters;
 }

@@ -151,13 +151,34 @@ void SweptFrame::take(const Candidate& c, bool tied) {
     // The printed centres, no closer than S (exactly): t taken earlier, 1, 2, 4, … ulps, then the floor.
     Placed last_a, last_b;
     meet::PointOnPath pa = place(a, t, last_a), pb = place(b, t, last_b);
+    std::vector<double>& tried = tried_;
+    tried.clear();
     for (double step = std::max(std::fabs(t) * 0x1p-52, 0x1p-1074);
          t > floor && too_close(a, b, S, lo, t, pa, pb); step *= 2.0) {
+        tried.push_back(t);
         t = t - step > floor ? t - step : floor;
         pa = place(a, t, last_a);
         pb = place(b, t, last_b);
     }
-    if (t == floor && too_close(a, b, S, lo, t, pa, pb)) nudge(a, b, S, lo, t, pa, pb);
+    // At the floor a centre is nudged; where none clears and the two were closer than S at lo already (placed so by
+    // the scene), they are not held apart, only clear of the third balls.
+    bool clear = !(t == floor && too_close(a, b, S, lo, t, pa, pb));
+    if (!clear) clear = nudge(a, b, S, lo, t, pa, pb, true);
+    if (!clear && placed_in_reach(a, b, S, lo))
+        clear = !too_close(a, b, S, lo, t, pa, pb, false) || nudge(a, b, S, lo, t, pa, pb, false);
+    // Where nothing clears at the floor and the pieces to the centres pass through a ball as printed, the times the
+    // walk back tried, latest first: the first with a nudged centre that clears (the floor can hold a piece in
+    // another ball's way where a later time only needs a centre moved).
+    if (!clear && !passes(a, b, S, lo, t, pa, pb, false)) clear = true;
+    for (std::size_t k = 0; !clear && k < tried.size(); ++k) {
+        meet::PointOnPath qa = place(a, tried[k], last_a), qb = place(b, tried[k], last_b);
+        if (nudge(a, b, S, lo, tried[k], qa, qb, true)) {
+            clear = true;
+            t = tried[k];
+            pa = qa;
+            pb = qb;
+        }
+    }
     Ball ba{pa.x, velocity_on(a, pa.from), radius(a)}, bb{pb.x, velocity_on(b, pb.from), radius(b)};
     last_t_ = t;
     MeetRecord record{a, b, t, pa.x, pb.x, ba.vel, bb.vel, {}, {}, false, tied};

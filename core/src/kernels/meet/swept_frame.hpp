@@ -116,8 +116,19 @@ private:
 
     /// Would the meet's printed centres at t leave balls a and b closer than S: the centres themselves, or the pieces
     /// to them from their last printed points (a grazing meet's rounded centres may be apart while the pieces dip)?
+    /// Two balls not held `apart` (placed_in_reach) are asked neither clause about the two alone, only an entry
+    /// from outside S.
     bool too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, const meet::PointOnPath& pa,
-                   const meet::PointOnPath& pb);
+                   const meet::PointOnPath& pb, bool apart = true);
+
+    /// Whether the pieces to the centres (cut_a_, cut_b_, made by too_close) enter each other's reach before t, or
+    /// one that starts before lo enters the other's printed path there: from outside S (pass-through's rule), or, with
+    /// `any`, before t also from within.
+    bool pieces_enter(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, bool any);
+
+    /// Whether balls a and b were closer than S at lo already, placed so by the scene: on their paths' exact points
+    /// there and on those points rounded. At the floor of the walk back they are not held apart.
+    bool placed_in_reach(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo) const;
 
     /// Ball i's current path cut at frame time t, where it would be at centre p: its points up to the one the piece
     /// holding p starts from, then p at t.
@@ -150,15 +161,23 @@ private:
     /// third ball as printed: there ties go on to the nearest to the ball's exact point, then by a later piece start,
     /// then back along the approach, then (where a piece passes through a third ball) to the first tied with none,
     /// else to the next distance out, and where none is taken, the doubles 2, then 3 ulps out are tried the same way.
-    void nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, meet::PointOnPath& pa,
-               meet::PointOnPath& pb);
+    bool nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, meet::PointOnPath& pa,
+               meet::PointOnPath& pb, bool apart);
+
+    /// Whether the centres at t (held `apart`: closer than S) or the pieces to them would break what ball-overlap and
+    /// pass-through see: the pieces entering each other's reach, or a third ball's printed path, from outside it
+    /// before t (cut_a_ and cut_b_ left cut at the centres).
+    bool passes(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, const meet::PointOnPath& pa,
+                const meet::PointOnPath& pb, bool apart);
 
     /// Whether the piece to ball i's centre (cut: its current path cut there), where it starts before `until`,
     /// enters the printed path of a ball other than a and b from outside its reach before `until`: pass-through's
     /// rule (too_close asks it before lo, of a piece that starts before the other ball of the meet stepped on, as it
-    /// asks it of a and b; nudge before t, where it decides how a tie is broken).
+    /// asks it of a and b; nudge before t, where it decides how a tie is broken). Of a third ball k whose current
+    /// path starts later, before `through`, it is asked up to that start: k's points before it are printed already
+    /// (too_close: through t; the third ball's current path is asked below, where a tie at t is told from a graze).
     bool enters_before(std::uint32_t i, std::uint32_t a, std::uint32_t b, const std::vector<PathPoint>& cut,
-                       double until);
+                       double until, double through = 0.0);
 
     /// For nudge: whether ball i's centre moved to `moved` at t (from `rounded`) comes closer than their radii's sum
     /// to a third ball's point there where the rounded centre did not, or its piece enters a third ball's printed
@@ -239,6 +258,7 @@ private:
     std::vector<PathPoint>&cut_a_, &cut_b_;  // the paths to a meet's centres (too_close)
     std::vector<PathPoint>&full_a_, &full_b_, &full_k_;  // printed paths with their committed points
     double last_t_ = 0.0;                   // the time of the last meet taken
+    std::vector<double> tried_;             // the times a meet's walk back tried before the floor
 };
 
 }  // namespace ricochet
