@@ -16,14 +16,6 @@
 #include "ricochet/bits.hpp"
 
 namespace ricochet {
-namespace {
-
-/// How many rings of neighbouring doubles a nudge of overlapping centres tries (docs/scene-log.md, "Balls that
-/// meet", 4).
-constexpr int k_nudge_rings = 3;
-
-}  // namespace
-
 meet::PointOnPath SweptFrame::place(std::size_t i, double t, Placed& last) {
     const std::vector<PathPoint>& path = balls_[i].path;
     meet::PointOnPath at = meet::point_at(path, t);
@@ -152,7 +144,7 @@ bool SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double l
         return 0;
     };
     std::vector<Clear> clear;
-    for (int ring = 1; ring <= (overlap ? k_nudge_rings : 1); ++ring) {
+    for (int ring = 1; ring <= (overlap ? meet::k_rings : 1); ++ring) {
         clear.clear();
         for (const bool on_a : {true, false}) {
             const meet::PointOnPath& p = on_a ? pa : pb;

@@ -37,25 +37,31 @@ void SweptFrame::safe_stop(double t) {
         std::optional<Vec2> best;
         Rational best_d2, best_e2;
         bool tie = false;
-        for_each_on_ring(x, 1, [&](Vec2 c) {
-            if (c != q && !same_bits(disc::walk_back(q, c, radius(i), obstacles_, scratch_), c)) return;
-            stop_path(i, {c, at[i].from}, when[i], moved);
-            std::swap(moved, to_stop[i]);
-            const bool enters = stop_enters(i, s, to_stop);
-            std::swap(moved, to_stop[i]);
-            if (enters) return;
-            const Rational dx = Rational(c.x) - Rational(x.x), dy = Rational(c.y) - Rational(x.y);
-            const Rational fx = Rational(c.x) - exact.first, fy = Rational(c.y) - exact.second;
-            const Rational d2 = dx * dx + dy * dy, e2 = fx * fx + fy * fy;
-            if (!best || d2 < best_d2 || (d2 == best_d2 && e2 < best_e2)) {
-                best = c;
-                best_d2 = d2;
-                best_e2 = e2;
-                tie = false;
-            } else if (d2 == best_d2 && e2 == best_e2) {
-                tie = true;
-            }
-        });
+        // The neighbouring doubles, then those 2 and 3 ulps out where none of a ring is taken (far out, a neighbour
+        // across a wall or in a third ball's reach can leave none).
+        for (int ring = 1; ring <= meet::k_rings && (!best || tie); ++ring) {
+            best.reset();
+            tie = false;
+            for_each_on_ring(x, ring, [&](Vec2 c) {
+                if (c != q && !same_bits(disc::walk_back(q, c, radius(i), obstacles_, scratch_), c)) return;
+                stop_path(i, {c, at[i].from}, when[i], moved);
+                std::swap(moved, to_stop[i]);
+                const bool enters = stop_enters(i, s, to_stop);
+                std::swap(moved, to_stop[i]);
+                if (enters) return;
+                const Rational dx = Rational(c.x) - Rational(x.x), dy = Rational(c.y) - Rational(x.y);
+                const Rational fx = Rational(c.x) - exact.first, fy = Rational(c.y) - exact.second;
+                const Rational d2 = dx * dx + dy * dy, e2 = fx * fx + fy * fy;
+                if (!best || d2 < best_d2 || (d2 == best_d2 && e2 < best_e2)) {
+                    best = c;
+                    best_d2 = d2;
+                    best_e2 = e2;
+                    tie = false;
+                } else if (d2 == best_d2 && e2 == best_e2) {
+                    tie = true;
+                }
+            });
+        }
         if (!best || tie) continue;
         at[i].x = *best;
         stop_path(i, at[i], when[i], to_stop[i]);

@@ -43,6 +43,10 @@ struct MeetFrameScratch {
 
 namespace meet {
 
+/// How many rings of neighbouring doubles (1, 2, 3 ulps out) a nudge of overlapping centres and a safe stop try
+/// (docs/scene-log.md, "Balls that meet", 4 and 7).
+inline constexpr int k_rings = 3;
+
 /// A box around a ball's path, widened by its radius.
 Box path_box(std::span<const PathPoint> path, double R);
 
@@ -221,7 +225,8 @@ private:
     /// path where the ball's own path does not (far out, a ball moving less than an ulp since its last printed point
     /// prints standing still while another passes where it was). Such a ball, in ball order, is moved to the
     /// neighbouring double nearest its stop whose piece stays clear of the walls and of every other ball's path to its
-    /// stop (the nearest to its path's exact point there among two as near; none where those tie too, or none clears).
+    /// stop (the nearest to its path's exact point there among two as near; none where those tie too, or none clears),
+    /// else the same among the doubles 2, then 3 ulps out.
     void safe_stop(double t);
 
     /// Ball i's printed path with a stop at p, time t: its committed points, its current path's up to the last
