@@ -7,6 +7,7 @@
 # minimized input makes the parser target (gcc, standalone driver) fail on the mutant and pass unmutated.
 #
 #   properties/mutants/run.sh [--only NN[,NN...]] [--out DIR] [--fuzz-runs N] [--no-fuzz] [--no-unit]
+#                             [--seeds S[,S...]]
 #
 # DIR (default build-mutants/ in the checkout, ignored by git) keeps everything between runs, so a run can
 # be restarted with --only: tree/ (the scratch copy; the checkout is never modified), gcc/ (RelWithDebInfo:
@@ -29,6 +30,11 @@
 #   a timeout saves no log, so it is never a catch either way.
 # Seconds to bug: from the start of the property suite to the moment the reproducing log was written (for a
 # fuzz catch: the suite's time plus the campaign's until then, the clang build left out).
+# --seeds S1,S2,… (MUT_SEEDS; default MUT_SEED alone) runs the property suite once per seed on each mutant's one
+# build, each into its own folder (props/ for S1, props-S/ for the others): a mutant is caught by the properties where
+# some seed left a reproducing log (the first such seed names it), the row lists each seed's seconds to bug ("-":
+# none) and their median (over every seed, a seed without a log counting as longer than any: "-" where half or more
+# have none). The fuzz campaign, for a mutant no seed caught, uses S1.
 # Exit status: 0 after a complete run (the score is a measurement), 2 on a broken setup (a patch that does
 # not apply, a build that fails, a reference build that fails its own logs).
 set -uo pipefail
@@ -42,6 +48,7 @@ fuzz_timeout=${MUT_FUZZ_TIMEOUT:-120}
 do_fuzz=1
 do_unit=1
 seed=${MUT_SEED:-1}
+seeds=${MUT_SEEDS:-}
 cases=${MUT_CASES:-150}
 shrink_tries=${MUT_SHRINK_TRIES:-200}
 jobs=${MUT_JOBS:-2}
@@ -52,10 +59,14 @@ while [ $# -gt 0 ]; do
     --fuzz-runs) fuzz_runs=$2; shift 2 ;;
     --no-fuzz) do_fuzz=0; shift ;;
     --no-unit) do_unit=0; shift ;;
+    --seeds) seeds=$2; shift 2 ;;
     -h|--help) sed -n '2,/^set /{/^set /!s/^# \{0,1\}//p}' "$0"; exit 0 ;;
     *) echo "run.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
+[ -n "$seeds" ] || seeds=$seed
+[[ "$seeds" =~ ^[0-9]+(,[0-9]+)*$ ]] || { echo "run.sh: --seeds wants numbers separated by commas, not '$seeds'" >&2; exit 2; }
+seed=${seeds%%,*}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 case "$out/" in "$src"/tree/*|"$src"/core/*) echo "run.sh: --out must not be inside the sources" >&2; exit 2 ;; esac
@@ -164,11 +175,14 @@ if [ "$do_unit" = 1 ]; then
 fi
 # The property suite unmutated, with the settings every mutant gets: its time is the budget, and a
 # failure here would be the harness's own (a mutant is never credited with it: its log would fail on ref).
-rm -rf "$out/ref-props"; mkdir -p "$out/ref-props"
-ps=$(now)
-RICOCHET_KERNEL=robust RICOCHET_REPLAY_DIR="$out/ref-props" RC_PARAMS="seed=$seed max_success=$cases" \
-  RICOCHET_SHRINK_TRIES=$shrink_tries timeout 1800 "$out/gcc/properties/ricochet_properties" > "$out/ref-props.txt" 2>&1
-echo "   unmutated property suite: exit $? in $(( $(now) - ps )) s (RC_PARAMS=\"seed=$seed max_success=$cases\")"
+for s in ${seeds//,/ }; do
+  rdir="$out/ref-props"; [ "$s" = "$seed" ] || rdir="$out/ref-props-$s"
+  rm -rf "$rdir"; mkdir -p "$rdir"
+  ps=$(now)
+  RICOCHET_KERNEL=robust RICOCHET_REPLAY_DIR="$rdir" RC_PARAMS="seed=$s max_success=$cases" \
+    RICOCHET_SHRINK_TRIES=$shrink_tries timeout 1800 "$out/gcc/properties/ricochet_properties" > "$rdir.txt" 2>&1
+  echo "   unmutated property suite: exit $? in $(( $(now) - ps )) s (RC_PARAMS=\"seed=$s max_success=$cases\")"
+done
 
 patches=()
 for p in "$here"/[0-9][0-9]-*.patch; do
@@ -210,23 +224,43 @@ for p in "${patches[@]}"; do
 
   caught="-"
   log="-"
-  # The property suite, robust, fixed seed and case count.
-  ps=$(now)
-  mkdir -p "$work/props"
-  RICOCHET_KERNEL=robust RICOCHET_REPLAY_DIR="$work/props" RC_PARAMS="seed=$seed max_success=$cases" \
-    RICOCHET_SHRINK_TRIES=$shrink_tries timeout 1800 "$out/gcc/properties/ricochet_properties" > "$work/props.txt" 2>&1
-  prc=$?
-  pe=$(now)
-  [ "$prc" = 124 ] && echo "   properties: stopped by the 1800 s guard (a hang, not shrinking: that is bounded)"
-  failed_props=$(grep -Eo '^\[  FAILED  \] Kernels/[A-Za-z]+\.[A-Za-z]+' "$work/props.txt" | sed 's/.*\.//' | sort -u | tr '\n' ' ')
-  echo "   properties: exit $prc in $(( $(now) - ps )) s; failed: ${failed_props:-none}"
-  hit=$(reproduced_log "$work/props" "$work/props-verdicts.txt")
   to_bug="-"
-  if [ -n "$hit" ]; then
-    caught="property:$(basename "$hit" | sed 's/-[0-9a-f]*\.scene$//')"
-    log=${hit#"$out/"}
-    to_bug=$(( $(stat -c %Y "$hit") - ps ))
-  elif [ "$do_fuzz" = 1 ]; then
+  # The property suite, robust, fixed case count, once per seed.
+  per_seed=()
+  props_s=0
+  prc_any=0
+  for s in ${seeds//,/ }; do
+    pdir="$work/props"; [ "$s" = "$seed" ] || pdir="$work/props-$s"
+    ps=$(now)
+    mkdir -p "$pdir"
+    RICOCHET_KERNEL=robust RICOCHET_REPLAY_DIR="$pdir" RC_PARAMS="seed=$s max_success=$cases" \
+      RICOCHET_SHRINK_TRIES=$shrink_tries timeout 1800 "$out/gcc/properties/ricochet_properties" > "$pdir.txt" 2>&1
+    prc=$?
+    pe=$(now)
+    props_s=$(( props_s + pe - ps ))
+    [ "$prc" = 0 ] || prc_any=$prc
+    [ "$prc" = 124 ] && echo "   properties (seed $s): stopped by the 1800 s guard (a hang, not shrinking: that is bounded)"
+    failed=$(grep -Eo '^\[  FAILED  \] Kernels/[A-Za-z]+\.[A-Za-z]+' "$pdir.txt" | sed 's/.*\.//' | sort -u | tr '\n' ' ')
+    [ "$s" = "$seed" ] && failed_props=$failed
+    echo "   properties (seed $s): exit $prc in $(( pe - ps )) s; failed: ${failed:-none}"
+    hit=$(reproduced_log "$pdir" "$pdir-verdicts.txt")
+    if [ -n "$hit" ]; then
+      per_seed+=("$(( $(stat -c %Y "$hit") - ps ))")
+      if [ "$caught" = "-" ]; then
+        caught="property:$(basename "$hit" | sed 's/-[0-9a-f]*\.scene$//')"
+        log=${hit#"$out/"}
+      fi
+    else
+      per_seed+=("-")
+    fi
+  done
+  prc=$prc_any
+  # The median over the seeds, a seed without a log counting as longer than any.
+  to_bug=$(printf '%s\n' "${per_seed[@]}" | sed 's/^-$/999999999/' | sort -n |
+    awk '{ v[NR] = $1 } END { m = v[int((NR + 1) / 2)]; if (NR % 2 == 0) m = (m + v[NR / 2 + 1]) / 2;
+                              print (m >= 999999999 ? "-" : m) }')
+  seed_list=$(IFS=/; echo "${per_seed[*]}")
+  if [ "$caught" = "-" ] && [ "$do_fuzz" = 1 ]; then
     fs=$(now)
     build_clang "$work/clang-build.log" || die "$name: the clang build fails ($work/clang-build.log)"
     echo "   clang build $(( $(now) - fs )) s; fuzzing $fuzz_runs inputs per target: $fuzz_targets"
@@ -244,8 +278,9 @@ for p in "${patches[@]}"; do
     fi
     if [ -n "$hit" ]; then
       log=${hit#"$out/"}
-      # The property suite's time, then the campaign's until the log was written (the clang build not counted).
-      to_bug=$(( pe - ps + $(stat -c %Y "$hit") - fs ))
+      # The property suite's time (every seed's), then the campaign's until the log was written (the clang build
+      # not counted).
+      to_bug=$(( props_s + $(stat -c %Y "$hit") - fs ))
     fi
   fi
   # Reported but not caught: a harness failure whose saved log does not reproduce it.
@@ -254,10 +289,10 @@ for p in "${patches[@]}"; do
   [ "$caught" = "-" ] && [ "${frc:-0}" = 1 ] && note="${note:+$note; }fuzz failed but no log reproduces"
   secs=$(( $(now) - start ))
   grep -v "^$name	" "$results" > "$results.new"; mv "$results.new" "$results"
-  # Seconds to bug last: a results.tsv of an older run (seven columns) still reads.
-  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "$caught" "$secs" "$log" "$corpus" "${unit% }" "$note" "$to_bug" \
-    >> "$results"
-  echo "   => ${caught/#-/SURVIVED} ($secs s; a reproducing log after $to_bug s)${note:+; $note}"
+  # Seconds to bug, then each seed's, last: a results.tsv of an older run (seven or eight columns) still reads.
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "$caught" "$secs" "$log" "$corpus" "${unit% }" "$note" \
+    "$to_bug" "$seeds: $seed_list" >> "$results"
+  echo "   => ${caught/#-/SURVIVED} ($secs s; a reproducing log after $to_bug s; seeds $seeds: $seed_list)${note:+; $note}"
   unset frc
 done
 
@@ -265,10 +300,10 @@ done
 sync_tree
 
 echo
-echo "| mutant | caught by | seconds to bug | seconds | log | corpus logs failing | promise_test | note |"
-echo "| --- | --- | ---: | ---: | --- | ---: | --- | --- |"
+echo "| mutant | caught by | seconds to bug (median) | properties' seconds to bug, seed by seed | seconds | log | corpus logs failing | promise_test | note |"
+echo "| --- | --- | ---: | --- | ---: | --- | ---: | --- | --- |"
 # awk keeps empty fields (read with IFS=tab would merge two tabs, an empty note, and shift the columns after it).
-sort "$results" | awk -F'\t' '{ printf "| %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, ($8 == "" ? "-" : $8), $3, $4, $5, $6, $7 }'
+sort "$results" | awk -F'\t' '{ printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, ($8 == "" ? "-" : $8), ($9 == "" ? "-" : $9), $3, $4, $5, $6, $7 }'
 total=$(wc -l < "$results")
 killed=$(awk -F'\t' '$2 != "-"' "$results" | wc -l)
 echo
