@@ -32,8 +32,8 @@
 # fuzz catch: the suite's time plus the campaign's until then, the clang build left out).
 # --seeds S1,S2,… (MUT_SEEDS; default MUT_SEED alone) runs the property suite once per seed on each mutant's one
 # build, each into its own folder (props/ for S1, props-S/ for the others): a mutant is caught by the properties where
-# some seed left a reproducing log (the first such seed names it), the row lists each seed's seconds to bug ("-":
-# none) and their median (over every seed, a seed without a log counting as longer than any: "-" where half or more
+# some seed left a reproducing log (the first such seed names it), the row lists each seed's seconds to bug and, in
+# brackets, the cases its property ran until it failed ("-": no log), and the seconds' median (over every seed, a seed without a log counting as longer than any: "-" where half or more
 # have none). The fuzz campaign, for a mutant no seed caught, uses S1.
 # Exit status: 0 after a complete run (the score is a measurement), 2 on a broken setup (a patch that does
 # not apply, a build that fails, a reference build that fails its own logs).
@@ -245,7 +245,9 @@ for p in "${patches[@]}"; do
     echo "   properties (seed $s): exit $prc in $(( pe - ps )) s; failed: ${failed:-none}"
     hit=$(reproduced_log "$pdir" "$pdir-verdicts.txt")
     if [ -n "$hit" ]; then
-      per_seed+=("$(( $(stat -c %Y "$hit") - ps ))")
+      # Its property's cases until it failed, as the suite reports them ("NAME [robust] fails after N cases …").
+      cases_to=$(grep -F "saved as $hit" "$pdir.txt" | head -1 | grep -Eo 'fails after [0-9]+ cases' | grep -Eo '[0-9]+')
+      per_seed+=("$(( $(stat -c %Y "$hit") - ps )) (${cases_to:-?})")
       if [ "$caught" = "-" ]; then
         caught="property:$(basename "$hit" | sed 's/-[0-9a-f]*\.scene$//')"
         log=${hit#"$out/"}
@@ -256,7 +258,7 @@ for p in "${patches[@]}"; do
   done
   prc=$prc_any
   # The median over the seeds, a seed without a log counting as longer than any.
-  to_bug=$(printf '%s\n' "${per_seed[@]}" | sed 's/^-$/999999999/' | sort -n |
+  to_bug=$(printf '%s\n' "${per_seed[@]}" | sed 's/ .*//; s/^-$/999999999/' | sort -n |
     awk '{ v[NR] = $1 } END { m = v[int((NR + 1) / 2)]; if (NR % 2 == 0) m = (m + v[NR / 2 + 1]) / 2;
                               print (m >= 999999999 ? "-" : m) }')
   seed_list=$(IFS=/; echo "${per_seed[*]}")
@@ -300,7 +302,7 @@ done
 sync_tree
 
 echo
-echo "| mutant | caught by | seconds to bug (median) | properties' seconds to bug, seed by seed | seconds | log | corpus logs failing | promise_test | note |"
+echo "| mutant | caught by | seconds to bug (median) | properties' seconds to bug (cases), seed by seed | seconds | log | corpus logs failing | promise_test | note |"
 echo "| --- | --- | ---: | --- | ---: | --- | ---: | --- | --- |"
 # awk keeps empty fields (read with IFS=tab would merge two tabs, an empty note, and shift the columns after it).
 sort "$results" | awk -F'\t' '{ printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, ($8 == "" ? "-" : $8), ($9 == "" ? "-" : $9), $3, $4, $5, $6, $7 }'
