@@ -47,11 +47,24 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
         // judged against the third balls then.
         const PathPoint& start = balls_[i].path.front();
         if (start.t == t && same_bits(start.p, x)) continue;
-        if (enters_before(i, a, b, piece, lo, t)) return true;
+        if (enters_before(i, a, b, piece, lo)) return true;
+        const double from = piece_start(piece);
         neighbours(i, [&](std::uint32_t k) {
             const meet::Radii Sk{radius(i), radius(k)};
             const std::vector<PathPoint>& path = balls_[k].path;
-            if (crowded || k == a || k == b || !(Sk.rounded() > 0.0) || path.front().t > t) return;
+            if (crowded || k == a || k == b || !(Sk.rounded() > 0.0)) return;
+            // k's points printed before its current path, where that began after lo: the piece must not enter them
+            // from outside (pass-through's rule, as enters_before asks it up to lo), up to that beginning or t.
+            if (seg_t_[k] > lo && from < seg_t_[k]) {
+                const double u = std::min(t, seg_t_[k]);
+                const std::vector<PathPoint>&fi = printed(i, piece, full_a_), &fk = printed(k, path, full_k_);
+                const std::optional<meet::Root> e = meet::first_meet(fi, fk, Sk, from, {}, {}, u);
+                if (e && meet::compare(*e, u) < 0 && entered(*e, fi, fk, Sk)) {
+                    crowded = true;
+                    return;
+                }
+            }
+            if (path.front().t > t) return;
             // Apart at lo — or where k's path starts later, there — as the printed paths put them (the piece to
             // the centre, which may start before lo, and k's path, their exact points) or as the ball's own path
             // does (its point there, rounded): two balls are excused only where both have them closer than that
@@ -111,7 +124,8 @@ const std::vector<PathPoint>& SweptFrame::printed(std::uint32_t k, const std::ve
 
 bool SweptFrame::placed_in_reach(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo) const {
     const std::vector<PathPoint>&pa = balls_[a].path, &pb = balls_[b].path;
-    return meet::closer_on_paths(pa, pb, lo, S) && meet::closer_than(meet::point_at(pa, lo).x, meet::point_at(pb, lo).x, S);
+    return meet::closer_on_paths(pa, pb, lo, S) &&
+           meet::closer_than(meet::point_at(pa, lo).x, meet::point_at(pb, lo).x, S);
 }
 
 bool SweptFrame::nudge(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, meet::PointOnPath& pa,
@@ -200,20 +214,16 @@ bool SweptFrame::passes(std::uint32_t a, std::uint32_t b, meet::Radii S, double 
 }
 
 bool SweptFrame::enters_before(std::uint32_t i, std::uint32_t a, std::uint32_t b, const std::vector<PathPoint>& cut,
-                               double until, double through) {
+                               double until) {
     const double from = piece_start(cut);
-    if (!(from < std::max(until, through))) return false;
+    if (!(from < until)) return false;
     bool enters = false;
     neighbours(i, [&](std::uint32_t k) {
         const meet::Radii Sk{radius(i), radius(k)};
         if (enters || k == a || k == b || !(Sk.rounded() > 0.0)) return;
-        // Up to `until`, or where k's current path starts later (before `through`), there: k's points before it are
-        // printed already.
-        const double u = std::max(until, std::min(through, seg_t_[k]));
-        if (!(from < u)) return;
         const std::vector<PathPoint>&fi = printed(i, cut, full_a_), &fk = printed(k, balls_[k].path, full_k_);
-        const std::optional<meet::Root> e = meet::first_meet(fi, fk, Sk, from, {}, {}, u);
-        enters = e && meet::compare(*e, u) < 0 && entered(*e, fi, fk, Sk);
+        const std::optional<meet::Root> e = meet::first_meet(fi, fk, Sk, from, {}, {}, until);
+        enters = e && meet::compare(*e, until) < 0 && entered(*e, fi, fk, Sk);
     });
     return enters;
 }

@@ -177,11 +177,10 @@ private:
     /// Whether the piece to ball i's centre (cut: its current path cut there), where it starts before `until`,
     /// enters the printed path of a ball other than a and b from outside its reach before `until`: pass-through's
     /// rule (too_close asks it before lo, of a piece that starts before the other ball of the meet stepped on, as it
-    /// asks it of a and b; nudge before t, where it decides how a tie is broken). Of a third ball k whose current
-    /// path starts later, before `through`, it is asked up to that start: k's points before it are printed already
-    /// (too_close: through t; the third ball's current path is asked below, where a tie at t is told from a graze).
+    /// asks it of a and b, and of a third ball's points printed before its current path where that began after lo;
+    /// nudge before t, where it decides how a tie is broken).
     bool enters_before(std::uint32_t i, std::uint32_t a, std::uint32_t b, const std::vector<PathPoint>& cut,
-                       double until, double through = 0.0);
+                       double until);
 
     /// For nudge: whether ball i's centre moved to `moved` at t (from `rounded`) comes closer than their radii's sum
     /// to a third ball's point there where the rounded centre did not, or its piece enters a third ball's printed
