@@ -31,10 +31,11 @@
 # Seconds to bug: from the start of the property suite to the moment the reproducing log was written (for a
 # fuzz catch: the suite's time plus the campaign's until then, the clang build left out).
 # --seeds S1,S2,… (MUT_SEEDS; default MUT_SEED alone) runs the property suite once per seed on each mutant's one
-# build, each into its own folder (props/ for S1, props-S/ for the others): a mutant is caught by the properties where
-# some seed left a reproducing log (the first such seed names it), the row lists each seed's seconds to bug and, in
-# brackets, the cases its property ran until it failed ("-": no log), and the seconds' median (over every seed, a seed without a log counting as longer than any: "-" where half or more
-# have none). The fuzz campaign, for a mutant no seed caught, uses S1.
+# build, each into its own folder (props/ for S1, props-S/ for the others): a mutant is caught by the properties
+# where some seed left a reproducing log (the first such seed names it); the row lists each seed's seconds to bug
+# and, in brackets, the cases its property ran until it failed ("-": no log), and the seconds' median (over every
+# seed, a seed without a log counting as longer than any: "-" where half or more have none). The fuzz campaign, for
+# a mutant no seed caught, uses S1.
 # Exit status: 0 after a complete run (the score is a measurement), 2 on a broken setup (a patch that does
 # not apply, a build that fails, a reference build that fails its own logs).
 set -uo pipefail
