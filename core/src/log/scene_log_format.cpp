@@ -59,6 +59,16 @@ std::optional<double> to_double(std::string_view s, std::string& why) {
         why = fmt::format("'{}' is not a number", shown(s));
         return std::nullopt;
     }
+    // Nor is a binary exponent with two signs: libstdc++ 12's hexadecimal from_chars reads "1p+-3" whole, as 2^−3
+    // (its decimal one stops at "1e+-3" after the 1, as the grammar has it). Found by the parser fuzz target.
+    if (format == std::chars_format::hex) {
+        const std::size_t p = body.find_first_of("pP");
+        const auto sign = [&](std::size_t i) { return i < body.size() && (body[i] == '+' || body[i] == '-'); };
+        if (p != std::string_view::npos && sign(p + 1) && sign(p + 2)) {
+            why = fmt::format("'{}' is not a number", shown(s));
+            return std::nullopt;
+        }
+    }
     double v = 0.0;
     const auto [end, ec] = from_chars_double(body.data(), body.data() + body.size(), v, format);
     if (ec == std::errc::result_out_of_range) {
