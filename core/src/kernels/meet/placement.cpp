@@ -94,6 +94,10 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
 void SweptFrame::cut_to(std::uint32_t i, const meet::PointOnPath& p, double t, std::vector<PathPoint>& out) const {
     const std::vector<PathPoint>& path = balls_[i].path;
     out.assign(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(p.from + 1));
+    end_at(i, p, t, out);
+}
+
+void SweptFrame::end_at(std::uint32_t i, const meet::PointOnPath& p, double t, std::vector<PathPoint>& out) const {
     // A centre at the time of a printed point (the path's start, a meet's centre or the frame's; a hit or bump) moved
     // off it is a jump after it: the point stays (the piece before it ends there). Only the path's end is no print.
     if (out.back().t < t) out.push_back({t, p.x});

@@ -83,10 +83,7 @@ void SweptFrame::stop_path(std::uint32_t i, const meet::PointOnPath& p, double t
     const std::vector<PathPoint>& path = balls_[i].path;
     out.assign(committed_[i].begin(), committed_[i].end());
     out.insert(out.end(), path.begin(), path.begin() + static_cast<std::ptrdiff_t>(p.from + 1));
-    // (A stop moved off a printed point at its time is a jump after it, as cut_to has it.)
-    if (out.back().t < t) out.push_back({t, p.x});
-    else if (p.from > balls_[i].events.size() || same_bits(out.back().p, p.x)) out.back().p = p.x;
-    else out.push_back({t, p.x});
+    end_at(i, p, t, out);
     out.push_back({1.0, p.x});
 }
 

@@ -138,6 +138,11 @@ private:
     /// holding p starts from, then p at t.
     void cut_to(std::uint32_t i, const meet::PointOnPath& p, double t, std::vector<PathPoint>& out) const;
 
+    /// Ends out, ball i's points up to the one the piece holding p starts from, at centre p, time t: p appended, or
+    /// put in place of the last point where that is at t and is no print (the path's end) or p itself; a centre moved
+    /// off a printed point at its time is a jump after it.
+    void end_at(std::uint32_t i, const meet::PointOnPath& p, double t, std::vector<PathPoint>& out) const;
+
     /// Whether a meet of paths a and b is an entry into reach from outside it: a crossing inside its interval, or
     /// one at the interval's start c where the two touch exactly (two balls already closer than S enter nothing).
     static bool entered(const meet::Root& m, std::span<const PathPoint> a, std::span<const PathPoint> b,
