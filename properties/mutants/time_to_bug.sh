@@ -9,14 +9,16 @@
 # folder holding `ricochet` (and, for the parser target, `fuzz_parser`) built from the unmutated sources: what the
 # saved log must pass on. Each campaign is, in WORK/LABEL-MODE-SEED/proj (an otherwise empty project: replays/ and
 # fuzz/corpus/T/),
-#   [RICOCHET_FUZZ_ALL_CHECKS=1] DIR/cli/ricochet fuzz --target T --kernel robust --seed SEED --jobs 1 --runs N \
-#       --cache-dir ../cache --replay-dir ../found --json -- -timeout=120
+#   [RICOCHET_FUZZ_ALL_CHECKS=1] DIR/cli/ricochet fuzz --target T --kernel robust --bin-dir DIR/fuzz --seed SEED \
+#       --jobs 1 --runs N --cache-dir ../cache --replay-dir ../found --json -- -timeout=120
 # killed (SIGTERM) after S seconds (default 240): mode `before` sets RICOCHET_FUZZ_ALL_CHECKS=1 (every input every
 # check, as before the check tiers), `after` leaves it unset (the tiers). N defaults to 20000. The project's
 # fuzz/corpus/T/ is the committed fuzz/corpus/T/ less every input that already fails on the mutant (each run once
 # by DIR/fuzz/fuzz_T with every check): otherwise a committed reproducer would make the campaign fail while it
-# loads its seeds, and the time would measure nothing. --side-by-side runs the modes of one seed at the same time
-# (two campaigns, one worker each; on a loaded machine both then see the same load).
+# loads its seeds, and the time would measure nothing. --bin-dir holds the campaign to the mutant's own fuzz_T: a
+# `ricochet` copied out of its build runs the fuzz_T of the tree it was built in, which may be the clean one; a
+# campaign whose progress names other binaries is reported `wrong-binaries`, not scored. --side-by-side runs the
+# modes of one seed at the same time (two campaigns, one worker each; on a loaded machine both then see the same load).
 # Prints one TSV line per campaign: label, target, mode, seed, inputs (the worker's libFuzzer
 # stat::number_of_executed_units, as the campaign's --json `runs` reports it; the failing input included), seconds
 # (the log's mtime minus the moment the campaign started: the minimization and reduction included), fuzzing_s (the
@@ -70,7 +72,7 @@ one() {  # one campaign: mode seed
   [ "$mode" = before ] && envs=(RICOCHET_FUZZ_ALL_CHECKS=1)
   local start; start=$(date +%s.%N)
   (cd "$w/proj" && env "${envs[@]}" timeout -s TERM "$cap" nice "$build/cli/ricochet" fuzz --target "$target" --kernel robust \
-     --seed "$seed" --jobs 1 --runs "$runs" --cache-dir "$w/cache" --replay-dir "$w/found" --json -- -timeout=120 \
+     --bin-dir "$build/fuzz" --seed "$seed" --jobs 1 --runs "$runs" --cache-dir "$w/cache" --replay-dir "$w/found" --json -- -timeout=120 \
      >"$w/out.json" 2>"$w/err.log")
   echo $? >"$w/rc"
   local log="" inputs fuzz_s check caught=censored secs=-
@@ -95,6 +97,8 @@ one() {  # one campaign: mode seed
     if [ "$m" != 0 ] && [ "$c" = 0 ]; then caught=yes; else caught="no(mutant=$m,clean=$c)"; fi
   fi
   [ -n "$check" ] || check=-
+  # The campaign's own account of the binaries it ran ("  binaries DIR").
+  grep -qxF "  binaries $build/fuzz" "$w/err.log" || caught=wrong-binaries
   printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$label" "$target" "$mode" "$seed" "$inputs" "$secs" "$fuzz_s" "$caught" "$check"
 }
 
