@@ -7,6 +7,7 @@
 // - an accepted log round-trips: write(read(text)) reads back to the same scene bit for bit (same_bits,
 //   so −0 and +0 differ), and writing that again gives the same text.
 // None is a `check` a log can name, so a failure here saves no log: the input itself is the reproducer.
+// Under libFuzzer a mutator of its own (below) also puts the grammar's edge values in place of whole tokens.
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -19,6 +20,7 @@
 #include "fuzz_common.hpp"
 #include "grammar/agreement.hpp"
 #include "ricochet/scene_log.hpp"
+#include "token_mutator.hpp"
 
 namespace {
 
@@ -63,3 +65,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                       fmt::format("writing the re-read scene gives different text\n--- first ---\n{}", written), text);
     return 0;
 }
+
+#ifdef RICOCHET_FUZZ_LIBFUZZER
+extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t max_size);
+
+// One mutation in four sets an edge of the grammar as a whole token (token_mutator.hpp); the others are libFuzzer's
+// own, the dictionary (parser.dict) included.
+extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t max_size,
+                                               unsigned int seed) {
+    if (const std::size_t n = ricochet::fuzz::replace_token(data, size, max_size, seed)) return n;
+    return LLVMFuzzerMutate(data, size, max_size);
+}
+#endif
