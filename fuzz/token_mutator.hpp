@@ -36,7 +36,7 @@ inline std::size_t replace_token(std::uint8_t* data, std::size_t size, std::size
     if (draw() % 4 != 0) return 0;
     const auto starts_token = [&](std::size_t i) { return !token_gap(data[i]) && (i == 0 || token_gap(data[i - 1])); };
     std::size_t tokens = 0;
-    for (std::size_t i = 0; i < size; ++i) tokens += starts_token(i) ? 1 : 0;
+    for (std::size_t i = 0; i < size; ++i) tokens += starts_token(i) ? 1u : 0u;
     if (tokens == 0) return 0;
     // The chosen token [begin, end), and its replacement.
     std::size_t pick = draw() % tokens, begin = 0;

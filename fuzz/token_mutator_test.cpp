@@ -89,7 +89,9 @@ TEST(TokenMutator, DeclinesWithoutATokenOrWithoutRoom) {
         // No room beyond the text itself: only an edge no longer than the token it replaces fits.
         const std::string out = mutate("ball 1e300", seed, 10, &n);
         EXPECT_LE(out.size(), 10u);
-        if (n == 0) EXPECT_EQ(out, "ball 1e300");
+        if (n == 0) {
+            EXPECT_EQ(out, "ball 1e300");
+        }
         std::size_t none = 0;
         EXPECT_EQ(replace_token(nullptr, 0, 0, seed), none);
     }
