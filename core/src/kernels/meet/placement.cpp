@@ -2,6 +2,7 @@
 // and walked back from the walls, t* taken earlier while the centres or the pieces to them come too close to each
 // other or to a third ball, and at the floor one centre moved to a neighbouring double that clears.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -16,6 +17,58 @@
 #include "ricochet/bits.hpp"
 
 namespace ricochet {
+
+bool SweptFrame::place_meet(const Candidate& c, meet::Radii S, double lo, double floor, double& t,
+                            meet::PointOnPath& pa, meet::PointOnPath& pb) {
+    const std::uint32_t a = c.a, b = c.b;
+    t = std::clamp(c.root.estimate, floor, 1.0);
+    // The printed centres, no closer than S (exactly): t taken earlier, 1, 2, 4, … ulps, then the floor.
+    Placed last_a, last_b;
+    pa = place(a, t, last_a);
+    pb = place(b, t, last_b);
+    std::vector<double>& tried = tried_;
+    tried.clear();
+    for (double step = std::max(std::fabs(t) * 0x1p-52, 0x1p-1074);
+         t > floor && too_close(a, b, S, lo, t, pa, pb); step *= 2.0) {
+        tried.push_back(t);
+        t = t - step > floor ? t - step : floor;
+        pa = place(a, t, last_a);
+        pb = place(b, t, last_b);
+    }
+    // At the floor a centre is nudged; where none clears and the two were closer than S at lo already (placed so by
+    // the scene), they are not held apart, only clear of the third balls.
+    bool clear = !(t == floor && too_close(a, b, S, lo, t, pa, pb));
+    if (!clear) clear = nudge(a, b, S, lo, t, pa, pb, true);
+    if (!clear && placed_in_reach(a, b, S, lo))
+        clear = !too_close(a, b, S, lo, t, pa, pb, false) || nudge(a, b, S, lo, t, pa, pb, false);
+    // Where nothing clears at the floor and the pieces to the centres pass through a ball as printed, the times the
+    // walk back tried, latest first: the first with a nudged centre that clears (the floor can hold a piece in
+    // another ball's way where a later time only needs a centre moved).
+    if (!clear && !passes(a, b, S, lo, t, pa, pb, false)) clear = true;
+    for (std::size_t k = 0; !clear && k < tried.size(); ++k) {
+        meet::PointOnPath qa = place(a, tried[k], last_a), qb = place(b, tried[k], last_b);
+        if (nudge(a, b, S, lo, tried[k], qa, qb, true)) {
+            clear = true;
+            t = tried[k];
+            pa = qa;
+            pb = qb;
+        }
+    }
+    return clear;
+}
+
+bool SweptFrame::stands_as_they_are(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t,
+                                    const meet::PointOnPath& pa, const meet::PointOnPath& pb) {
+    std::array<bool, 4> seen[2];
+    for (const bool as_they_were : {true, false}) {
+        see_before_ = as_they_were;
+        seen[as_they_were] = {too_close(a, b, S, lo, t, pa, pb, true), too_close(a, b, S, lo, t, pa, pb, false),
+                              passes(a, b, S, lo, t, pa, pb, true), passes(a, b, S, lo, t, pa, pb, false)};
+    }
+    see_before_ = true;
+    return seen[0] == seen[1];
+}
+
 meet::PointOnPath SweptFrame::place(std::size_t i, double t, Placed& last) {
     const std::vector<PathPoint>& path = balls_[i].path;
     meet::PointOnPath at = meet::point_at(path, t);
@@ -51,13 +104,14 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
         const double from = piece_start(piece);
         neighbours(i, [&](std::uint32_t k) {
             const meet::Radii Sk{radius(i), radius(k)};
-            const std::vector<PathPoint>& path = balls_[k].path;
             if (crowded || k == a || k == b || !(Sk.rounded() > 0.0)) return;
+            const std::vector<PathPoint>& path = third_path(k);
+            const double k_from = before(k) ? before(k)->seg_t : seg_t_[k];
             // k's points printed before its current path, where that began after lo: the piece must not enter them
             // from outside (pass-through's rule, as enters_before asks it up to lo), up to that beginning or t.
-            if (seg_t_[k] > lo && from < seg_t_[k]) {
-                const double u = std::min(t, seg_t_[k]);
-                const std::vector<PathPoint>&fi = printed(i, piece, full_a_), &fk = printed(k, path, full_k_);
+            if (k_from > lo && from < k_from) {
+                const double u = std::min(t, k_from);
+                const std::vector<PathPoint>&fi = printed(i, piece, full_a_), &fk = third_printed(k, full_k_);
                 const std::optional<meet::Root> e = meet::first_meet(fi, fk, Sk, from, {}, {}, u);
                 if (e && meet::compare(*e, u) < 0 && entered(*e, fi, fk, Sk)) {
                     crowded = true;
@@ -123,6 +177,15 @@ const std::vector<PathPoint>& SweptFrame::printed(std::uint32_t k, const std::ve
     if (committed_[k].empty()) return current;
     out.assign(committed_[k].begin(), committed_[k].end());
     out.insert(out.end(), current.begin(), current.end());
+    return out;
+}
+
+const std::vector<PathPoint>& SweptFrame::third_printed(std::uint32_t k, std::vector<PathPoint>& out) const {
+    const MeetSnapshot* was = before(k);
+    if (!was) return printed(k, balls_[k].path, out);
+    if (was->committed.empty()) return was->path;
+    out.assign(was->committed.begin(), was->committed.end());
+    out.insert(out.end(), was->path.begin(), was->path.end());
     return out;
 }
 
@@ -225,7 +288,7 @@ bool SweptFrame::enters_before(std::uint32_t i, std::uint32_t a, std::uint32_t b
     neighbours(i, [&](std::uint32_t k) {
         const meet::Radii Sk{radius(i), radius(k)};
         if (enters || k == a || k == b || !(Sk.rounded() > 0.0)) return;
-        const std::vector<PathPoint>&fi = printed(i, cut, full_a_), &fk = printed(k, balls_[k].path, full_k_);
+        const std::vector<PathPoint>&fi = printed(i, cut, full_a_), &fk = third_printed(k, full_k_);
         const std::optional<meet::Root> e = meet::first_meet(fi, fk, Sk, from, {}, {}, until);
         enters = e && meet::compare(*e, until) < 0 && entered(*e, fi, fk, Sk);
     });
@@ -241,7 +304,7 @@ bool SweptFrame::crowds_others(std::uint32_t i, std::uint32_t a, std::uint32_t b
     neighbours(i, [&](std::uint32_t k) {
         const meet::Radii Sk{radius(i), radius(k)};
         if (crowded || k == a || k == b || !(Sk.rounded() > 0.0)) return;
-        const std::vector<PathPoint>& whole = printed(k, balls_[k].path, full_k_);
+        const std::vector<PathPoint>& whole = third_printed(k, full_k_);
         if (whole.back().t < t) return;
         const Vec2 at = meet::point_at(whole, t).x;
         if (meet::closer_than(moved.x, at, Sk) && !meet::closer_than(rounded, at, Sk)) crowded = true;

@@ -20,15 +20,17 @@ SweptFrame::SweptFrame(KernelId k, const Obstacles& obstacles, std::span<const d
       n_(balls.size()), seg_t_(kept.seg_t), seg_vel_(kept.seg_vel), version_(kept.version),
       committed_(kept.committed), done_(kept.done), box_(kept.box), grid_(kept.grid), seen_(kept.seen),
       heap_(kept.heap), cut_a_(kept.cut_a), cut_b_(kept.cut_b), full_a_(kept.full_a), full_b_(kept.full_b),
-      full_k_(kept.full_k) {
+      full_k_(kept.full_k), before_(kept.before) {
     seg_t_.assign(n_, 0.0);
     seg_vel_.resize(n_);
     version_.assign(n_, 0);
     committed_.resize(n_);
     done_.resize(n_);
+    before_.resize(n_);
     for (std::size_t i = 0; i < n_; ++i) {
         committed_[i].clear();
         done_[i].clear();
+        before_[i].group = 0;
     }
     box_.resize(n_);
     heap_.clear();
@@ -58,7 +60,20 @@ void SweptFrame::run() {
             break;
         }
         ++taken;
-        take(c, tied(c));
+        // Meets at one exact time on several pairs are a group (rule 3): numbered, so that each one's placement sees
+        // the balls the others moved as they were. A meet at another time ends the group.
+        const SameTime now = same_time(c);
+        if (group_ == 0 || meet::compare(c.root, *group_root_) != 0) {
+            group_ = 0;
+            group_root_.reset();
+            group_moved_ = false;
+            if (now.any) {
+                group_ = ++groups_;
+                group_root_ = c.root;
+                group_floor_ = last_t_;
+            }
+        }
+        take(c, now.shared, group_ != 0);
     }
     for (std::size_t i = 0; i < n_; ++i) finish(i);
 }
@@ -117,8 +132,8 @@ void SweptFrame::hold(std::size_t i, double t) {
     ++version_[i];
 }
 
-bool SweptFrame::tied(const Candidate& c) {
-    bool shared = false;
+SweptFrame::SameTime SweptFrame::same_time(const Candidate& c) {
+    SameTime out;
     std::vector<Candidate> same;
     while (!heap_.empty()) {
         const Candidate& next = heap_.front();
@@ -128,7 +143,8 @@ bool SweptFrame::tied(const Candidate& c) {
         // The entry just looked at is at the back now.
         const Candidate& x = heap_.back();
         if (!stale) {
-            shared = shared || x.a == c.a || x.a == c.b || x.b == c.a || x.b == c.b;
+            out.shared = out.shared || x.a == c.a || x.a == c.b || x.b == c.a || x.b == c.b;
+            out.any = true;
             same.push_back(std::move(heap_.back()));
         }
         heap_.pop_back();
@@ -137,50 +153,40 @@ bool SweptFrame::tied(const Candidate& c) {
         heap_.push_back(std::move(x));
         std::push_heap(heap_.begin(), heap_.end(), meet::later);
     }
-    return shared;
+    return out;
 }
 
-void SweptFrame::take(const Candidate& c, bool tied) {
+void SweptFrame::take(const Candidate& c, bool tied, bool grouped) {
     const std::uint32_t a = c.a, b = c.b;
     const meet::Radii S{radius(a), radius(b)};
     const double lo = std::max(seg_t_[a], seg_t_[b]);
     // Never before the meet taken last: the frame's meets keep their time order as printed too (the pair's
-    // other meets with balls met since are searched from there on).
-    const double floor = std::max(lo, last_t_);
-    double t = std::clamp(c.root.estimate, floor, 1.0);
-    // The printed centres, no closer than S (exactly): t taken earlier, 1, 2, 4, … ulps, then the floor.
-    Placed last_a, last_b;
-    meet::PointOnPath pa = place(a, t, last_a), pb = place(b, t, last_b);
-    std::vector<double>& tried = tried_;
-    tried.clear();
-    for (double step = std::max(std::fabs(t) * 0x1p-52, 0x1p-1074);
-         t > floor && too_close(a, b, S, lo, t, pa, pb); step *= 2.0) {
-        tried.push_back(t);
-        t = t - step > floor ? t - step : floor;
-        pa = place(a, t, last_a);
-        pb = place(b, t, last_b);
+    // other meets with balls met since are searched from there on). The meets of a group share one floor, the
+    // first one's, so that none's walk back depends on which of them came first.
+    const double floor = std::max(lo, grouped && !tied ? group_floor_ : last_t_);
+    taking_a_ = a;
+    taking_b_ = b;
+    taking_tied_ = tied;
+    double t = 0.0;
+    meet::PointOnPath pa, pb;
+    see_before_ = true;
+    place_meet(c, S, lo, floor, t, pa, pb);
+    // Placed against the balls the group's earlier meets moved as they were; where the centres do not stand as well
+    // against those balls as they are, placed against them as they are: then the group's order decides (a tie).
+    if (grouped && group_moved_ && !tied && !stands_as_they_are(a, b, S, lo, t, pa, pb)) {
+        see_before_ = false;
+        place_meet(c, S, lo, floor, t, pa, pb);
+        see_before_ = true;
+        tied = true;
     }
-    // At the floor a centre is nudged; where none clears and the two were closer than S at lo already (placed so by
-    // the scene), they are not held apart, only clear of the third balls.
-    bool clear = !(t == floor && too_close(a, b, S, lo, t, pa, pb));
-    if (!clear) clear = nudge(a, b, S, lo, t, pa, pb, true);
-    if (!clear && placed_in_reach(a, b, S, lo))
-        clear = !too_close(a, b, S, lo, t, pa, pb, false) || nudge(a, b, S, lo, t, pa, pb, false);
-    // Where nothing clears at the floor and the pieces to the centres pass through a ball as printed, the times the
-    // walk back tried, latest first: the first with a nudged centre that clears (the floor can hold a piece in
-    // another ball's way where a later time only needs a centre moved).
-    if (!clear && !passes(a, b, S, lo, t, pa, pb, false)) clear = true;
-    for (std::size_t k = 0; !clear && k < tried.size(); ++k) {
-        meet::PointOnPath qa = place(a, tried[k], last_a), qb = place(b, tried[k], last_b);
-        if (nudge(a, b, S, lo, tried[k], qa, qb, true)) {
-            clear = true;
-            t = tried[k];
-            pa = qa;
-            pb = qb;
-        }
+    if (grouped) {
+        // The two balls as they were, for the group's later meets.
+        for (const std::uint32_t i : {a, b})
+            before_[i] = {group_, a, b, seg_t_[i], committed_[i], balls_[i].path};
+        group_moved_ = true;
     }
     Ball ba{pa.x, velocity_on(a, pa.from), radius(a)}, bb{pb.x, velocity_on(b, pb.from), radius(b)};
-    last_t_ = t;
+    last_t_ = std::max(last_t_, t);
     MeetRecord record{a, b, t, pa.x, pb.x, ba.vel, bb.vel, {}, {}, false, tied};
     record.responded = kernel_ops(k_).respond(ba, bb, masses_[a], masses_[b]);
     record.out_a = ba.vel;

@@ -26,6 +26,15 @@ struct MeetCandidate {
     meet::Root root;
 };
 
+/// A ball's path as it was before a meet moved it, kept while meets at that meet's exact time on other pairs are
+/// due: their placements see the ball as it was (docs/scene-log.md, "Balls that meet", 3).
+struct MeetSnapshot {
+    std::uint64_t group = 0;      // the group of meets at one exact time it was taken in (0: none)
+    std::uint32_t a = 0, b = 0;   // the meet that moved the ball
+    double seg_t = 0.0;           // its current path's start then
+    std::vector<PathPoint> committed, path;
+};
+
 /// The swept rule's arrays, kept between frames (StepScratch::meets).
 struct MeetFrameScratch {
     std::vector<double> seg_t;
@@ -39,6 +48,7 @@ struct MeetFrameScratch {
     std::vector<MeetCandidate> heap;
     std::vector<PathPoint> cut_a, cut_b;
     std::vector<PathPoint> full_a, full_b, full_k;
+    std::vector<MeetSnapshot> before;
 };
 
 namespace meet {
@@ -160,6 +170,25 @@ private:
     const std::vector<PathPoint>& printed(std::uint32_t k, const std::vector<PathPoint>& current,
                                           std::vector<PathPoint>& out) const;
 
+    /// A third ball k as the placement of the meet being taken sees it: where that meet is not tied and the last
+    /// meet of its group that moved k is on a pair sharing no ball with it, k as it was before that meet (its
+    /// snapshot); else null, k as it is (a tied meet's order decides its outcome anyway).
+    const MeetSnapshot* before(std::uint32_t k) const {
+        if (!see_before_ || taking_tied_ || group_ == 0 || before_[k].group != group_) return nullptr;
+        const MeetSnapshot& s = before_[k];
+        return s.a == taking_a_ || s.a == taking_b_ || s.b == taking_a_ || s.b == taking_b_ ? nullptr : &s;
+    }
+
+    /// Third ball k's current path, as the placement sees it (before).
+    const std::vector<PathPoint>& third_path(std::uint32_t k) const {
+        const MeetSnapshot* s = before(k);
+        return s ? s->path : balls_[k].path;
+    }
+
+    /// Third ball k's printed path so far, as the placement sees it (before): its committed points then its
+    /// current path, in out where it has committed points.
+    const std::vector<PathPoint>& third_printed(std::uint32_t k, std::vector<PathPoint>& out) const;
+
     /// The walk back reached its floor t (the pieces' common start lo, or the last meet's time) and the centres still
     /// leave the balls too close (a centre rounded back onto its ball's last printed point holds that ball still on
     /// its piece, while the other went by it earlier on a path it has left since): one of the two centres moved to a
@@ -210,13 +239,27 @@ private:
     /// the velocity it left the meet with (docs/scene-log.md, "Balls that meet", 6).
     void hold(std::size_t i, double t);
 
-    /// True if another meet due now, at c's exact time, shares a ball with c: the heap's next entries at that time
-    /// are looked at (stale ones dropped) and put back.
-    bool tied(const Candidate& c);
+    /// The other meets due now, at c's exact time: whether one shares a ball with c (a tie) and whether there is
+    /// any. The heap's next entries at that time are looked at (stale ones dropped) and put back.
+    struct SameTime {
+        bool shared = false, any = false;
+    };
+    SameTime same_time(const Candidate& c);
 
-    /// Takes meet c (tied: another meet sharing a ball is due at its exact time): its centres placed (rule 4), the
-    /// response (5), both balls stepped on (6), their pairs with their neighbours searched again.
-    void take(const Candidate& c, bool tied);
+    /// Rule 4 for meet c: its time t and centres pa, pb (t* taken earlier, a centre nudged, …); false where none
+    /// clears.
+    bool place_meet(const Candidate& c, meet::Radii S, double lo, double floor, double& t, meet::PointOnPath& pa,
+                    meet::PointOnPath& pb);
+
+    /// Whether the centres pa, pb at t stand as well against the third balls as they are as against those the
+    /// placement saw as they were (before): every clause of too_close and passes decided alike on both.
+    bool stands_as_they_are(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t,
+                            const meet::PointOnPath& pa, const meet::PointOnPath& pb);
+
+    /// Takes meet c (tied: another meet sharing a ball is due at its exact time; grouped: another meet is due at
+    /// it): its centres placed (rule 4), the response (5), both balls stepped on (6), their pairs with their
+    /// neighbours searched again.
+    void take(const Candidate& c, bool tied, bool grouped);
 
     /// The frame's whole story of ball i: its committed contacts and points, then its current path's.
     void finish(std::size_t i);
@@ -268,6 +311,17 @@ private:
     std::vector<PathPoint>&full_a_, &full_b_, &full_k_;  // printed paths with their committed points
     double last_t_ = 0.0;                   // the time of the last meet taken
     std::vector<double> tried_;             // the times a meet's walk back tried before the floor
+    // Meets at one exact time (rule 3): each group of them is numbered; the first one's floor is every one's, and a
+    // ball a meet of the group moved is kept as it was (before_) for the others' placements.
+    std::vector<MeetSnapshot>& before_;
+    std::uint64_t group_ = 0;               // the group of the meet being taken (0: alone at its time)
+    std::uint64_t groups_ = 0;              // groups numbered so far in this frame
+    std::optional<meet::Root> group_root_;  // the exact time of the last group
+    double group_floor_ = 0.0;              // the floor of its meets: last_t_ when it began
+    bool group_moved_ = false;              // a meet of the group was taken, so snapshots exist
+    bool see_before_ = true;                // the placement sees moved third balls as they were
+    std::uint32_t taking_a_ = 0, taking_b_ = 0;  // the pair being taken
+    bool taking_tied_ = false;                   // and whether it is tied
 };
 
 }  // namespace ricochet
