@@ -96,6 +96,17 @@ while kill -0 "$(cat "'"$dir"'/static.pid")" 2>/dev/null; do sleep 0.05; done; '
                      # within the campaign's fuzzing time.
                      json_is out 'all(t["exec_per_s"] == t["exec_per_s_per_worker"] and t["runs"] / t["exec_per_s"] <= d["seconds"] for t in d["targets"])'
                      json_is out 'abs(d["exec_per_s"] - sum(t["exec_per_s"] for t in d["targets"])) <= 1e-9 * d["exec_per_s"]' ;;
+  slow-unit-progress) # A slow unit a worker saves is kept as an input, not a failure: the progress lines count the failures
+                     # the closing table counts. The fake worker saves one, then waits for the first progress line.
+                     stats='printf "#1000\tDONE   cov: 1 ft: 1 corp: 1/1b exec/s: 0 rss: 1Mb\nstat::number_of_executed_units: 1000\n"'
+                     fake static 'case "$1" in -help=1) echo "Usage: fake"; exit 0 ;; esac
+for a in "$@"; do case "$a" in -artifact_prefix=*) p=${a#-artifact_prefix=} ;; esac; done
+printf slow >"${p}slow-unit-0123456789abcdef0123456789abcdef01234567"
+n=0; until grep -q "failures" "'"$dir"'/out" || [ $n -ge 1200 ]; do sleep 0.05; n=$((n + 1)); done; '"$stats"
+                     cd "$proj"; run 0 fuzz --target static --runs 1000 --seed 1 --no-merge --cache-dir "$dir/cache" --bin-dir "$dir/bin"
+                     has out "static  exec/s"
+                     has out "failures 0"
+                     lacks out "failures 1" ;;
   stop-keeps-failures) # Stopped after a worker saved a failure artifact, before the tail: the table and the JSON say the
                      # failure, it waits in pending/, and the next campaign on the cache converts it.
                      need_fuzzer disc
