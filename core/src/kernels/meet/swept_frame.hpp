@@ -311,8 +311,8 @@ private:
     std::vector<PathPoint>&full_a_, &full_b_, &full_k_;  // printed paths with their committed points
     double last_t_ = 0.0;                   // the time of the last meet taken
     std::vector<double> tried_;             // the times a meet's walk back tried before the floor
-    // Meets at one exact time (rule 3): each group of them is numbered; the first one's floor is every one's, and a
-    // ball a meet of the group moved is kept as it was (before_) for the others' placements.
+    // Meets at one exact time (rule 3): each group of them is numbered; the first one's floor is every untied one's,
+    // and a ball a meet of the group moved is kept as it was (before_) for the others' placements.
     std::vector<MeetSnapshot>& before_;
     std::uint64_t group_ = 0;               // the group of the meet being taken (0: alone at its time)
     std::uint64_t groups_ = 0;              // groups numbered so far in this frame
