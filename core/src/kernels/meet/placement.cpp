@@ -139,6 +139,7 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
             const std::optional<meet::Root> entry = meet::first_meet(piece, path, Sk, lo, {}, {}, t);
             if (!entry || meet::compare(*entry, t) >= 0) return;
             const std::optional<meet::Root> own = meet::first_meet(balls_[i].path, path, Sk, lo, {}, {}, t);
+            // An entry from outside (k left and comes back) is never excused as a ball placed in reach.
             if (!own || meet::compare(*own, t) < 0) crowded = entered(*entry, piece, path, Sk) || apart_at_lo();
         });
     }
