@@ -105,8 +105,9 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
         neighbours(i, [&](std::uint32_t k) {
             const meet::Radii Sk{radius(i), radius(k)};
             if (crowded || k == a || k == b || !(Sk.rounded() > 0.0)) return;
-            const std::vector<PathPoint>& path = third_path(k);
-            const double k_from = before(k) ? before(k)->seg_t : seg_t_[k];
+            const MeetSnapshot* was = before(k);
+            const std::vector<PathPoint>& path = was ? was->path : balls_[k].path;
+            const double k_from = was ? was->seg_t : seg_t_[k];
             // k's points printed before its current path, where that began after lo: the piece must not enter them
             // from outside (pass-through's rule, as enters_before asks it up to lo), up to that beginning or t.
             if (k_from > lo && from < k_from) {
@@ -175,19 +176,20 @@ bool SweptFrame::pieces_enter(std::uint32_t a, std::uint32_t b, meet::Radii S, d
 
 const std::vector<PathPoint>& SweptFrame::printed(std::uint32_t k, const std::vector<PathPoint>& current,
                                                   std::vector<PathPoint>& out) const {
-    if (committed_[k].empty()) return current;
-    out.assign(committed_[k].begin(), committed_[k].end());
+    return joined(committed_[k], current, out);
+}
+
+const std::vector<PathPoint>& SweptFrame::joined(const std::vector<PathPoint>& committed,
+                                                 const std::vector<PathPoint>& current, std::vector<PathPoint>& out) {
+    if (committed.empty()) return current;
+    out.assign(committed.begin(), committed.end());
     out.insert(out.end(), current.begin(), current.end());
     return out;
 }
 
 const std::vector<PathPoint>& SweptFrame::third_printed(std::uint32_t k, std::vector<PathPoint>& out) const {
     const MeetSnapshot* was = before(k);
-    if (!was) return printed(k, balls_[k].path, out);
-    if (was->committed.empty()) return was->path;
-    out.assign(was->committed.begin(), was->committed.end());
-    out.insert(out.end(), was->path.begin(), was->path.end());
-    return out;
+    return was ? joined(was->committed, was->path, out) : printed(k, balls_[k].path, out);
 }
 
 bool SweptFrame::placed_in_reach(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo) const {

@@ -170,6 +170,10 @@ private:
     const std::vector<PathPoint>& printed(std::uint32_t k, const std::vector<PathPoint>& current,
                                           std::vector<PathPoint>& out) const;
 
+    /// committed then current, in out where committed has points (else current itself).
+    static const std::vector<PathPoint>& joined(const std::vector<PathPoint>& committed,
+                                                const std::vector<PathPoint>& current, std::vector<PathPoint>& out);
+
     /// A third ball k as the placement of the meet being taken sees it: where that meet is not tied and the last
     /// meet of its group that moved k is on a pair sharing no ball with it, k as it was before that meet (its
     /// snapshot); else null, k as it is (a tied meet's order decides its outcome anyway).
@@ -177,12 +181,6 @@ private:
         if (!see_before_ || taking_tied_ || group_ == 0 || before_[k].group != group_) return nullptr;
         const MeetSnapshot& s = before_[k];
         return s.a == taking_a_ || s.a == taking_b_ || s.b == taking_a_ || s.b == taking_b_ ? nullptr : &s;
-    }
-
-    /// Third ball k's current path, as the placement sees it (before).
-    const std::vector<PathPoint>& third_path(std::uint32_t k) const {
-        const MeetSnapshot* s = before(k);
-        return s ? s->path : balls_[k].path;
     }
 
     /// Third ball k's printed path so far, as the placement sees it (before): its committed points then its
