@@ -26,8 +26,10 @@ struct MeetRecord {
     Vec2 vel_a, vel_b;           ///< their velocities arriving
     Vec2 out_a, out_b;           ///< the velocities they leave with (printed in the `meet` lines)
     bool responded = false;      ///< false where the centres did not approach and the velocities stayed
-    /// Another meet sharing a ball was due at the same exact time when this one was taken: the order the tie rule
-    /// chose (the lowest pair first) depends on the balls' numbers (docs/scene-log.md, "Balls that meet", 3).
+    /// Another meet sharing a ball was due at the same exact time when this one was taken, or this one's centres
+    /// did not stand the same against the balls its group's earlier meets moved as before those meets: the order the
+    /// tie rule chose (the lowest pair first) decides the outcome, which depends on the balls' numbers
+    /// (docs/scene-log.md, "Balls that meet", 3).
     bool tied = false;
     friend bool operator==(const MeetRecord&, const MeetRecord&) = default;
 };

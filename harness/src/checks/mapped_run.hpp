@@ -7,7 +7,8 @@
 // Balls that meet: a meet's `other ball` is mapped like the ball; the balls in reverse order take their masses along.
 // Meets at one time are taken pair by pair, the lowest pair first (docs/scene-log.md, "Balls that meet", 3), so with
 // the balls renumbered a frame where a meet was taken while another sharing a ball was due at the same exact time
-// (three balls at one point; MeetRecord::tied) may part: from that frame on the image is not compared.
+// (three balls at one point), or one of such a group placed against the balls as they are (MeetRecord::tied), may
+// part: from that frame on the image is not compared.
 #pragma once
 
 #include <optional>
@@ -41,8 +42,8 @@ public:
     std::optional<CheckFailure> frame(Check c, const Frame& f);
 
 private:
-    /// The balls in reverse order, among balls that meet: the frame is one where a meet was taken while another
-    /// sharing a ball was due at the same exact time (MeetRecord::tied, in the run or the image), and the image is
+    /// The balls in reverse order, among balls that meet: the frame is one where a meet was taken whose outcome the
+    /// order of meets at one exact time decides (MeetRecord::tied, in the run or the image), and the image is
     /// compared no more.
     bool parts(const Frame& f);
 

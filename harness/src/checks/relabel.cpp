@@ -1,8 +1,8 @@
 // relabel: numbering the balls the other way round changes nothing but the numbers. The scene with its balls (and
 // their masses) in reverse order, stepped in lockstep, prints per ball the run's events, ball i as ball N − 1 − i, a
 // meet's other ball too, by value (mapped_run.hpp); from a frame where a meet was taken while another sharing a ball
-// was due at the same exact time (three balls at one point, taken pair by pair in index order; MeetRecord::tied) the
-// two runs may part, and the image is compared no more.
+// was due at the same exact time (three balls at one point, taken pair by pair in index order), or one of such a group
+// placed against the balls as they are (MeetRecord::tied), the two runs may part, and the image is compared no more.
 #include "checks/frame_check.hpp"
 #include "checks/mapped_run.hpp"
 
