@@ -349,6 +349,37 @@ TEST(MeetRoot, MeetTimesAreDecidedExactly) {
     EXPECT_FALSE(meet::first_meet(e0, still, {1.0, 1.0}, 0.0));
 }
 
+TEST(MeetRoot, AnEntryAfterTheBallsLeftEachOthersReachIsFound) {
+    // Ball 1 starts within S = 2 of ball 0 (at rest at the origin) and approaching: from (1, 0) through it to
+    // (−3, 0) at t = 1/2, out of reach from x = −2 on, then back to (1, 0), into reach again at x = −2, t = 5/8.
+    const meet::Radii S{1.0, 1.0};
+    const std::vector<PathPoint> still{{0, {0, 0}}, {1, {0, 0}}};
+    const std::vector<PathPoint> back{{0, {1, 0}}, {0.5, {-3, 0}}, {1, {1, 0}}};
+    // The first meet is at the start, where the two are closer than S already: no entry.
+    const auto first = meet::first_meet(back, still, S, 0.0);
+    ASSERT_TRUE(first);
+    EXPECT_EQ(meet::compare(*first, 0.0), 0);
+    EXPECT_FALSE(meet::entered(*first, back, still, S));
+    // The first entry from outside is the return.
+    const auto entry = meet::first_entry(back, still, S, 0.0);
+    ASSERT_TRUE(entry);
+    EXPECT_EQ(meet::compare(*entry, 0.625), 0);
+    EXPECT_TRUE(meet::entered(*entry, back, still, S));
+    // Up to 0.6 there is none; from 0.5, the same.
+    EXPECT_FALSE(meet::first_entry(back, still, S, 0.0, 0.6));
+    const auto later = meet::first_entry(back, still, S, 0.5);
+    ASSERT_TRUE(later);
+    EXPECT_EQ(meet::compare(*later, 0.625), 0);
+    // A ball that never leaves reach (to (−1, 0) and back) enters nothing, though it approaches again at t = 1/2.
+    const std::vector<PathPoint> stays{{0, {1, 0}}, {0.5, {-1, 0}}, {1, {1, 0}}};
+    EXPECT_FALSE(meet::first_entry(stays, still, S, 0.0));
+    // Touching and approaching at the start is an entry there.
+    const std::vector<PathPoint> touching{{0, {-2, 0}}, {1, {-1, 0}}};
+    const auto at_once = meet::first_entry(touching, still, S, 0.0);
+    ASSERT_TRUE(at_once);
+    EXPECT_EQ(meet::compare(*at_once, 0.0), 0);
+}
+
 TEST(MeetRoot, PointsOnAPathAreCorrectlyRounded) {
     const std::vector<PathPoint> p{{0, {0, 0}}, {0.25, {1, 0}}, {1, {1, 3}}};
     EXPECT_EQ(meet::point_at(p, 0.25).x, (Vec2{1, 0}));

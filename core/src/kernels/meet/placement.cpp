@@ -90,7 +90,8 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
     // A third ball k (three balls meeting at one time, or a graze the rounded centre makes): the centre must not
     // be closer to k's point at t, rounded where k's path puts it, than their radii's sum, nor the piece to the
     // centre enter k's reach at or after lo (touching k there and approaching) and before t where the ball's own
-    // path does not — where the two were not closer than that at lo.
+    // path does not — where the two were not closer than that at lo, or the piece enters k's reach from outside
+    // after lo.
     bool crowded = false;
     for (const auto& [ball, centre, cut] : {std::tuple{a, pa.x, &cut_a_}, std::tuple{b, pb.x, &cut_b_}}) {
         const std::uint32_t i = ball;
@@ -113,8 +114,8 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
             if (k_from > lo && from < k_from) {
                 const double u = std::min(t, k_from);
                 const std::vector<PathPoint>&fi = printed(i, piece, full_a_), &fk = third_printed(k, full_k_);
-                const std::optional<meet::Root> e = meet::first_meet(fi, fk, Sk, from, {}, {}, u);
-                if (e && meet::compare(*e, u) < 0 && entered(*e, fi, fk, Sk)) {
+                const std::optional<meet::Root> e = meet::first_entry(fi, fk, Sk, from, u);
+                if (e && meet::compare(*e, u) < 0) {
                     crowded = true;
                     return;
                 }
@@ -130,8 +131,14 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
                 return !meet::closer_on_paths(piece, path, at, Sk) ||
                        !meet::closer_than(own, meet::point_at(path, at).x, Sk);
             };
+            // Where the piece enters k's reach from outside on [lo, t) (k left and came back), the two are not
+            // excused as placed in reach either.
+            const auto enters = [&] {
+                const std::optional<meet::Root> e = meet::first_entry(piece, path, Sk, lo, t);
+                return e && meet::compare(*e, t) < 0;
+            };
             if (!meet::surely_apart(x, path, t, Sk) && meet::closer_than(x, meet::point_at(path, t).x, Sk)) {
-                crowded = apart_at_lo();
+                crowded = apart_at_lo() || enters();
                 return;
             }
             // (Where the ball's own path enters k's reach at t too, k is due at t as well, a tie, not a graze
@@ -140,8 +147,7 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
             const std::optional<meet::Root> entry = meet::first_meet(piece, path, Sk, lo, {}, {}, t);
             if (!entry || meet::compare(*entry, t) >= 0) return;
             const std::optional<meet::Root> own = meet::first_meet(balls_[i].path, path, Sk, lo, {}, {}, t);
-            // An entry from outside (k left and comes back) is never excused as a ball placed in reach.
-            if (!own || meet::compare(*own, t) < 0) crowded = entered(*entry, piece, path, Sk) || apart_at_lo();
+            if (!own || meet::compare(*own, t) < 0) crowded = apart_at_lo() || enters();
         });
     }
     return crowded;
@@ -163,15 +169,16 @@ void SweptFrame::end_at(std::uint32_t i, const meet::PointOnPath& p, double t, s
 
 bool SweptFrame::pieces_enter(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, bool any) {
     // An entry before t on the pieces that end at the centres (one at t itself is the meet).
-    const std::optional<meet::Root> r = meet::first_meet(cut_a_, cut_b_, S, lo, {}, {}, t);
-    if (r && meet::compare(*r, t) < 0 && (any || entered(*r, cut_a_, cut_b_, S))) return true;
+    const std::optional<meet::Root> r =
+        any ? meet::first_meet(cut_a_, cut_b_, S, lo, {}, {}, t) : meet::first_entry(cut_a_, cut_b_, S, lo, t);
+    if (r && meet::compare(*r, t) < 0) return true;
     // A piece to a rounded centre starts at its ball's last printed point, which may lie before lo, where the
     // other ball was on a path it has left since: there, an entry of that piece into the other's printed path.
     const double s = std::min(piece_start(cut_a_), piece_start(cut_b_));
     if (!(s < lo)) return false;
     const std::vector<PathPoint>&fa = printed(a, cut_a_, full_a_), &fb = printed(b, cut_b_, full_b_);
-    const std::optional<meet::Root> e = meet::first_meet(fa, fb, S, s, {}, {}, lo);
-    return e && meet::compare(*e, lo) < 0 && entered(*e, fa, fb, S);
+    const std::optional<meet::Root> e = meet::first_entry(fa, fb, S, s, lo);
+    return e && meet::compare(*e, lo) < 0;
 }
 
 const std::vector<PathPoint>& SweptFrame::printed(std::uint32_t k, const std::vector<PathPoint>& current,
@@ -292,8 +299,8 @@ bool SweptFrame::enters_before(std::uint32_t i, std::uint32_t a, std::uint32_t b
         const meet::Radii Sk{radius(i), radius(k)};
         if (enters || k == a || k == b || !(Sk.rounded() > 0.0)) return;
         const std::vector<PathPoint>&fi = printed(i, cut, full_a_), &fk = third_printed(k, full_k_);
-        const std::optional<meet::Root> e = meet::first_meet(fi, fk, Sk, from, {}, {}, until);
-        enters = e && meet::compare(*e, until) < 0 && entered(*e, fi, fk, Sk);
+        const std::optional<meet::Root> e = meet::first_entry(fi, fk, Sk, from, until);
+        enters = e && meet::compare(*e, until) < 0;
     });
     return enters;
 }
@@ -312,8 +319,8 @@ bool SweptFrame::crowds_others(std::uint32_t i, std::uint32_t a, std::uint32_t b
         const Vec2 at = meet::point_at(whole, t).x;
         if (meet::closer_than(moved.x, at, Sk) && !meet::closer_than(rounded, at, Sk)) crowded = true;
         if (crowded || !(s < t)) return;
-        const std::optional<meet::Root> e = meet::first_meet(piece, whole, Sk, s, {}, {}, t);
-        crowded = e && meet::compare(*e, t) < 0 && entered(*e, piece, whole, Sk);
+        const std::optional<meet::Root> e = meet::first_entry(piece, whole, Sk, s, t);
+        crowded = e && meet::compare(*e, t) < 0;
     });
     return crowded;
 }

@@ -265,6 +265,31 @@ std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const Pat
     return std::nullopt;
 }
 
+bool entered(const Root& m, std::span<const PathPoint> a, std::span<const PathPoint> b, Radii S) {
+    return !m.at_start || !closer_on_paths(a, b, m.c, S);
+}
+
+std::optional<Root> first_entry(std::span<const PathPoint> a, std::span<const PathPoint> b, Radii S, double from,
+                                double until) {
+    while (from < until) {
+        const std::optional<Root> m = first_meet(a, b, S, from, {}, {}, until);
+        if (!m || entered(*m, a, b, S)) return m;
+        from = next_point(a, b, m->c);
+    }
+    return std::nullopt;
+}
+
+double next_point(std::span<const PathPoint> a, std::span<const PathPoint> b, double t) {
+    double next = 1.0;
+    for (const std::span<const PathPoint> path : {a, b})
+        for (const PathPoint& q : path)
+            if (q.t > t) {
+                next = std::min(next, q.t);
+                break;
+            }
+    return next;
+}
+
 int compare(const Root& x, const Root& y) {
     // The estimates are the doubles nearest their exact values (within 2^−53 of them, t ≤ 1): farther apart than
     // 2^−48, they decide.

@@ -73,6 +73,21 @@ PointOnPath point_at(std::span<const PathPoint> path, double t);
 /// The ball's centre at frame time t on its path (t within the path's times), exactly: the point point_at rounds.
 std::pair<bignum::Rational, bignum::Rational> exact_point(std::span<const PathPoint> path, double t);
 
+/// Whether meet m of paths a and b is an entry into reach from outside it: a crossing inside its interval, or one at
+/// the interval's start c where the two touch exactly (two balls already closer than S there enter nothing).
+bool entered(const Root& m, std::span<const PathPoint> a, std::span<const PathPoint> b, Radii S);
+
+/// The first meet of paths a and b at or after `from`, up to `until` as first_meet looks, that is an entry from
+/// outside (entered), or nothing: a meet that is none (the two closer than S at an interval's start, approaching) is
+/// passed over for the next interval before `until`, where they may have left reach and come back (on one interval
+/// |D(u)|² is a quadratic in u: once out of reach there, they stay out there). Pass-through's rule, on every
+/// interval rather than the first meet's alone.
+std::optional<Root> first_entry(std::span<const PathPoint> a, std::span<const PathPoint> b, Radii S, double from,
+                                double until = 1.0);
+
+/// The first time after t at which path a or b has a point (1 if none).
+double next_point(std::span<const PathPoint> a, std::span<const PathPoint> b, double t);
+
 /// |a − b|² < S², exactly (a filter in doubles first).
 bool closer_than(Vec2 a, Vec2 b, Radii S);
 

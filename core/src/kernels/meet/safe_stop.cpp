@@ -92,30 +92,9 @@ bool SweptFrame::stop_enters(std::uint32_t i, double s, const std::vector<std::v
     neighbours(i, [&](std::uint32_t k) {
         const meet::Radii S{radius(i), radius(k)};
         if (enters || !(S.rounded() > 0.0)) return;
-        const std::vector<PathPoint>&a = to_stop[i], &b = to_stop[k];
-        double from = s;
-        while (from < 1.0) {
-            const std::optional<meet::Root> m = meet::first_meet(a, b, S, from);
-            if (!m) return;
-            if (entered(*m, a, b, S)) {
-                enters = true;
-                return;
-            }
-            from = next_point(a, b, m->c);
-        }
+        enters = meet::first_entry(to_stop[i], to_stop[k], S, s).has_value();
     });
     return enters;
-}
-
-double SweptFrame::next_point(std::span<const PathPoint> a, std::span<const PathPoint> b, double t) {
-    double next = 1.0;
-    for (const std::span<const PathPoint> path : {a, b})
-        for (const PathPoint& q : path)
-            if (q.t > t) {
-                next = std::min(next, q.t);
-                break;
-            }
-    return next;
 }
 
 }  // namespace ricochet

@@ -86,7 +86,7 @@ std::optional<meet::Root> SweptFrame::search(std::uint32_t a, std::uint32_t b, d
 }
 
 double SweptFrame::next_printed(std::uint32_t a, std::uint32_t b, double t) const {
-    return next_point(balls_[a].path, balls_[b].path, t);
+    return meet::next_point(balls_[a].path, balls_[b].path, t);
 }
 
 Vec2 SweptFrame::velocity_on(std::size_t i, std::size_t k) const {

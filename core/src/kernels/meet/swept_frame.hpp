@@ -153,12 +153,6 @@ private:
     /// off a printed point at its time is a jump after it.
     void end_at(std::uint32_t i, const meet::PointOnPath& p, double t, std::vector<PathPoint>& out) const;
 
-    /// Whether a meet of paths a and b is an entry into reach from outside it: a crossing inside its interval, or
-    /// one at the interval's start c where the two touch exactly (two balls already closer than S enter nothing).
-    static bool entered(const meet::Root& m, std::span<const PathPoint> a, std::span<const PathPoint> b,
-                        meet::Radii S) {
-        return !m.at_start || !meet::closer_on_paths(a, b, m.c, S);
-    }
 
     /// The time a path cut at a meet's centre (too_close) leaves its last printed point: its last piece's start.
     static double piece_start(const std::vector<PathPoint>& cut) {
@@ -283,9 +277,6 @@ private:
     /// common interval, at least that far apart at its start and closer within it; one that starts closer is not
     /// judged).
     bool stop_enters(std::uint32_t i, double s, const std::vector<std::vector<PathPoint>>& to_stop);
-
-    /// The first time after t at which path a or b has a point (1 if none).
-    static double next_point(std::span<const PathPoint> a, std::span<const PathPoint> b, double t);
 
     KernelId k_;
     const Obstacles& obstacles_;
