@@ -119,7 +119,7 @@ TEST(SceneLog, EveryMalformedKindNamesItsPlace) {
         {"unknown kernel", "ricochet 1\nkernel fast\n",
          "2:8: error: unknown kernel 'fast' (lecture-float, lecture-double, robust, exact)"},
         {"unknown check", "ricochet 1\ncheck speedy\n",
-         "2:7: error: unknown check 'speedy' (no-tunnel, symmetry, boundary, speed, deterministic, oracle, swap, translation, broad-phase, round-trip, no-escape, bounce-side, accuracy, event-order, penetration, ghost-bounce, plan, ball-overlap, pass-through, momentum, relabel)"},
+         "2:7: error: unknown check 'speedy' (no-tunnel, symmetry, boundary, speed, deterministic, oracle, swap, translation, broad-phase, round-trip, no-escape, bounce-side, accuracy, event-order, penetration, ghost-bounce, plan, ball-overlap, pass-through, momentum, relabel, jump-through)"},
         {"duplicate check", "ricochet 1\ncheck speed\ncheck speed\n", "3:7: error: duplicate check 'speed'"},
         {"future version", "ricochet 2\n", "1:10: error: format version 2 is newer than this reader (it reads version 1)"},
         {"bad version", "ricochet one\n", "1:10: error: unknown format version 'one' (this reader reads version 1)"},

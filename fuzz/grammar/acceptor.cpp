@@ -21,10 +21,10 @@ constexpr std::size_t k_from_limit = 64;
 constexpr std::int64_t k_frame_limit = 10'000'000;
 
 constexpr std::array<std::string_view, 4> k_kernels = {"lecture-float", "lecture-double", "robust", "exact"};
-constexpr std::array<std::string_view, 21> k_checks = {
+constexpr std::array<std::string_view, 22> k_checks = {
     "no-tunnel",   "symmetry",    "boundary",   "speed",     "deterministic", "oracle",   "swap",       "translation",
     "broad-phase", "round-trip",  "no-escape",  "bounce-side", "accuracy",    "event-order", "penetration",
-    "ghost-bounce", "plan",       "ball-overlap", "pass-through", "momentum", "relabel"};
+    "ghost-bounce", "plan",       "ball-overlap", "pass-through", "momentum", "relabel", "jump-through"};
 
 template <std::size_t N>
 bool one_of(const std::array<std::string_view, N>& names, std::string_view s) {

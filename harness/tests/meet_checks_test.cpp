@@ -1,6 +1,6 @@
 // The checks of balls that meet on frames written by hand (frame_check.hpp): ball-overlap on centres one ulp closer than
-// R_i + R_j, pass-through on pieces that cross, momentum on responses that gain or lose, relabel on a run whose balls
-// renumbered differ; and how the older checks read a meet (speed and oracle leave a ball that met to them, ghost-bounce
+// R_i + R_j, pass-through on pieces that cross, jump-through on a jump through a ball standing, momentum on responses
+// that gain or lose, relabel on a run whose balls renumbered differ; and how the older checks read a meet (speed and oracle leave a ball that met to them, ghost-bounce
 // and bounce-side take a meet as a bump, swap and translation compare no first contact a meet decided). No kernel makes
 // these mistakes on purpose, so each check is fed the broken frame directly.
 #include <gtest/gtest.h>
@@ -253,6 +253,77 @@ TEST(PassThrough, AThousandBallsAreSortedNotPaired) {
     }
     EXPECT_EQ(pass_verdict(s, {s.balls, along, {}}), "");
     EXPECT_TRUE(has(pass_verdict(s, {s.balls, across, {}}), "ball 5: balls 5 and 37"));
+}
+
+// jump-through: the pieces of no duration pass-through leaves out.
+std::string jump_verdict(const Scene& s, const PathFrame& p) {
+    auto check = make_jump_through(s, KernelId::robust, {});
+    std::vector<std::span<const PathPoint>> spans(p.paths.begin(), p.paths.end());
+    const std::vector<BallMemory> memory(s.balls.size());
+    if (auto r = check->frame(Frame{1, p.events, p.before, memory, {}, {}, spans})) return r->str();
+    return "";
+}
+
+TEST(JumpThrough, AJumpThroughABallStandingFailsOneThatStaysClearHolds) {
+    // Ball 1 hits twice at t = 0.5 against a wall at x = 20: a jump from (10, 11) to (16, 11) there, through ball 0
+    // standing at (13, 11.5) (0.5 from the jump's line, S = 2), from 3.04 away. pass-through leaves it out.
+    Scene s = discs({{13, 11.5}, {10, 10}}, {1, 1});
+    s.walls = {{{20, 0}, {20, 20}}};
+    const auto frame = [&](Vec2 to, Vec2 end, Vec2 other) {
+        return PathFrame{s.balls,
+                         {state(1, 0, other), hit(1, 1, 0, {10, 11}), hit(1, 1, 0, to), state(1, 1, end)},
+                         {{{0, {13, 11.5}}, {1, other}}, {{0, {10, 10}}, {0.5, {10, 11}}, {0.5, to}, {1, end}}}};
+    };
+    const PathFrame through = frame({16, 11}, {16, 14}, {13, 11.5});
+    EXPECT_EQ(pass_verdict(s, through), "");
+    const std::string bad = jump_verdict(s, through);
+    EXPECT_TRUE(has(bad, "jump-through broke at frame 1 ball 0: balls 0 and 1 come closer than R_i + R_j = 1 + 1 at "
+                         "frame time 0.5: ball 1 jumps from (10, 11) to (16, 11) there"))
+        << bad;
+    // Ball 0 moving from (13, 11.5) to (13, 13.5) over the frame: at t = 0.5 at (13, 12.5), its exact point there,
+    // 1.5 from the jump's line.
+    EXPECT_NE(jump_verdict(s, frame({16, 11}, {16, 14}, {13, 13.5})), "");
+    // A jump along y = 9.5, exactly S below ball 0, holds; one ulp closer fails.
+    const auto along = [&](double y) {
+        return PathFrame{s.balls,
+                         {state(1, 0, {13, 11.5}), hit(1, 1, 0, {10, y}), hit(1, 1, 0, {16, y}), state(1, 1, {16, y})},
+                         {{{0, {13, 11.5}}, {1, {13, 11.5}}}, {{0, {10, 10}}, {0.5, {10, y}}, {0.5, {16, y}}, {1, {16, y}}}}};
+    };
+    EXPECT_EQ(jump_verdict(s, along(9.5)), "");
+    EXPECT_NE(jump_verdict(s, along(std::nextafter(9.5, 10.0))), "");
+    // The jump of pass-through's test, from (10, 11) to (10, 12), 3 from ball 0 and clear, holds.
+    EXPECT_EQ(jump_verdict(s, frame({10, 12}, {10, 14}, {13, 11.5})), "");
+}
+
+TEST(JumpThrough, AJumpFromWithinReachOrBesideAnotherJumpIsNotJudged) {
+    Scene s = discs({{13, 11.5}, {12, 11}}, {1, 1});
+    s.walls = {{{20, 0}, {20, 20}}};
+    // From (12, 11), within S of ball 0, through it to (16, 11): no entry from outside.
+    EXPECT_EQ(jump_verdict(s, {s.balls,
+                               {state(1, 0, {13, 11.5}), hit(1, 1, 0, {12, 11}), hit(1, 1, 0, {16, 11}),
+                                state(1, 1, {16, 11})},
+                               {{{0, {13, 11.5}}, {1, {13, 11.5}}},
+                                {{0, {12, 11}}, {0.5, {12, 11}}, {0.5, {16, 11}}, {1, {16, 11}}}}}),
+              "");
+    // Ball 1 from (10, 11) through ball 0's place while ball 0 also jumps at t = 0.5: their order is not printed.
+    Scene both = discs({{13, 11.5}, {10, 11}}, {1, 1});
+    both.walls = s.walls;
+    EXPECT_EQ(jump_verdict(both, {both.balls,
+                                  {hit(1, 0, 0, {13, 11.5}), hit(1, 0, 0, {13, 12}), state(1, 0, {13, 12}),
+                                   hit(1, 1, 0, {10, 11}), hit(1, 1, 0, {16, 11}), state(1, 1, {16, 11})},
+                                  {{{0, {13, 11.5}}, {0.5, {13, 11.5}}, {0.5, {13, 12}}, {1, {13, 12}}},
+                                   {{0, {10, 11}}, {0.5, {10, 11}}, {0.5, {16, 11}}, {1, {16, 11}}}}}),
+              "");
+    // Balls that do not collide jump through each other.
+    Scene apart = discs({{13, 11.5}, {10, 10}}, {1, 1});
+    apart.walls = s.walls;
+    apart.balls_collide = false;
+    EXPECT_EQ(jump_verdict(apart, {apart.balls,
+                                   {state(1, 0, {13, 11.5}), hit(1, 1, 0, {10, 11}), hit(1, 1, 0, {16, 11}),
+                                    state(1, 1, {16, 11})},
+                                   {{{0, {13, 11.5}}, {1, {13, 11.5}}},
+                                    {{0, {10, 10}}, {0.5, {10, 11}}, {0.5, {16, 11}}, {1, {16, 11}}}}}),
+              "");
 }
 
 // momentum: a frame's meets as the World records them, and the lines it printed.

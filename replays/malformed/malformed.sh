@@ -46,7 +46,7 @@ case "$kind" in
   negative-frames)   printf '%s\nframes -3\n' "$h" >"$f"; want='2:8: error: negative frame count -3' ;;
   absurd-frames)     printf '%s\nframes 99999999999\n' "$h" >"$f"; want='2:8: error: frame count 99999999999 is over the limit of 10000000' ;;
   unknown-kernel)    printf '%s\nkernel fast\n' "$h" >"$f"; want="2:8: error: unknown kernel 'fast' ($kernels)" ;;
-  unknown-check)     printf '%s\ncheck speedy\n' "$h" >"$f"; want='2:7: error: unknown check '\''speedy'\'' (no-tunnel, symmetry, boundary, speed, deterministic, oracle, swap, translation, broad-phase, round-trip, no-escape, bounce-side, accuracy, event-order, penetration, ghost-bounce, plan, ball-overlap, pass-through, momentum, relabel)' ;;
+  unknown-check)     printf '%s\ncheck speedy\n' "$h" >"$f"; want='2:7: error: unknown check '\''speedy'\'' (no-tunnel, symmetry, boundary, speed, deterministic, oracle, swap, translation, broad-phase, round-trip, no-escape, bounce-side, accuracy, event-order, penetration, ghost-bounce, plan, ball-overlap, pass-through, momentum, relabel, jump-through)' ;;
   future-version)    printf 'ricochet 2\n' >"$f"; want='1:10: error: format version 2 is newer than this reader (it reads version 1)' ;;
   missing-header)    printf 'wall 0 0 1 1\n' >"$f"; want='1:1: error: expected the header '\''ricochet 1'\'' before '\''wall'\''' ;;
   duplicate-header)  printf '%s\n%s\n' "$h" "$h" >"$f"; want='2:1: error: duplicate header '\''ricochet'\''' ;;

@@ -32,14 +32,15 @@ enum class Check : std::uint8_t {
     pass_through,  ///< balls that meet: no two balls pass through each other without a meet
     momentum,      ///< balls that meet: each meet keeps momentum and kinetic energy within the stated bound
     relabel,       ///< balls that meet: renumbering the balls gives the same physics
+    jump_through,  ///< balls that meet: no ball's printed jump (two points at one time) passes through another
 };
 /// Every check, in the order of the enumeration.
-inline constexpr std::array<Check, 21> k_all_checks = {
+inline constexpr std::array<Check, 22> k_all_checks = {
     Check::no_tunnel,    Check::symmetry,    Check::boundary,    Check::speed,       Check::deterministic,
     Check::oracle,       Check::swap,        Check::translation, Check::broad_phase, Check::round_trip,
     Check::no_escape,    Check::bounce_side, Check::accuracy,    Check::event_order, Check::penetration,
     Check::ghost_bounce, Check::plan,        Check::ball_overlap, Check::pass_through, Check::momentum,
-    Check::relabel};
+    Check::relabel,      Check::jump_through};
 /// The check's name as logs spell it ("no-tunnel", …).
 std::string_view check_name(Check c);
 /// The check called name, or nothing.

@@ -29,6 +29,7 @@ std::string_view check_name(Check c) {
         case Check::pass_through: return "pass-through";
         case Check::momentum: return "momentum";
         case Check::relabel: return "relabel";
+        case Check::jump_through: return "jump-through";
     }
     return "?";
 }

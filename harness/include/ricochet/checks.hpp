@@ -214,6 +214,14 @@
 //                  order, so from a frame where a meet was taken while another sharing a ball was due at the same
 //                  exact time (MeetRecord::tied, the World's own exact decision), in either run, the two may part:
 //                  that frame and every later one are not compared. Other scenes pass.
+//   jump-through   In a scene whose balls collide: for each frame, each pair i < j with S > 0 and each jump of one of
+//                  them — a piece of zero duration of its path as pass-through reads it, from p0 to p1 at frame
+//                  time c (two printed points at one time that differ) — against the other ball at c (its printed
+//                  point at c, else its exact point on its piece across c): a jump that starts at least S from it
+//                  stays at least S from it along the straight line p0 → p1: |D + W·u|² ≥ S² for u in [0, 1], D =
+//                  p0 − P(c), W = p1 − p0, exactly in rationals (truth::jump_clearance). Where the other ball also has
+//                  points at c that differ, the log does not print the order of the two moves: not judged. The
+//                  World's path must be the printed path, as for pass-through. Other scenes pass.
 //
 // Discs and bumpers: every check is defined in a scene with a disc or a bumper: no-tunnel, speed, no-escape (each
 // as written above, read for the disc's centre: its printed path, its velocity; m counts the bounces off bumpers

@@ -62,6 +62,7 @@ std::unique_ptr<FrameCheck> make_ghost_bounce(const Scene& scene, KernelId kerne
 std::unique_ptr<FrameCheck> make_plan(const Scene& scene, KernelId kernel, const WorldOptions& world);
 std::unique_ptr<FrameCheck> make_ball_overlap(const Scene& scene, KernelId kernel, const WorldOptions& world);
 std::unique_ptr<FrameCheck> make_pass_through(const Scene& scene, KernelId kernel, const WorldOptions& world);
+std::unique_ptr<FrameCheck> make_jump_through(const Scene& scene, KernelId kernel, const WorldOptions& world);
 std::unique_ptr<FrameCheck> make_momentum(const Scene& scene, KernelId kernel, const WorldOptions& world);
 std::unique_ptr<FrameCheck> make_relabel(const Scene& scene, KernelId kernel, const WorldOptions& world);
 

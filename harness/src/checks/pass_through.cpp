@@ -1,6 +1,8 @@
 // pass-through: two balls never pass through each other within a frame. On every common time interval of two
 // pieces of their paths (printed points with their frame times, uniform motion between), a pair at least S = R_i +
 // R_j apart at the interval's start stays at least S apart over it (checks.hpp), decided exactly.
+// jump-through, on the same paths: the pieces of no duration that pass-through leaves out (a ball's printed points at
+// one time, moving straight from one to the next there), each against the other ball standing at that time.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -20,7 +22,7 @@ namespace {
 
 class PassThrough final : public FrameCheck {
 public:
-    explicit PassThrough(const Scene& scene) : scene_(scene), active_(scene.balls_collide) {
+    PassThrough(const Scene& scene, Check which) : scene_(scene), which_(which), active_(scene.balls_collide) {
         for (const Ball& b : scene.balls) radii_.push_back(reach_of(b.r));
     }
 
@@ -69,7 +71,7 @@ private:
             same = given[k].p == printed[j++] && (k == 0 || given[k - 1].t <= given[k].t);
         }
         if (!same)
-            return failure(Check::pass_through, f.index, i,
+            return failure(which_, f.index, i,
                            fmt::format("the World's path of ball {} in this frame ({} points) is not its printed path "
                                        "({} points: its state before, its hits, bumps and meets, its state) from t = 0 "
                                        "to t = 1",
@@ -78,9 +80,14 @@ private:
         return std::nullopt;
     }
 
-    /// Balls i < j over the frame: each common time interval of a piece of each (pieces of zero duration left out).
+    /// Balls i < j over the frame: each common time interval of a piece of each (pieces of zero duration left out), or
+    /// for jump-through, those pieces.
     std::optional<CheckFailure> pair(std::int64_t frame, std::uint32_t i, std::uint32_t j) const {
         const std::vector<PathPoint>&a = paths_[i], &b = paths_[j];
+        if (which_ == Check::jump_through) {
+            if (auto bad = jumps(frame, i, j, true)) return bad;
+            return jumps(frame, i, j, false);
+        }
         std::size_t k = 0, m = 0;
         while (k + 1 < a.size() && m + 1 < b.size()) {
             const PathPoint &a0 = a[k], &a1 = a[k + 1], &b0 = b[m], &b1 = b[m + 1];
@@ -112,7 +119,42 @@ private:
         return std::nullopt;
     }
 
+    /// The jumps of ball i (i_jumps) or j: each piece of no duration, from p0 to p1 at frame time c, against the
+    /// other ball standing at c — its printed point there, else its exact point on its piece across c. One that starts
+    /// at least S from it and comes closer passes through it. Where the other ball has points at c that differ, it
+    /// moves there too, in an order the log does not print: not judged.
+    std::optional<CheckFailure> jumps(std::int64_t frame, std::uint32_t i, std::uint32_t j, bool i_jumps) const {
+        const std::uint32_t mover = i_jumps ? i : j, other = i_jumps ? j : i;
+        const std::vector<PathPoint>&a = paths_[mover], &b = paths_[other];
+        for (std::size_t k = 0; k + 1 < a.size(); ++k) {
+            const PathPoint &p0 = a[k], &p1 = a[k + 1];
+            if (p0.t != p1.t || p0.p == p1.p) continue;
+            const double c = p0.t;
+            // The other's first point at or after c (its path runs from t = 0 to t = 1, so there is one).
+            const auto at = std::lower_bound(b.begin(), b.end(), c, [](const PathPoint& q, double t) { return q.t < t; });
+            if (at == b.end()) continue;
+            PathPoint s0 = *at, s1 = *at;
+            if (at->t == c) {
+                if (std::any_of(at, b.end(), [&](const PathPoint& q) { return q.t == c && !(q.p == at->p); })) continue;
+            } else {
+                if (at == b.begin()) continue;
+                s0 = *(at - 1);
+            }
+            const truth::PairClearance cl = truth::jump_clearance(p0.p, p1.p, c, s0, s1, radii_[mover], radii_[other]);
+            if (cl.start >= 0 && cl.least < 0)
+                return failure(which_, frame, i,
+                               fmt::format("balls {} and {} come closer than R_i + R_j = {} + {} at frame time {}: ball {} "
+                                           "jumps from {} to {} there (two printed points at one time), at least that "
+                                           "far from ball {} (on {} -> {}, t {} to {}) where it starts; expected them to "
+                                           "meet first",
+                                           i, j, scene_.balls[i].r, scene_.balls[j].r, c, mover, p0.p, p1.p, other,
+                                           s0.p, s1.p, s0.t, s1.t));
+        }
+        return std::nullopt;
+    }
+
     const Scene& scene_;
+    Check which_;  ///< pass-through or jump-through
     bool active_;
     std::vector<double> radii_;
     std::vector<std::vector<PathPoint>> paths_;  ///< the frame's paths, as judged
@@ -121,7 +163,11 @@ private:
 }  // namespace
 
 std::unique_ptr<FrameCheck> make_pass_through(const Scene& scene, KernelId, const WorldOptions&) {
-    return std::make_unique<PassThrough>(scene);
+    return std::make_unique<PassThrough>(scene, Check::pass_through);
+}
+
+std::unique_ptr<FrameCheck> make_jump_through(const Scene& scene, KernelId, const WorldOptions&) {
+    return std::make_unique<PassThrough>(scene, Check::jump_through);
 }
 
 }  // namespace ricochet::checks

@@ -61,6 +61,7 @@ std::unique_ptr<FrameCheck> make_check(Check c, const Scene& scene, KernelId ker
         case Check::pass_through: return make_pass_through(scene, kernel, world);
         case Check::momentum: return make_momentum(scene, kernel, world);
         case Check::relabel: return make_relabel(scene, kernel, world);
+        case Check::jump_through: return make_jump_through(scene, kernel, world);
     }
     return nullptr;
 }

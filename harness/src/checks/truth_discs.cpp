@@ -264,6 +264,30 @@ std::pair<Rational, Rational> point_at(PathPoint p0, PathPoint p1, const Rationa
     return {Q(p0.p.x) + f * (Q(p1.p.x) - Q(p0.p.x)), Q(p0.p.y) + f * (Q(p1.p.y) - Q(p0.p.y))};
 }
 
+/// D + W·u over u in [0, length] against S (pieces_clearance, jump_clearance), exactly.
+PairClearance clearance(const Rational& dx, const Rational& dy, const Rational& wx, const Rational& wy,
+                        const Rational& length, const Rational& s) {
+    const Rational s2 = s * s;
+    PairClearance c;
+    c.start = sgn(dx * dx + dy * dy - s2);
+    const Rational dw = dx * wx + dy * wy, ww = wx * wx + wy * wy;
+    // Moving apart, or not at all (W = 0): the least distance is the one at the start.
+    if (sgn(dw) >= 0) {
+        c.least = c.start;
+        return c;
+    }
+    // u* = −D·W/(W·W) ≥ length: still approaching at the end, the least distance is there.
+    if (-dw >= length * ww) {
+        const Rational ex = dx + wx * length, ey = dy + wy * length;
+        c.least = sgn(ex * ex + ey * ey - s2);
+        return c;
+    }
+    // Inside: min |D + W·u|² = |D|² − (D·W)²/(W·W) = (D × W)²/(W·W); compare with S², times W·W > 0.
+    const Rational cross = dx * wy - dy * wx;
+    c.least = sgn(cross * cross - s2 * ww);
+    return c;
+}
+
 /// (p1 − p0)/(t1 − t0): the piece's velocity in frame time.
 std::pair<Rational, Rational> velocity_of(PathPoint p0, PathPoint p1) {
     const Rational dt = Q(p1.t) - Q(p0.t);
@@ -282,27 +306,14 @@ PairClearance pieces_clearance(PathPoint a0, PathPoint a1, PathPoint b0, PathPoi
     const auto [vax, vay] = velocity_of(a0, a1);
     const auto [vbx, vby] = velocity_of(b0, b1);
     // D(lo + u) = D + W·u.
-    const Rational dx = ax - bx, dy = ay - by, wx = vax - vbx, wy = vay - vby;
-    const Rational s = Q(Ra) + Q(Rb), s2 = s * s;
-    PairClearance c;
-    c.start = sgn(dx * dx + dy * dy - s2);
-    const Rational dw = dx * wx + dy * wy, ww = wx * wx + wy * wy;
-    // Moving apart, or not at all (W = 0): the least distance is the one at lo.
-    if (sgn(dw) >= 0) {
-        c.least = c.start;
-        return c;
-    }
-    const Rational length = hi - lo;
-    // u* = −D·W/(W·W) ≥ hi − lo: still approaching at hi, the least distance is there.
-    if (-dw >= length * ww) {
-        const Rational ex = dx + wx * length, ey = dy + wy * length;
-        c.least = sgn(ex * ex + ey * ey - s2);
-        return c;
-    }
-    // Inside: min |D + W·u|² = |D|² − (D·W)²/(W·W) = (D × W)²/(W·W); compare with S², times W·W > 0.
-    const Rational cross = dx * wy - dy * wx;
-    c.least = sgn(cross * cross - s2 * ww);
-    return c;
+    return clearance(ax - bx, ay - by, vax - vbx, vay - vby, hi - lo, Q(Ra) + Q(Rb));
+}
+
+PairClearance jump_clearance(Vec2 p0, Vec2 p1, double c, PathPoint b0, PathPoint b1, double Ra, double Rb) {
+    if (boxes_apart(p0, p1, b0.p, b1.p, (Ra + Rb) * (1.0 + 0x1p-52))) return {1, 1};
+    const auto [bx, by] = b0.t < b1.t ? point_at(b0, b1, Q(c)) : std::pair{Q(b0.p.x), Q(b0.p.y)};
+    // D + W·u, u in [0, 1]: the jump's straight line, ball b standing.
+    return clearance(Q(p0.x) - bx, Q(p0.y) - by, Q(p1.x) - Q(p0.x), Q(p1.y) - Q(p0.y), Rational(1), Q(Ra) + Q(Rb));
 }
 
 MeetConservation meet_conservation(double ma, double mb, Vec2 va, Vec2 vb, Vec2 oa, Vec2 ob, double momentum_rel,
