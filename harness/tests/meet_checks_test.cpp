@@ -1,8 +1,9 @@
-// The checks of balls that meet on frames written by hand (frame_check.hpp): ball-overlap on centres one ulp closer than
-// R_i + R_j, pass-through on pieces that cross, jump-through on a jump through a ball standing, momentum on responses
-// that gain or lose, relabel on a run whose balls renumbered differ; and how the older checks read a meet (speed and oracle leave a ball that met to them, ghost-bounce
-// and bounce-side take a meet as a bump, swap and translation compare no first contact a meet decided). No kernel makes
-// these mistakes on purpose, so each check is fed the broken frame directly.
+// The checks of balls that meet on frames written by hand (frame_check.hpp): ball-overlap on centres one ulp closer
+// than R_i + R_j, pass-through on pieces that cross, jump-through on a jump through a ball standing, momentum on
+// responses that gain or lose, relabel on a run whose balls renumbered differ; and how the older checks read a meet
+// (speed and oracle leave a ball that met to them, ghost-bounce and bounce-side take a meet as a bump, swap and
+// translation compare no first contact a meet decided). No kernel makes these mistakes on purpose, so each check is
+// fed the broken frame directly.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -287,7 +288,8 @@ TEST(JumpThrough, AJumpThroughABallStandingFailsOneThatStaysClearHolds) {
     const auto along = [&](double y) {
         return PathFrame{s.balls,
                          {state(1, 0, {13, 11.5}), hit(1, 1, 0, {10, y}), hit(1, 1, 0, {16, y}), state(1, 1, {16, y})},
-                         {{{0, {13, 11.5}}, {1, {13, 11.5}}}, {{0, {10, 10}}, {0.5, {10, y}}, {0.5, {16, y}}, {1, {16, y}}}}};
+                         {{{0, {13, 11.5}}, {1, {13, 11.5}}},
+                          {{0, {10, 10}}, {0.5, {10, y}}, {0.5, {16, y}}, {1, {16, y}}}}};
     };
     EXPECT_EQ(jump_verdict(s, along(9.5)), "");
     EXPECT_NE(jump_verdict(s, along(std::nextafter(9.5, 10.0))), "");

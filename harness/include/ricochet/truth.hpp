@@ -206,7 +206,7 @@ struct PairClearance {
 };
 PairClearance pieces_clearance(PathPoint a0, PathPoint a1, PathPoint b0, PathPoint b1, double Ra, double Rb);
 
-/// A jump against a ball standing (`pass-through`): ball a moves from p0 to p1 at one frame time c (a piece of no
+/// A jump against a ball standing (`jump-through`): ball a moves from p0 to p1 at one frame time c (a piece of no
 /// duration, its printed points at one time), ball b at c on its piece b0 → b1 (b0.t ≤ c ≤ b1.t; its exact point
 /// there, or b0.p where b0.t = b1.t). With D = p0 − P_b(c) and W = p1 − p0, D + W·u over u in [0, 1], as above.
 PairClearance jump_clearance(Vec2 p0, Vec2 p1, double c, PathPoint b0, PathPoint b1, double Ra, double Rb);

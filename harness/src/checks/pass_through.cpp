@@ -131,22 +131,25 @@ private:
             if (p0.t != p1.t || p0.p == p1.p) continue;
             const double c = p0.t;
             // The other's first point at or after c (its path runs from t = 0 to t = 1, so there is one).
-            const auto at = std::lower_bound(b.begin(), b.end(), c, [](const PathPoint& q, double t) { return q.t < t; });
+            const auto at =
+                std::lower_bound(b.begin(), b.end(), c, [](const PathPoint& q, double t) { return q.t < t; });
             if (at == b.end()) continue;
             PathPoint s0 = *at, s1 = *at;
             if (at->t == c) {
-                if (std::any_of(at, b.end(), [&](const PathPoint& q) { return q.t == c && !(q.p == at->p); })) continue;
+                const auto moves = [&](const PathPoint& q) { return q.t == c && !(q.p == at->p); };
+                if (std::any_of(at, b.end(), moves)) continue;
             } else {
                 if (at == b.begin()) continue;
                 s0 = *(at - 1);
             }
-            const truth::PairClearance cl = truth::jump_clearance(p0.p, p1.p, c, s0, s1, radii_[mover], radii_[other]);
+            const truth::PairClearance cl =
+                truth::jump_clearance(p0.p, p1.p, c, s0, s1, radii_[mover], radii_[other]);
             if (cl.start >= 0 && cl.least < 0)
                 return failure(which_, frame, i,
-                               fmt::format("balls {} and {} come closer than R_i + R_j = {} + {} at frame time {}: ball {} "
-                                           "jumps from {} to {} there (two printed points at one time), at least that "
-                                           "far from ball {} (on {} -> {}, t {} to {}) where it starts; expected them to "
-                                           "meet first",
+                               fmt::format("balls {} and {} come closer than R_i + R_j = {} + {} at frame time {}: "
+                                           "ball {} jumps from {} to {} there (two printed points at one time), at "
+                                           "least that far from ball {} (on {} -> {}, t {} to {}) where it starts; "
+                                           "expected them to meet first",
                                            i, j, scene_.balls[i].r, scene_.balls[j].r, c, mover, p0.p, p1.p, other,
                                            s0.p, s1.p, s0.t, s1.t));
         }

@@ -153,7 +153,6 @@ private:
     /// off a printed point at its time is a jump after it.
     void end_at(std::uint32_t i, const meet::PointOnPath& p, double t, std::vector<PathPoint>& out) const;
 
-
     /// The time a path cut at a meet's centre (too_close) leaves its last printed point: its last piece's start.
     static double piece_start(const std::vector<PathPoint>& cut) {
         return cut.size() >= 2 ? cut[cut.size() - 2].t : cut.back().t;
