@@ -147,12 +147,16 @@ struct PathFrame {
     std::vector<std::vector<PathPoint>> paths;  // empty: the World gives none
 };
 
-std::string pass_verdict(const Scene& s, const PathFrame& p) {
-    auto check = make_pass_through(s, KernelId::robust, {});
+/// What a check of the balls' paths (pass-through, jump-through) says of frame 1: its failure, "" if none.
+std::string path_verdict(FrameCheck& check, const Scene& s, const PathFrame& p) {
     std::vector<std::span<const PathPoint>> spans(p.paths.begin(), p.paths.end());
     const std::vector<BallMemory> memory(s.balls.size());
-    if (auto r = check->frame(Frame{1, p.events, p.before, memory, {}, {}, spans})) return r->str();
+    if (auto r = check.frame(Frame{1, p.events, p.before, memory, {}, {}, spans})) return r->str();
     return "";
+}
+
+std::string pass_verdict(const Scene& s, const PathFrame& p) {
+    return path_verdict(*make_pass_through(s, KernelId::robust, {}), s, p);
 }
 
 TEST(PassThrough, TwoBallsCrossingWithinAFrameFail) {
@@ -258,11 +262,7 @@ TEST(PassThrough, AThousandBallsAreSortedNotPaired) {
 
 // jump-through: the pieces of no duration pass-through leaves out.
 std::string jump_verdict(const Scene& s, const PathFrame& p) {
-    auto check = make_jump_through(s, KernelId::robust, {});
-    std::vector<std::span<const PathPoint>> spans(p.paths.begin(), p.paths.end());
-    const std::vector<BallMemory> memory(s.balls.size());
-    if (auto r = check->frame(Frame{1, p.events, p.before, memory, {}, {}, spans})) return r->str();
-    return "";
+    return path_verdict(*make_jump_through(s, KernelId::robust, {}), s, p);
 }
 
 TEST(JumpThrough, AJumpThroughABallStandingFailsOneThatStaysClearHolds) {
