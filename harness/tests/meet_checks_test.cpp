@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -147,6 +148,15 @@ struct PathFrame {
     std::vector<std::vector<PathPoint>> paths;  // empty: the World gives none
 };
 
+/// Ball 1 jumping: from its place in the scene to `from` by t = 0.5, two hits there (a piece of no duration from
+/// `from` to `to`), then to `end` at t = 1; ball 0 from its place to `other_end` over the frame (default: standing).
+PathFrame jump_frame(const Scene& s, Vec2 from, Vec2 to, Vec2 end, std::optional<Vec2> other_end = {}) {
+    const Vec2 still = other_end.value_or(s.balls[0].pos);
+    return {s.balls,
+            {state(1, 0, still), hit(1, 1, 0, from), hit(1, 1, 0, to), state(1, 1, end)},
+            {{{0, s.balls[0].pos}, {1, still}}, {{0, s.balls[1].pos}, {0.5, from}, {0.5, to}, {1, end}}}};
+}
+
 /// What a check of the balls' paths (pass-through, jump-through) says of frame 1: its failure, "" if none.
 std::string path_verdict(FrameCheck& check, const Scene& s, const PathFrame& p) {
     std::vector<std::span<const PathPoint>> spans(p.paths.begin(), p.paths.end());
@@ -229,19 +239,9 @@ TEST(PassThrough, APairCloserThanSAtAnIntervalsStartIsNotJudgedThere) {
     // 3 from ball 0, clear, before and after.
     Scene jump = discs({{13, 11.5}, {10, 10}}, {1, 1});
     jump.walls = {{{20, 0}, {20, 20}}};
-    EXPECT_EQ(pass_verdict(jump, {jump.balls,
-                                  {state(1, 0, {13, 11.5}), hit(1, 1, 0, {10, 11}), hit(1, 1, 0, {10, 12}),
-                                   state(1, 1, {10, 14})},
-                                  {{{0, {13, 11.5}}, {1, {13, 11.5}}},
-                                   {{0, {10, 10}}, {0.5, {10, 11}}, {0.5, {10, 12}}, {1, {10, 14}}}}}),
-              "");
+    EXPECT_EQ(pass_verdict(jump, jump_frame(jump, {10, 11}, {10, 12}, {10, 14})), "");
     // Its piece after the jump, turned to pass 0.5 from ball 0, is judged.
-    EXPECT_NE(pass_verdict(jump, {jump.balls,
-                                  {state(1, 0, {13, 11.5}), hit(1, 1, 0, {10, 11}), hit(1, 1, 0, {10, 12}),
-                                   state(1, 1, {16, 12})},
-                                  {{{0, {13, 11.5}}, {1, {13, 11.5}}},
-                                   {{0, {10, 10}}, {0.5, {10, 11}}, {0.5, {10, 12}}, {1, {16, 12}}}}}),
-              "");
+    EXPECT_NE(pass_verdict(jump, jump_frame(jump, {10, 11}, {10, 12}, {16, 12})), "");
 }
 
 TEST(PassThrough, AThousandBallsAreSortedNotPaired) {
@@ -270,12 +270,7 @@ TEST(JumpThrough, AJumpThroughABallStandingFailsOneThatStaysClearHolds) {
     // standing at (13, 11.5) (0.5 from the jump's line, S = 2), from 3.04 away. pass-through leaves it out.
     Scene s = discs({{13, 11.5}, {10, 10}}, {1, 1});
     s.walls = {{{20, 0}, {20, 20}}};
-    const auto frame = [&](Vec2 to, Vec2 end, Vec2 other) {
-        return PathFrame{s.balls,
-                         {state(1, 0, other), hit(1, 1, 0, {10, 11}), hit(1, 1, 0, to), state(1, 1, end)},
-                         {{{0, {13, 11.5}}, {1, other}}, {{0, {10, 10}}, {0.5, {10, 11}}, {0.5, to}, {1, end}}}};
-    };
-    const PathFrame through = frame({16, 11}, {16, 14}, {13, 11.5});
+    const PathFrame through = jump_frame(s, {10, 11}, {16, 11}, {16, 14});
     EXPECT_EQ(pass_verdict(s, through), "");
     const std::string bad = jump_verdict(s, through);
     EXPECT_TRUE(has(bad, "jump-through broke at frame 1 ball 0: balls 0 and 1 come closer than R_i + R_j = 1 + 1 at "
@@ -283,30 +278,20 @@ TEST(JumpThrough, AJumpThroughABallStandingFailsOneThatStaysClearHolds) {
         << bad;
     // Ball 0 moving from (13, 11.5) to (13, 13.5) over the frame: at t = 0.5 at (13, 12.5), its exact point there,
     // 1.5 from the jump's line.
-    EXPECT_NE(jump_verdict(s, frame({16, 11}, {16, 14}, {13, 13.5})), "");
+    EXPECT_NE(jump_verdict(s, jump_frame(s, {10, 11}, {16, 11}, {16, 14}, Vec2{13, 13.5})), "");
     // A jump along y = 9.5, exactly S below ball 0, holds; one ulp closer fails.
-    const auto along = [&](double y) {
-        return PathFrame{s.balls,
-                         {state(1, 0, {13, 11.5}), hit(1, 1, 0, {10, y}), hit(1, 1, 0, {16, y}), state(1, 1, {16, y})},
-                         {{{0, {13, 11.5}}, {1, {13, 11.5}}},
-                          {{0, {10, 10}}, {0.5, {10, y}}, {0.5, {16, y}}, {1, {16, y}}}}};
-    };
+    const auto along = [&](double y) { return jump_frame(s, {10, y}, {16, y}, {16, y}); };
     EXPECT_EQ(jump_verdict(s, along(9.5)), "");
     EXPECT_NE(jump_verdict(s, along(std::nextafter(9.5, 10.0))), "");
     // The jump of pass-through's test, from (10, 11) to (10, 12), 3 from ball 0 and clear, holds.
-    EXPECT_EQ(jump_verdict(s, frame({10, 12}, {10, 14}, {13, 11.5})), "");
+    EXPECT_EQ(jump_verdict(s, jump_frame(s, {10, 11}, {10, 12}, {10, 14})), "");
 }
 
 TEST(JumpThrough, AJumpFromWithinReachOrBesideAnotherJumpIsNotJudged) {
     Scene s = discs({{13, 11.5}, {12, 11}}, {1, 1});
     s.walls = {{{20, 0}, {20, 20}}};
     // From (12, 11), within S of ball 0, through it to (16, 11): no entry from outside.
-    EXPECT_EQ(jump_verdict(s, {s.balls,
-                               {state(1, 0, {13, 11.5}), hit(1, 1, 0, {12, 11}), hit(1, 1, 0, {16, 11}),
-                                state(1, 1, {16, 11})},
-                               {{{0, {13, 11.5}}, {1, {13, 11.5}}},
-                                {{0, {12, 11}}, {0.5, {12, 11}}, {0.5, {16, 11}}, {1, {16, 11}}}}}),
-              "");
+    EXPECT_EQ(jump_verdict(s, jump_frame(s, {12, 11}, {16, 11}, {16, 11})), "");
     // Ball 1 from (10, 11) through ball 0's place while ball 0 also jumps at t = 0.5: their order is not printed.
     Scene both = discs({{13, 11.5}, {10, 11}}, {1, 1});
     both.walls = s.walls;
@@ -320,12 +305,7 @@ TEST(JumpThrough, AJumpFromWithinReachOrBesideAnotherJumpIsNotJudged) {
     Scene apart = discs({{13, 11.5}, {10, 10}}, {1, 1});
     apart.walls = s.walls;
     apart.balls_collide = false;
-    EXPECT_EQ(jump_verdict(apart, {apart.balls,
-                                   {state(1, 0, {13, 11.5}), hit(1, 1, 0, {10, 11}), hit(1, 1, 0, {16, 11}),
-                                    state(1, 1, {16, 11})},
-                                   {{{0, {13, 11.5}}, {1, {13, 11.5}}},
-                                    {{0, {10, 10}}, {0.5, {10, 11}}, {0.5, {16, 11}}, {1, {16, 11}}}}}),
-              "");
+    EXPECT_EQ(jump_verdict(apart, jump_frame(apart, {10, 11}, {16, 11}, {16, 11})), "");
 }
 
 // momentum: a frame's meets as the World records them, and the lines it printed.
