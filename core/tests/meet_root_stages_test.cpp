@@ -6,14 +6,17 @@
 // (response.cpp), staged the same way.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <random>
 #include <vector>
 
 #include "base/bignum.hpp"
 #include "base/round.hpp"
+#include "kernels/disc/arith.hpp"
 #include "kernels/meet/response.hpp"
 #include "kernels/meet/root.hpp"
 
@@ -138,6 +141,11 @@ TEST(MeetRootStages, PointsAndClosenessEqualTheRationalOnes) {
     for (int n = 0; n < 20000; ++n) {
         const double s = scale_of(rng);
         double t0 = t01(rng), t1 = t01(rng), t = t01(rng);
+        if (n % 4 == 0) {
+            // A piece over the whole frame: point_at's fraction is t itself.
+            t0 = 0.0;
+            t1 = 1.0;
+        }
         if (t0 > t1) std::swap(t0, t1);
         if (t0 == t1) continue;
         t = t0 + (t1 - t0) * t;
@@ -164,6 +172,25 @@ TEST(MeetRootStages, PointsAndClosenessEqualTheRationalOnes) {
         ++touching_cases;
     }
     EXPECT_GT(touching_cases, 2000);
+}
+
+TEST(MeetRootStages, TheGapToANeighbourIsNextaftersOne) {
+    // nearest_double's half gap (kernels/disc/arith.hpp) from the bits, against std::nextafter: the edges (zeros,
+    // subnormals, powers of two, the largest double), then doubles of every exponent from random bits.
+    const auto want = [](double x) {
+        return std::fmin(std::nextafter(x, HUGE_VAL) - x, x - std::nextafter(x, -HUGE_VAL));
+    };
+    std::vector<double> xs{0.0, std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::min(),
+                           std::nextafter(std::numeric_limits<double>::min(), 0.0), 0.5, 1.0, 2.0, 3.0, 0x1p-1022,
+                           0x1p1023, std::numeric_limits<double>::max(), 0.1, 1e300};
+    std::mt19937_64 rng(4);
+    for (int n = 0; n < 20000; ++n) {
+        const double x = std::bit_cast<double>(rng());
+        if (std::isfinite(x)) xs.push_back(x);
+    }
+    for (std::size_t n = 0, count = xs.size(); n < count; ++n) xs.push_back(-xs[n]);
+    for (const double x : xs)
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(disc::smaller_gap(x)), std::bit_cast<std::uint64_t>(want(x))) << x;
 }
 
 TEST(MeetRootStages, ApproachIsTheRationalOne) {

@@ -13,8 +13,10 @@
 // The polynomials are homogeneous in lengths, so the common scale does not change a sign.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 
 #include "base/bignum.hpp"
@@ -86,6 +88,8 @@ inline Approx approx(double x) { return {x, 0.0}; }
 // decided here, as is a near-tie within 2^−100 or so of its size; only the rest reaches GMP. Magnitudes outside the
 // split's range, and underflow, add an absolute 2^−1000 or a relative 2^−52 instead. The bound is summed in
 // doubles and so may be low by a few ulps, which the decision covers with a 2^−40 margin as Approx's does.
+// The sum and the product are always inlined: a call passes three doubles in memory each way, and inlined, the
+// branches on inputs that are doubles (lo = 0) fold away.
 
 /// A double-double with an error bound: the exact value is within e of hi + lo.
 struct Approx2 {
@@ -134,7 +138,7 @@ inline double term(double x, double y) {
 
 }  // namespace fine
 
-inline Approx2 operator+(Approx2 a, Approx2 b) {
+[[gnu::always_inline]] inline Approx2 operator+(Approx2 a, Approx2 b) {
     // Two doubles (an input, a product of two): their sum is exactly two-sum's pair.
     if (a.lo == 0.0 && b.lo == 0.0) {
         Approx2 out;
@@ -154,7 +158,7 @@ inline Approx2 operator+(Approx2 a, Approx2 b) {
 }
 inline Approx2 operator-(Approx2 a) { return {-a.hi, -a.lo, a.e}; }
 inline Approx2 operator-(Approx2 a, Approx2 b) { return a + (-b); }
-inline Approx2 operator*(Approx2 a, Approx2 b) {
+[[gnu::always_inline]] inline Approx2 operator*(Approx2 a, Approx2 b) {
     // (a.hi + a.lo)(b.hi + b.lo) = p + pe + (c1 + f1) + (c2 + f2) + (c3 + f3); kept: p + pe + c1 + c2 + c3 (their
     // sums' roundings g1..g3 dropped), dropped: f1..f3, g1..g3; and the inputs' errors, propagated.
     double slop = 0.0, p, pe;
@@ -220,6 +224,16 @@ inline Approx2 operator/(Approx2 a, Approx2 b) {
     out.e = ((rho.e + mr * (0x1p-51 + b.e / bmin)) / bmin) * (1.0 + 0x1p-40) + std::fabs(q2) * 0x1p-52 + 0x1p-1000;
     return out;
 }
+/// The smaller of the gaps between finite x and its two neighbouring doubles, as std::nextafter's would give them:
+/// |x|'s bits one step down and one up (0's neighbours are ±2^−1074; the largest double's upper one is infinity,
+/// whose gap fmin passes over). Each difference of neighbours is exact.
+inline double smaller_gap(double x) {
+    const double a = std::fabs(x);
+    const auto bits = std::bit_cast<std::uint64_t>(a);
+    if (bits == 0) return std::numeric_limits<double>::denorm_min();
+    return std::fmin(std::bit_cast<double>(bits + 1) - a, a - std::bit_cast<double>(bits - 1));
+}
+
 /// The double nearest to the exact value, if the bound decides it: hi + lo rounds to x, and every value within e of
 /// hi + lo lies closer to x than half the gap to x's nearer neighbour.
 inline std::optional<double> nearest_double(Approx2 a) {
@@ -227,7 +241,7 @@ inline std::optional<double> nearest_double(Approx2 a) {
     const double x = a.hi + a.lo;
     // hi − x is 0 or one of hi's ulps (exact); r is the distance from hi + lo to x, rounded by ≤ 2^−53·|r|.
     const double r = (a.hi - x) + a.lo;
-    const double gap = std::fmin(std::nextafter(x, HUGE_VAL) - x, x - std::nextafter(x, -HUGE_VAL));
+    const double gap = smaller_gap(x);
     if (0.5 * gap - std::fabs(r) * (1.0 + 0x1p-50) > a.e * (1.0 + 0x1p-40) + 0x1p-1070) return x;
     return std::nullopt;
 }

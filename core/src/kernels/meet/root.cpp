@@ -311,8 +311,10 @@ PointOnPath point_at(std::span<const PathPoint> path, double t) {
     while (k + 1 < path.size() && path[k + 1].t <= t) ++k;
     if (path[k].t == t || k + 1 >= path.size()) return {path[k].p, k};
     const Piece s{path[k].t, path[k + 1].t, path[k].p, path[k + 1].p};
-    // X = P0 + (t − t0)·(P1 − P0)/(t1 − t0), each coordinate rounded to nearest: bounded first, then exactly.
-    const Approx2 f = (fine(t) - fine(s.t0)) / (fine(s.t1) - fine(s.t0));
+    // X = P0 + (t − t0)·(P1 − P0)/(t1 − t0), each coordinate rounded to nearest: bounded first, then exactly. On a
+    // piece over the whole frame (a ball no contact has cut) the fraction is t itself, exact: no quotient's bound.
+    const Approx2 f =
+        s.t0 == 0.0 && s.t1 == 1.0 ? fine(t) : (fine(t) - fine(s.t0)) / (fine(s.t1) - fine(s.t0));
     // (A zero is +0, as the rationals round it: + 0.0 turns −0 into +0 and leaves every other value.)
     const auto coordinate = [&](double x0, double x1) -> std::optional<double> {
         if (x1 == x0) return x0 + 0.0;
