@@ -1,7 +1,6 @@
 // One frame's meets (meet.hpp's step_meets; docs/scene-log.md, "Balls that meet"): the swept rule of robust and
 // exact (swept_frame.hpp), and the lecture's static test at the frame's end; the paths and boxes both read.
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <utility>
@@ -12,29 +11,6 @@
 
 namespace ricochet {
 namespace meet {
-
-/// A box around a ball's path, widened by its radius.
-Box path_box(std::span<const PathPoint> path, double R) {
-    Box b{path.front().p, path.front().p};
-    for (const PathPoint& p : path) {
-        b.lo = {std::min(b.lo.x, p.p.x), std::min(b.lo.y, p.p.y)};
-        b.hi = {std::max(b.hi.x, p.p.x), std::max(b.hi.y, p.p.y)};
-    }
-    // Widened by R and a relative margin, so that a rounded box never leaves out a pair whose exact paths come
-    // within R_a + R_b (the exact decision is first_meet's).
-    const double m = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
-    const double pad = R + R * 0x1p-40 + m * 0x1p-40;
-    return {{b.lo.x - pad, b.lo.y - pad}, {b.hi.x + pad, b.hi.y + pad}};
-}
-
-/// The path of a step from (t0, p0): its start, each contact at its time (never before the previous one, never
-/// after 1: rounded times), its end at 1.
-void build_path(std::vector<PathPoint>& path, double t0, Vec2 p0, std::span<const HitEvent> hits, Vec2 end) {
-    path.clear();
-    path.push_back({t0, p0});
-    for (const HitEvent& h : hits) path.push_back({std::clamp(h.t, path.back().t, 1.0), h.point});
-    path.push_back({1.0, end});
-}
 
 /// The heap's order: a comes out after b (later time; on an exact tie the higher pair).
 bool later(const MeetCandidate& x, const MeetCandidate& y) {

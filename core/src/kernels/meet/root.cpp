@@ -130,8 +130,12 @@ void motion(const Piece& s, double c, Vec2 end, N& px, N& py, N& vx, N& vy) {
         return;
     }
     const N dt = number<N>(s.t1) - number<N>(s.t0), from = number<N>(c) - number<N>(s.t0);
+    // Over the whole frame (t0 = 0, t1 = 1) the velocity is the displacement itself: Approx2's quotient by 1 would
+    // carry a bound.
+    const bool whole = s.t0 == 0.0 && s.t1 == 1.0;
     const auto velocity = [&](double x0, double x1) -> N {
         if (x1 == x0) return number<N>(0.0);
+        if (whole) return N(number<N>(x1) - number<N>(x0));
         return N((number<N>(x1) - number<N>(x0)) / dt);
     };
     vx = velocity(s.p0.x, s.p1.x);
