@@ -11,6 +11,7 @@
 #include <cmath>
 #include <optional>
 #include <random>
+#include <vector>
 
 #include "kernels/disc/contact.hpp"
 
@@ -346,6 +347,30 @@ TEST(DiscContact, ClearanceIsExact) {
     const Obstacle b{nullptr, {0, 0}, 0.2};
     EXPECT_EQ(point_clear({0.30000000000000004, 0}, 0.1, b),
               mpq_class(0.30000000000000004) >= mpq_class(0.1) + mpq_class(0.2));
+}
+
+TEST(DiscContact, ClearanceAlongAnAxisIsExact) {
+    // piece_clear's first test (boxes more than the reach apart along an axis) against the exact answer: a piece
+    // parallel to a wall d away, d a few ulps either side of R = 0.1 (where the test leaves it to the decision) and
+    // 2^−45 beyond (where it answers), on each side of the wall along each axis; then a bumper, whose R + r is the
+    // exact sum.
+    const Wall wall_x{{0, 0}, {0, 10}}, wall_y{{0, 0}, {10, 0}};
+    const double R = 0.1;
+    std::vector<double> ds{R * (1 + 0x1p-45), R * (1 - 0x1p-45)};
+    for (double d = R, k = 0; k < 3; ++k) ds.push_back(d = std::nextafter(d, 1.0));
+    for (double d = R, k = 0; k < 3; ++k) ds.push_back(d = std::nextafter(d, 0.0));
+    ds.push_back(R);
+    for (const double d : ds)
+        for (const double side : {1.0, -1.0}) {
+            const bool want = mpq_class(d) >= mpq_class(R);
+            EXPECT_EQ(piece_clear({side * d, 2}, {side * (d + 5), 9}, R, of(wall_x)), want) << d << " " << side;
+            EXPECT_EQ(piece_clear({2, side * d}, {9, side * (d + 5)}, R, of(wall_y)), want) << d << " " << side;
+        }
+    const Obstacle b{nullptr, {0, 0}, 0.2};
+    const mpq_class sum = mpq_class(0.1) + mpq_class(0.2);
+    for (double x = 0.3, k = 0; k < 6; ++k, x = std::nextafter(x, 1.0))
+        EXPECT_EQ(piece_clear({x, -1}, {x, 1}, 0.1, b), mpq_class(x) >= sum) << x;
+    EXPECT_TRUE(piece_clear({0.31, -1}, {0.31, 1}, 0.1, b));
 }
 
 }  // namespace
