@@ -20,18 +20,21 @@ SweptFrame::SweptFrame(KernelId k, const Obstacles& obstacles, std::span<const d
       n_(balls.size()), seg_t_(kept.seg_t), seg_vel_(kept.seg_vel), version_(kept.version),
       committed_(kept.committed), done_(kept.done), box_(kept.box), grid_(kept.grid), seen_(kept.seen),
       heap_(kept.heap), cut_a_(kept.cut_a), cut_b_(kept.cut_b), full_a_(kept.full_a), full_b_(kept.full_b),
-      full_k_(kept.full_k), before_(kept.before) {
+      full_k_(kept.full_k), before_(kept.before), touched_(kept.touched) {
     seg_t_.assign(n_, 0.0);
     seg_vel_.resize(n_);
     version_.assign(n_, 0);
-    committed_.resize(n_);
-    done_.resize(n_);
-    before_.resize(n_);
-    for (std::size_t i = 0; i < n_; ++i) {
+    // Only the balls the last frame cut have anything in the kept lists (finish left their old lists there).
+    for (const std::uint32_t i : touched_) {
+        if (i >= committed_.size()) continue;
         committed_[i].clear();
         done_[i].clear();
         before_[i].group = 0;
     }
+    touched_.clear();
+    committed_.resize(n_);
+    done_.resize(n_);
+    before_.resize(n_);
     box_.resize(n_);
     heap_.clear();
 }
@@ -75,7 +78,7 @@ void SweptFrame::run() {
         }
         take(c, now.shared, group_ != 0);
     }
-    for (std::size_t i = 0; i < n_; ++i) finish(i);
+    for (const std::uint32_t i : touched_) finish(i);
 }
 
 std::optional<meet::Root> SweptFrame::search(std::uint32_t a, std::uint32_t b, double from) const {
@@ -98,6 +101,7 @@ Vec2 SweptFrame::velocity_on(std::size_t i, std::size_t k) const {
 
 void SweptFrame::cut(std::size_t i, std::size_t k) {
     BallFrame& f = balls_[i];
+    if (committed_[i].empty()) touched_.push_back(static_cast<std::uint32_t>(i));
     // Its start and contacts up to k; the path's end (k past the last contact: a meet at t = 1) is not printed,
     // the meet's point is.
     const std::size_t kept = std::min(k, f.events.size());

@@ -50,6 +50,7 @@ struct MeetFrameScratch {
     std::vector<PathPoint> cut_a, cut_b;
     std::vector<PathPoint> full_a, full_b, full_k;
     std::vector<MeetSnapshot> before;
+    std::vector<std::uint32_t> touched;  // the balls a meet or the safe stop cut (their lists above are filled)
 };
 
 namespace meet {
@@ -319,6 +320,7 @@ private:
     // Meets at one exact time (rule 3): each group of them is numbered; the first one's floor is every untied one's,
     // and a ball a meet of the group moved is kept as it was (before_) for the others' placements.
     std::vector<MeetSnapshot>& before_;
+    std::vector<std::uint32_t>& touched_;  // the balls cut in this frame, each once (their kept lists are filled)
     std::uint64_t group_ = 0;               // the group of the meet being taken (0: alone at its time)
     std::uint64_t groups_ = 0;              // groups numbered so far in this frame
     std::optional<meet::Root> group_root_;  // the exact time of the last group
