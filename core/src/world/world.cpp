@@ -168,7 +168,8 @@ std::optional<StepError> World::step_meeting(std::vector<Event>& out) {
         f.state = balls_[i];
         f.status = stepper_->status(i);
         const auto hits = stepper_->hits(i);
-        f.events.assign(hits.begin(), hits.end());
+        if (hits.empty()) f.events.clear();  // (most balls: no call)
+        else f.events.assign(hits.begin(), hits.end());
     }
     meets_.clear();
     step_meets(kernel_, obstacles(), masses_, frames_, meets_, meet_scratch_);

@@ -40,9 +40,11 @@ SweptFrame::SweptFrame(KernelId k, const Obstacles& obstacles, std::span<const d
 }
 
 void SweptFrame::run() {
+    // Each ball's path has storage of its own, where it was allocated: it is asked for a few balls ahead.
+    constexpr std::size_t ahead = 8;
     for (std::size_t i = 0; i < n_; ++i) {
+        if (i + ahead < n_) __builtin_prefetch(balls_[i + ahead].path.data(), 1);
         BallFrame& f = balls_[i];
-        seg_vel_[i] = f.before.vel;
         meet::build_path(f.path, 0.0, f.before.pos, f.events, f.state.pos);
         box_[i] = meet::path_box(f.path, f.before.r);
     }
@@ -94,7 +96,7 @@ double SweptFrame::next_printed(std::uint32_t a, std::uint32_t b, double t) cons
 
 Vec2 SweptFrame::velocity_on(std::size_t i, std::size_t k) const {
     const BallFrame& f = balls_[i];
-    if (k == 0) return seg_vel_[i];
+    if (k == 0) return version_[i] == 0 ? f.before.vel : seg_vel_[i];  // (a path not restarted starts the frame)
     if (k <= f.events.size()) return f.events[k - 1].out;
     return f.state.vel;
 }

@@ -304,7 +304,7 @@ private:
     std::size_t n_;
     // Kept between frames (MeetFrameScratch), made afresh for this one:
     std::vector<double>& seg_t_;                     // the frame time each ball's current path starts at
-    std::vector<Vec2>& seg_vel_;                     // the velocity it starts with
+    std::vector<Vec2>& seg_vel_;                     // the velocity it starts with (once restarted: version_ > 0)
     std::vector<std::uint32_t>& version_;            // bumped when its path changes
     std::vector<std::vector<PathPoint>>& committed_;  // its path's points before the current path
     std::vector<std::vector<HitEvent>>& done_;       // its contacts before the current path, meets included
