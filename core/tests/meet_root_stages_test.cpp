@@ -175,8 +175,9 @@ TEST(MeetRootStages, PointsAndClosenessEqualTheRationalOnes) {
 }
 
 TEST(MeetRootStages, TheGapToANeighbourIsNextaftersOne) {
-    // nearest_double's half gap (kernels/disc/arith.hpp) from the bits, against std::nextafter: the edges (zeros,
-    // subnormals, powers of two, the largest double), then doubles of every exponent from random bits.
+    // nearest_double's gap to x's nearer neighbour (kernels/disc/arith.hpp), from the bits, against std::nextafter:
+    // the edges (zeros, subnormals, powers of two, the largest double), then doubles of every exponent from random
+    // bits.
     const auto want = [](double x) {
         return std::fmin(std::nextafter(x, HUGE_VAL) - x, x - std::nextafter(x, -HUGE_VAL));
     };

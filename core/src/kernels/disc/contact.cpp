@@ -609,9 +609,10 @@ bool point_clear(Vec2 p, double R, const Obstacle& o) {
 
 namespace {
 
-/// True if the boxes of the segments a0 → a1 and b0 → b1 lie more than reach apart along x or y, so that every point
-/// of one is: a difference of doubles is within 2^−53 of its value (exact where it is subnormal) and the sum of
-/// radii in reach within 2^−53 of its own, which the factor 1 + 2^−50 covers; an overflow or a NaN decides nothing.
+/// True if the boxes of the segments a0 → a1 and b0 → b1 lie more than reach apart along x or y: then every point of
+/// one is that far from every point of the other. A difference of doubles is within 2^−53 of its value (exact where
+/// it is subnormal) and a sum of radii in reach within 2^−53 of its own, which the factor 1 + 2^−50 covers; an
+/// overflow or a NaN decides nothing.
 bool boxes_apart(Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1, double reach) {
     const double r = reach * (1.0 + 0x1p-50);
     const auto apart = [r](double u0, double u1, double w0, double w1) {
