@@ -6,7 +6,6 @@
 // (response.cpp), staged the same way.
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -19,6 +18,7 @@
 #include "kernels/disc/arith.hpp"
 #include "kernels/meet/response.hpp"
 #include "kernels/meet/root.hpp"
+#include "ricochet/bits.hpp"
 
 namespace ricochet {
 namespace {
@@ -186,12 +186,12 @@ TEST(MeetRootStages, TheGapToANeighbourIsNextaftersOne) {
                            0x1p1023, std::numeric_limits<double>::max(), 0.1, 1e300};
     std::mt19937_64 rng(4);
     for (int n = 0; n < 20000; ++n) {
-        const double x = std::bit_cast<double>(rng());
+        const double x = double_of_bits(rng());
         if (std::isfinite(x)) xs.push_back(x);
     }
     for (std::size_t n = 0, count = xs.size(); n < count; ++n) xs.push_back(-xs[n]);
     for (const double x : xs)
-        ASSERT_EQ(std::bit_cast<std::uint64_t>(disc::smaller_gap(x)), std::bit_cast<std::uint64_t>(want(x))) << x;
+        ASSERT_EQ(bits_of(disc::smaller_gap(x)), bits_of(want(x))) << x;
 }
 
 TEST(MeetRootStages, ApproachIsTheRationalOne) {

@@ -13,13 +13,13 @@
 // The polynomials are homogeneous in lengths, so the common scale does not change a sign.
 #pragma once
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
 
 #include "base/bignum.hpp"
+#include "ricochet/bits.hpp"
 #include "ricochet/vec2.hpp"
 
 namespace ricochet::disc {
@@ -229,9 +229,9 @@ inline Approx2 operator/(Approx2 a, Approx2 b) {
 /// whose gap fmin passes over). Each difference of neighbours is exact.
 inline double smaller_gap(double x) {
     const double a = std::fabs(x);
-    const auto bits = std::bit_cast<std::uint64_t>(a);
+    const std::uint64_t bits = bits_of(a);
     if (bits == 0) return std::numeric_limits<double>::denorm_min();
-    return std::fmin(std::bit_cast<double>(bits + 1) - a, a - std::bit_cast<double>(bits - 1));
+    return std::fmin(double_of_bits(bits + 1) - a, a - double_of_bits(bits - 1));
 }
 
 /// The double nearest to the exact value, if the bound decides it: hi + lo rounds to x, and every value within e of
