@@ -80,6 +80,11 @@ Piece piece_at(std::span<const PathPoint> path, double t) {
     return {path[k].t, path[k + 1].t, path[k].p, path[k + 1].p};
 }
 
+/// True if the piece spans the whole frame (t0 = 0, t1 = 1: a ball no contact has cut): its fraction of the frame at
+/// t is t itself and its velocity its displacement, exactly, with no quotient by 1 whose double-double bound would
+/// have to be carried.
+bool whole_frame(const Piece& s) { return s.t0 == 0.0 && s.t1 == 1.0; }
+
 /// The piece's point at t in doubles (the filter's estimate).
 Vec2 approx_at(const Piece& s, double t) {
     if (s.t1 == s.t0) return s.p0;
@@ -130,9 +135,7 @@ void motion(const Piece& s, double c, Vec2 end, N& px, N& py, N& vx, N& vy) {
         return;
     }
     const N dt = number<N>(s.t1) - number<N>(s.t0), from = number<N>(c) - number<N>(s.t0);
-    // Over the whole frame (t0 = 0, t1 = 1) the velocity is the displacement itself: Approx2's quotient by 1 would
-    // carry a bound.
-    const bool whole = s.t0 == 0.0 && s.t1 == 1.0;
+    const bool whole = whole_frame(s);
     const auto velocity = [&](double x0, double x1) -> N {
         if (x1 == x0) return number<N>(0.0);
         if (whole) return N(number<N>(x1) - number<N>(x0));
@@ -315,10 +318,8 @@ PointOnPath point_at(std::span<const PathPoint> path, double t) {
     while (k + 1 < path.size() && path[k + 1].t <= t) ++k;
     if (path[k].t == t || k + 1 >= path.size()) return {path[k].p, k};
     const Piece s{path[k].t, path[k + 1].t, path[k].p, path[k + 1].p};
-    // X = P0 + (t − t0)·(P1 − P0)/(t1 − t0), each coordinate rounded to nearest: bounded first, then exactly. On a
-    // piece over the whole frame (a ball no contact has cut) the fraction is t itself, exact: no quotient's bound.
-    const Approx2 f =
-        s.t0 == 0.0 && s.t1 == 1.0 ? fine(t) : (fine(t) - fine(s.t0)) / (fine(s.t1) - fine(s.t0));
+    // X = P0 + (t − t0)·(P1 − P0)/(t1 − t0), each coordinate rounded to nearest: bounded first, then exactly.
+    const Approx2 f = whole_frame(s) ? fine(t) : (fine(t) - fine(s.t0)) / (fine(s.t1) - fine(s.t0));
     // (A zero is +0, as the rationals round it: + 0.0 turns −0 into +0 and leaves every other value.)
     const auto coordinate = [&](double x0, double x1) -> std::optional<double> {
         if (x1 == x0) return x0 + 0.0;
