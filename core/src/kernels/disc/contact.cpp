@@ -624,8 +624,8 @@ bool boxes_apart(Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1, double reach) {
 }  // namespace
 
 bool piece_clear(Vec2 q, Vec2 x, double R, const Obstacle& o) {
-    // Far apart along an axis: clear, without a decision's filters.
-    if (boxes_apart(q, x, o.wall ? o.wall->p0 : o.c, o.wall ? o.wall->p1 : o.c, o.wall ? R : R + o.r)) return true;
+    // Far apart along an axis: clear, without a decision's filters (a circle as the point segment at its centre).
+    if (o.wall ? boxes_apart(q, x, o.wall->p0, o.wall->p1, R) : boxes_apart(q, x, o.c, o.c, R + o.r)) return true;
     // A circle: its centre's distance to the piece.
     if (o.wall == nullptr) return point_segment_clear(o.c, q, x, R, o.r);
     // Degenerate: no reach (a point ball) keeps every distance.
