@@ -214,5 +214,51 @@ TEST(MeetRootStages, ApproachIsTheRationalOne) {
     EXPECT_GT(perpendicular, 100);
 }
 
+TEST(MeetRootStages, AJumpEntersAsJumpThroughReadsIt) {
+    // jump_enters (a nudged centre's jump, docs/scene-log.md, "Balls that meet", 4): a jump p0 → p1 that starts at
+    // least S from k enters where it comes strictly closer than S on the segment; from within reach it enters
+    // nothing. Cases at the edges, then random jumps against the quadratic's least value on [0, 1].
+    const auto at = [](double x, double y) { return std::pair<Rational, Rational>{q(x), q(y)}; };
+    const meet::Radii S32{32.0, 0.0};
+    const double tiny = std::numeric_limits<double>::denorm_min();
+    // The finding of replays/meet/nudge-jump-into-third-ball-far-out.scene, moved to the origin: touching k, the
+    // jump sideways and 5e-324 toward it.
+    EXPECT_TRUE(meet::jump_enters({0, 0}, {4096, -tiny}, at(0, -32), S32));
+    EXPECT_TRUE(meet::jump_enters({0, 0}, {4096, -0x1p-47}, at(0, -32), S32));
+    EXPECT_FALSE(meet::jump_enters({0, 0}, {4096, 0}, at(0, -32), S32));  // along the tangent
+    EXPECT_FALSE(meet::jump_enters({0, 0}, {4096, tiny}, at(0, -32), S32));  // away
+    EXPECT_FALSE(meet::jump_enters({0, 31}, {0, -40}, at(0, 0), S32));  // from within reach
+    EXPECT_FALSE(meet::jump_enters({-40, 32}, {40, 32}, at(0, 0), S32));  // grazing at exactly S
+    EXPECT_TRUE(meet::jump_enters({-40, std::nextafter(32.0, 0.0)}, {40, 32}, at(0, 0), S32));
+    EXPECT_FALSE(meet::jump_enters({0, 40}, {0, 32}, at(0, 0), S32));  // ending touching
+    EXPECT_TRUE(meet::jump_enters({0, 40}, {0, std::nextafter(32.0, 0.0)}, at(0, 0), S32));
+    EXPECT_FALSE(meet::jump_enters({0, 40}, {0, 40}, at(0, 0), S32));  // no jump
+    // k a rational point (exact_point's), S = R_i + R_j not rounded: 1 + 2^−80 sums to 1 in doubles.
+    const Rational third = Rational(1) / Rational(3);
+    EXPECT_TRUE(meet::jump_enters({1.0 / 3.0, 2}, {1.0 / 3.0, 1}, {third, Rational(0)}, {1.0, 0x1p-80}));
+    EXPECT_FALSE(meet::jump_enters({1.0 / 3.0, 2}, {1.0 / 3.0, 1}, {third, Rational(0)}, {1.0, 0.0}));
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-4.0, 4.0);
+    int entering = 0;
+    for (int n = 0; n < 20000; ++n) {
+        const double s = scale_of(rng);
+        const Vec2 p0{u(rng) * s, u(rng) * s}, k{u(rng) * s, u(rng) * s};
+        const Vec2 p1 = rng() % 2 ? Vec2{u(rng) * s, u(rng) * s} : Vec2{nudge(rng, p0.x), nudge(rng, p0.y)};
+        const double ra = std::fabs(u(rng)) * s, rb = rng() % 2 ? 0.0 : std::fabs(u(rng)) * s;
+        const Rational dx = q(p0.x) - q(k.x), dy = q(p0.y) - q(k.y), wx = q(p1.x) - q(p0.x), wy = q(p1.y) - q(p0.y);
+        const Rational S = q(ra) + q(rb), C = dx * dx + dy * dy - S * S, B = dx * wx + dy * wy, A = wx * wx + wy * wy;
+        // f(u) = C + 2·B·u + A·u²: at least 0 at u = 0, below 0 at u = 1 or at the vertex −B/A inside (0, 1).
+        bool want = false;
+        if (bignum::sign(C) >= 0 && bignum::sign(A) > 0) {
+            const Rational v = Rational(-B / A);
+            want = bignum::sign(Rational(C + B + B + A)) < 0 ||
+                   (bignum::sign(v) > 0 && v < Rational(1) && bignum::sign(Rational(C + B * v)) < 0);
+        }
+        entering += want;
+        ASSERT_EQ(meet::jump_enters(p0, p1, {q(k.x), q(k.y)}, {ra, rb}), want) << "case " << n;
+    }
+    EXPECT_GT(entering, 500);
+}
+
 }  // namespace
 }  // namespace ricochet

@@ -310,6 +310,10 @@ bool SweptFrame::crowds_others(std::uint32_t i, std::uint32_t a, std::uint32_t b
     std::vector<PathPoint> piece;
     cut_to(i, moved, t, piece);
     const double s = piece_start(piece);
+    // A centre moved off a point its ball printed at t jumps from it there (end_at): the jump must not come closer
+    // than their radii's sum to a third ball's point at t that it starts at least that far from (jump-through).
+    const std::size_t n = piece.size();
+    const bool jumps = n >= 2 && piece[n - 2].t == t && piece[n - 1].t == t;
     bool crowded = false;
     neighbours(i, [&](std::uint32_t k) {
         const meet::Radii Sk{radius(i), radius(k)};
@@ -318,6 +322,7 @@ bool SweptFrame::crowds_others(std::uint32_t i, std::uint32_t a, std::uint32_t b
         if (whole.back().t < t) return;
         const Vec2 at = meet::point_at(whole, t).x;
         if (meet::closer_than(moved.x, at, Sk) && !meet::closer_than(rounded, at, Sk)) crowded = true;
+        if (!crowded && jumps) crowded = meet::jump_enters(piece[n - 2].p, moved.x, meet::exact_point(whole, t), Sk);
         if (crowded || !(s < t)) return;
         const std::optional<meet::Root> e = meet::first_entry(piece, whole, Sk, s, t);
         crowded = e && meet::compare(*e, t) < 0;

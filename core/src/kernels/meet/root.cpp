@@ -359,6 +359,18 @@ bool closer_than(Vec2 a, Vec2 b, Radii S) {
     return ex * ex + ey * ey < sum_exact * sum_exact;
 }
 
+bool jump_enters(Vec2 p0, Vec2 p1, const std::pair<Rational, Rational>& k, Radii S) {
+    const Rational dx = Rational(p0.x) - k.first, dy = Rational(p0.y) - k.second;
+    const Rational wx = Rational(p1.x) - Rational(p0.x), wy = Rational(p1.y) - Rational(p0.y);
+    const Rational s = Rational(S.a) + Rational(S.b), s2 = s * s;
+    const Rational dd = dx * dx + dy * dy, dw = dx * wx + dy * wy, ww = wx * wx + wy * wy;
+    // |D + W·u|² = dd + 2·dw·u + ww·u²: from inside reach, or moving no closer (dw ≥ 0), it enters nothing.
+    if (dd < s2 || !(dw < Rational(0))) return false;
+    // Its least on [0, 1]: at u* = −dw/ww where that is inside (dd − dw²/ww, times ww), else at u = 1.
+    if (-dw < ww) return dd * ww - dw * dw < s2 * ww;
+    return dd + dw + dw + ww < s2;
+}
+
 bool closer_on_paths(std::span<const PathPoint> a, std::span<const PathPoint> b, double t, Radii S) {
     // |D(t)|² − S², the quadratic's qa at c = t: bounded first, then exactly.
     Root at;

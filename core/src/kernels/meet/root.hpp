@@ -91,6 +91,10 @@ double next_point(std::span<const PathPoint> a, std::span<const PathPoint> b, do
 /// |a − b|² < S², exactly (a filter in doubles first).
 bool closer_than(Vec2 a, Vec2 b, Radii S);
 
+/// Whether a jump p0 → p1 (a centre moved at one time) that starts at least S from the point k comes closer than S
+/// to it along the way: |D + W·u|² < S² for some u in [0, 1], D = p0 − k, W = p1 − p0, exactly (jump-through's rule).
+bool jump_enters(Vec2 p0, Vec2 p1, const std::pair<bignum::Rational, bignum::Rational>& k, Radii S);
+
 /// |P_a(t) − P_b(t)|² < S² on the paths' exact points at t (not rounded), exactly: the balls closer than S there.
 /// Both paths must reach t (their first times at most t).
 bool closer_on_paths(std::span<const PathPoint> a, std::span<const PathPoint> b, double t, Radii S);
