@@ -228,8 +228,8 @@ private:
     /// For nudge: whether ball i's centre moved to `moved` at t (from `rounded`) comes closer than their radii's sum
     /// to a third ball's point there where the rounded centre did not, its jump there (where its piece starts at t)
     /// comes closer than that to a third ball's point it starts at least that far from, or its piece enters a third
-    /// ball's printed path before t. (too_close excuses a third ball the piece's own point at lo was already that close to, which
-    /// is the moved centre itself where the piece starts at lo.)
+    /// ball's printed path before t. (too_close excuses a third ball the piece's own point at lo was already that
+    /// close to, which is the moved centre itself where the piece starts at lo.)
     bool crowds_others(std::uint32_t i, std::uint32_t a, std::uint32_t b, const meet::PointOnPath& moved, Vec2 rounded,
                        double t);
 
