@@ -121,6 +121,10 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
                 }
             }
             if (path.front().t > t) return;
+            // k as it is, with a path whose box (path_box: R_k and a margin for rounding) misses ball i's: the piece to
+            // the centre lies in i's path's box (its points, the centre rounded or moved a few ulps off it), so none
+            // of the clauses below can hold. (Most neighbours the grid lists are such.)
+            if (!was && !meet::boxes_overlap(box_[i], box_[k])) return;
             // Apart at lo — or where k's path starts later, there — as the printed paths put them (the piece to
             // the centre, which may start before lo, and k's path, their exact points) or as the ball's own path
             // does (its point there, rounded): two balls are excused only where both have them closer than that
