@@ -92,21 +92,29 @@ Vec2 approx_at(const Piece& s, double t) {
     return s.p0 + f * (s.p1 - s.p0);
 }
 
-/// True if the filter proves the two pieces stay more than S apart over [c, c2]: the relative motion's segment
-/// D(c) → D(c2) in doubles, its nearest point to the origin, and a margin of 2^−40 of the magnitudes involved, far
-/// beyond the few roundings of these estimates (each within 8 ulps of the largest magnitude).
-bool clearly_apart(const Piece& a, const Piece& b, double S, double c, double c2) {
+/// True if the filter proves the interval [c, c2] holds no meet of the two pieces, from the relative motion's segment
+/// D(c) → D(c2) in doubles: they stay more than S apart (its nearest point to the origin, with a margin of 2^−40 of the
+/// magnitudes involved, far beyond the few roundings of these estimates: each coordinate within 2^7 ulps of the
+/// largest magnitude m), or they move apart all through it. A meet needs B = D(c)·W < 0 (fine_verdict), and for c2 > c
+/// and pieces that move as their points do, D(c)·(D(c2) − D(c)) is (c2 − c)·B: where its estimate d0·w exceeds the
+/// estimate's error bound, 2^−40·m·(|d0|₁ + |w|₁ + 2^−40·m) (the inputs' errors, the products' roundings) and 2^−1000
+/// (underflow), B > 0.
+bool clearly_nothing(const Piece& a, const Piece& b, double S, double c, double c2) {
     const Vec2 d0 = approx_at(a, c) - approx_at(b, c), d1 = approx_at(a, c2) - approx_at(b, c2);
     const double m = std::max({std::fabs(a.p0.x), std::fabs(a.p0.y), std::fabs(a.p1.x), std::fabs(a.p1.y),
                                std::fabs(b.p0.x), std::fabs(b.p0.y), std::fabs(b.p1.x), std::fabs(b.p1.y), S});
     const Vec2 w = d1 - d0;
-    const double ww = dot(w, w);
-    double u = ww > 0.0 ? -dot(d0, w) / ww : 0.0;
+    const double ww = dot(w, w), dw = dot(d0, w);
+    double u = ww > 0.0 ? -dw / ww : 0.0;
     u = std::clamp(u, 0.0, 1.0);
     const Vec2 near = d0 + u * w;
     const double dist = std::sqrt(dot(near, near));
     if (!std::isfinite(dist) || !std::isfinite(m)) return false;
-    return dist > S + 0x1p-40 * m;
+    if (dist > S + 0x1p-40 * m) return true;
+    // (A piece of no duration moves with its ball's end velocity, which its points do not show.)
+    if (!(c2 > c && a.t1 > a.t0 && b.t1 > b.t0)) return false;
+    const double l1 = std::fabs(d0.x) + std::fabs(d0.y) + std::fabs(w.x) + std::fabs(w.y);
+    return dw > 0x1p-40 * m * (l1 + 0x1p-40 * m) + 0x1p-1000;
 }
 
 /// An input double in type N (Approx2: exact, no bound; Rational).
@@ -252,7 +260,7 @@ std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const Pat
         root.end_a = end_a;
         root.end_b = end_b;
         root.S = S;
-        if (clearly_apart(root.a, root.b, S.rounded(), c, c2)) continue;
+        if (clearly_nothing(root.a, root.b, S.rounded(), c, c2)) continue;
         double estimate = c;
         std::optional<Holds> holds = fine_verdict(relative<Approx2>(root), c, c2, estimate);
         if (!holds || *holds == Holds::unsure) {
