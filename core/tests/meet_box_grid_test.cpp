@@ -48,8 +48,11 @@ void expect_pairs(BoxGrid& grid, const std::vector<Box>& boxes) {
 void expect_query(const BoxGrid& grid, const std::vector<Box>& current, const Box& b) {
     std::set<std::uint32_t> listed;
     grid.query(b, [&](std::uint32_t j) { listed.insert(j); });
-    for (std::uint32_t j = 0; j < current.size(); ++j)
-        if (boxes_overlap(current[j], b)) EXPECT_TRUE(listed.count(j)) << "ball " << j << " missed";
+    for (std::uint32_t j = 0; j < current.size(); ++j) {
+        if (boxes_overlap(current[j], b)) {
+            EXPECT_TRUE(listed.count(j)) << "ball " << j << " missed";
+        }
+    }
 }
 
 Box around(Vec2 p, Vec2 q, double r) {

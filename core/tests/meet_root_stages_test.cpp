@@ -271,7 +271,9 @@ TEST(MeetRootStages, MovingApartIsDecidedAsTheRationalsDecideIt) {
         const int want = interval_reference(a0, a1, b0, b1, c, c2, Rational(q(ra) + q(rb)));
         ++outcome[want];
         ASSERT_EQ(got.has_value(), want != 0) << "case " << n;
-        if (got) ASSERT_EQ(got->at_start, want == 1) << "case " << n;
+        if (got) {
+            ASSERT_EQ(got->at_start, want == 1) << "case " << n;
+        }
     }
     // Each outcome is reached often (a guard against a generator that proves nothing).
     EXPECT_GT(outcome[0], 2000);
