@@ -166,6 +166,8 @@ void SweptFrame::cut_to(std::uint32_t i, const meet::PointOnPath& p, double t, s
 void SweptFrame::end_at(std::uint32_t i, const meet::PointOnPath& p, double t, std::vector<PathPoint>& out) const {
     // A centre at the time of a printed point (the path's start, a meet's centre or the frame's; a hit or bump) moved
     // off it is a jump after it: the point stays (the piece before it ends there). Only the path's end is no print.
+    // Only a nudge makes such a jump (crowds_others judges it): place() puts a centre at a printed point's time on the
+    // point itself, since point_at returns it there and the walk back starts from it.
     if (out.back().t < t) out.push_back({t, p.x});
     else if (p.from > balls_[i].events.size() || same_bits(out.back().p, p.x)) out.back().p = p.x;
     else out.push_back({t, p.x});
