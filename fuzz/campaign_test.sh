@@ -96,6 +96,16 @@ while kill -0 "$(cat "'"$dir"'/static.pid")" 2>/dev/null; do sleep 0.05; done; '
                      # within the campaign's fuzzing time.
                      json_is out 'all(t["exec_per_s"] == t["exec_per_s_per_worker"] and t["runs"] / t["exec_per_s"] <= d["seconds"] for t in d["targets"])'
                      json_is out 'abs(d["exec_per_s"] - sum(t["exec_per_s"] for t in d["targets"])) <= 1e-9 * d["exec_per_s"]' ;;
+  merge-writes-in-cache) # What libFuzzer's merge writes (an input that ran out of memory in the one merge process) goes
+                     # into the campaign's own folder (removed with it), never into the folder the campaign was started
+                     # from. The fake writes such a file where -artifact_prefix says, as libFuzzer does (by default ./).
+                     stats='printf "#1000\tDONE   cov: 1 ft: 1 corp: 1/1b exec/s: 0 rss: 1Mb\nstat::number_of_executed_units: 1000\n"'
+                     fake static 'case "$1" in -help=1) echo "Usage: fake"; exit 0 ;; esac
+p=./; m=; for a in "$@"; do case "$a" in -artifact_prefix=*) p=${a#-artifact_prefix=} ;; -merge=1) m=1 ;; esac; done
+if [ -n "$m" ]; then printf big >"${p}oom-0123456789abcdef0123456789abcdef01234567"; exit 0; fi
+'"$stats"
+                     cd "$proj"; run 0 fuzz --target static --runs 1000 --seed 1 --cache-dir "$dir/cache" --bin-dir "$dir/bin"
+                     [ "$(ls -A "$proj")" = replays ] || fail "the campaign wrote in the folder it was started from: $(ls -A "$proj")" ;;
   slow-unit-progress) # A slow unit a worker saves is kept as an input, not a failure: the progress lines count the failures
                      # the closing table counts. The fake worker saves one, then waits for the first progress line.
                      stats='printf "#1000\tDONE   cov: 1 ft: 1 corp: 1/1b exec/s: 0 rss: 1Mb\nstat::number_of_executed_units: 1000\n"'

@@ -62,7 +62,11 @@ void merge_corpus(TargetRun& run, const Plan& plan) {
     budget.say(run.target, fmt::format("merging the corpus ({} inputs)", judged.size()));
     const Clock::time_point began = Clock::now();
     int ticks = 0;
-    const RunResult merge = run_bounded({run.bin.string(), "-merge=1", "-timeout=10", merged.string(), run.corpus.string()},
+    // libFuzzer writes what crashes, runs out of memory or time in the merge (one process runs every input) where
+    // -artifact_prefix says, by default the folder the campaign was started from: the campaign's own folder instead.
+    const RunResult merge = run_bounded({run.bin.string(), "-merge=1", "-timeout=10",
+                                         "-artifact_prefix=" + (run.work / "merge-").string(), merged.string(),
+                                         run.corpus.string()},
                                         {"RICOCHET_KERNEL=" + plan.kernel_env}, log, budget.deadline(), [&] {
                                             if (++ticks % k_progress_every_s == 0)
                                                 budget.say(run.target, fmt::format("merging, {:.0f} s so far",
