@@ -251,11 +251,12 @@ TEST(MeetRootStages, MovingApartIsDecidedAsTheRationalsDecideIt) {
         const double far = rng() % 2 ? std::ldexp(s, static_cast<int>(rng() % 40)) : 0.0;
         const double th = angle(rng), S = s * (0.5 + std::fabs(u(rng)));
         const Vec2 e{std::cos(th), std::sin(th)}, side{-e.y, e.x};
-        // At c: b at bc, a at D from it, |D| about S; over the interval, a moves with W = k·side + eps·e.
+        // At c: b at bc, a at D from it, |D| about S; over the interval, a moves with W = k·side + tilt·s·e.
         const Vec2 bc{far + u(rng) * s, far + u(rng) * s};
         const double stretch = rng() % 3 == 0 ? 1.0 : 1.0 + u(rng) * 0x1p-45;
         const Vec2 D = stretch * S * e;
-        const double k = s * u(rng), tilt = rng() % 4 == 0 ? 0.0 : u(rng) * std::ldexp(1.0, -(30 + static_cast<int>(rng() % 25)));
+        const double k = s * u(rng);
+        const double tilt = rng() % 4 == 0 ? 0.0 : u(rng) * std::ldexp(1.0, -(30 + static_cast<int>(rng() % 25)));
         const Vec2 W = k * side + tilt * s * e;
         const double c = t01(rng), c2 = 1.0 - t01(rng);
         // Printed points a little outside [c, c2] (a piece that spans more than the interval), b's the same way.
