@@ -335,4 +335,47 @@ inline rc::Gen<Scene> tangent_scene() {
         placement(), spec);
 }
 
+/// Two balls touching exactly at the frame's start and moving nearly square to their line of centres, so that whether
+/// they approach (B = D·W < 0: a meet at t = 0) rests on the last bits of the velocities: D = (3m, 4m)/64 units and
+/// S = 5m/64 (exact in doubles, |D| = S exactly), ball 1 moving j·(4, −3)/4 units a frame plus a tilt a and b times
+/// 2^−e, e in 40..80, either way or none, at every scale, turned and mirrored, near the origin (a far offset would
+/// round the printed ends to a grain coarser than the tilt). The products of D and W round there, but seldom by more
+/// than B: mutant 48 (the moving-apart filter without its error bound) passes this generator's cases, which
+/// MeetRootStages.MovingApartIsDecidedAsTheRationalsDecideIt, a unit test, catches.
+struct GrazeSpec {
+    int m = 1;            ///< 1..12
+    int ra = 1;           ///< ball 0's radius in 64ths, 0..5m (ball 1's is the rest of 5m)
+    int j = 4;            ///< −16..16, not 0
+    int a = 0, b = 0;     ///< the tilt's numerators, −2^20..2^20
+    int e = 60;           ///< the tilt's exponent, 40..80
+    int vx = 0, vy = 0;   ///< both balls' common velocity in quarter units a frame, −8..8
+};
+
+inline rc::Gen<Scene> grazing_scene() {
+    const auto spec = rcg::mapcat(rcg::inRange(1, 13), [](int m) {
+        return rcg::build<GrazeSpec>(
+            rcg::set(&GrazeSpec::m, rcg::just(m)), rcg::set(&GrazeSpec::ra, upto(5 * m)),
+            rcg::set(&GrazeSpec::j, rcg::suchThat(signed_upto(16), [](int j) { return j != 0; })),
+            rcg::set(&GrazeSpec::a, signed_upto(1 << 20)), rcg::set(&GrazeSpec::b, signed_upto(1 << 20)),
+            rcg::set(&GrazeSpec::e, rcg::inRange(40, 81)),
+            rcg::set(&GrazeSpec::vx, rcg::weightedOneOf<int>({{2, rcg::just(0)}, {1, signed_upto(8)}})),
+            rcg::set(&GrazeSpec::vy, rcg::weightedOneOf<int>({{2, rcg::just(0)}, {1, signed_upto(8)}})));
+    });
+    return rcg::apply(
+        [](Placement at, const GrazeSpec& x) {
+            at.off_x = at.off_y = 0;
+            Scene s;
+            s.balls_collide = true;
+            s.frames = 1;
+            const double unit = std::ldexp(1.0, at.scale_exp);
+            const Vec2 v{x.vx / 4.0, x.vy / 4.0};
+            const Vec2 tilt = std::ldexp(1.0, -x.e) * Vec2{double(x.a), double(x.b)};
+            const Vec2 w = Vec2{x.j * 1.0, x.j * -0.75} + tilt;
+            s.balls = {{at.place({0, 0}), at.vector(v), unit * (x.ra / 64.0)},
+                       {at.place({3.0 * x.m / 64, 4.0 * x.m / 64}), at.vector(v + w), unit * ((5 * x.m - x.ra) / 64.0)}};
+            return s;
+        },
+        placement(), spec);
+}
+
 }  // namespace ricochet::props::gen

@@ -739,6 +739,22 @@ TEST_P(Meets, Tangent) {
                  GetParam());
 }
 
+/// Two balls touching at the frame's start and moving nearly square to their line of centres, whether they approach
+/// resting on the velocities' last bits: `oracle` (a meet at t = 0 exactly where they approach), `pass-through` and
+/// `ball-overlap` hold.
+TEST_P(Meets, Grazing) {
+    RICOCHET_SKIP_UNLESS_SWEPT(GetParam());
+    const Statement check = checked({Check::oracle, Check::pass_through, Check::ball_overlap});
+    run_property({"Grazing", Check::oracle, gen::grazing_scene(),
+                  [check](KernelId k, const Scene& s) {
+                      const MeetRun r = run_meets(s, k);
+                      classify(!r.error && r.frames.size() >= 2 && !r.frames[1].meets.empty(), "met at the start");
+                      return check(k, s);
+                  },
+                  150},
+                 GetParam());
+}
+
 /// Balls converging on one point, pairs sharing a ball meeting at the same exact time: `oracle` holds, so of tied
 /// meets the lowest pair is taken first (rule 3), which ThreeAtOnePoint's same bits on every run cannot see.
 TEST_P(Meets, LowestPairFirst) {
