@@ -142,8 +142,7 @@ private:
     bool balls_meet_ = false;
     std::vector<double> masses_;
     std::vector<MeetRecord> meets_;
-    std::vector<std::vector<PathPoint>> paths_;
-    std::vector<BallFrame> frames_;  // the frame's balls as step_meets works them
+    std::vector<BallFrame> frames_;  // the frame's balls as step_meets works them; their paths the last frame's
     StepScratch meet_scratch_;
 };
 

@@ -41,7 +41,6 @@ World::World(const Scene& scene, KernelId kernel, WorldOptions options)
     if (auto why = unsupported_scene(kernel, balls_, bumpers_.size(), balls_meet_)) throw UnsupportedScene(*why);
     masses_.resize(balls_.size());
     for (std::size_t i = 0; i < balls_.size(); ++i) masses_[i] = mass_of(scene, i);
-    if (balls_meet_) paths_.resize(balls_.size());
     // The scene is looked at once, here. Without a plan every decision takes the general path: a plan that
     // describes the walls and found none axis-aligned (the same bits, wall_plan.hpp).
     stepper_->set_plan(options.plan ? plan_walls(walls_) : WallPlan{walls_.data(), walls_.size(), 0});
@@ -188,15 +187,14 @@ std::optional<StepError> World::step_meeting(std::vector<Event>& out) {
                                h.wall, h.point, {}});
         }
         out.push_back({Event::Kind::state, frame_, ball, Event::Shape::none, 0, balls_[i].pos, balls_[i].vel});
-        paths_[i].swap(f.path);
     }
     append_overlaps(out);
     return error;
 }
 
 std::span<const PathPoint> World::path(std::size_t i) const {
-    if (i >= paths_.size()) return {};
-    return paths_[i];
+    if (i >= frames_.size()) return {};
+    return frames_[i].path;
 }
 
 std::string World::skipped() const {
