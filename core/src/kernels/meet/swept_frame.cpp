@@ -45,7 +45,14 @@ void SweptFrame::run() {
     for (std::size_t i = 0; i < n_; ++i) {
         if (i + ahead < n_) __builtin_prefetch(balls_[i + ahead].path.data(), 1);
         BallFrame& f = balls_[i];
-        meet::build_path(f.path, 0.0, f.before.pos, f.events, f.state.pos);
+        if (f.events.empty()) {
+            // (most balls: a path of two points, written in place)
+            f.path.resize(2);
+            f.path[0] = {0.0, f.before.pos};
+            f.path[1] = {1.0, f.state.pos};
+        } else {
+            meet::build_path(f.path, 0.0, f.before.pos, f.events, f.state.pos);
+        }
         box_[i] = meet::path_box(f.path, f.before.r);
     }
     // Every pair whose boxes overlap, found through a grid of the boxes (the heap's order is total: the order
