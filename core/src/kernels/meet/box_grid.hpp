@@ -180,7 +180,9 @@ private:
 
     std::size_t clamp_cell(double v, std::size_t n) const {
         if (!(v > 0.0)) return 0;  // below the origin, or NaN
-        return static_cast<std::size_t>(std::min(v, static_cast<double>(n - 1)));
+        // (through a signed integer: one instruction, where a double to a 64-bit unsigned one is a branch; the value
+        // is below 4097)
+        return static_cast<std::size_t>(static_cast<std::int64_t>(std::min(v, static_cast<double>(n - 1))));
     }
 
     Range range(const Box& b) const {
