@@ -50,10 +50,11 @@ void SweptFrame::run() {
             f.path.resize(2);
             f.path[0] = {0.0, f.before.pos};
             f.path[1] = {1.0, f.state.pos};
+            box_[i] = meet::segment_box(f.before.pos, f.state.pos, f.before.r);
         } else {
             meet::build_path(f.path, 0.0, f.before.pos, f.events, f.state.pos);
+            box_[i] = meet::path_box(f.path, f.before.r);
         }
-        box_[i] = meet::path_box(f.path, f.before.r);
     }
     // Every pair whose boxes overlap, found through a grid of the boxes (the heap's order is total: the order
     // pairs are found in changes nothing).

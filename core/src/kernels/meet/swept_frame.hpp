@@ -59,6 +59,15 @@ namespace meet {
 /// (docs/scene-log.md, "Balls that meet", 4 and 7).
 inline constexpr int k_rings = 3;
 
+/// The box b around a ball's path's points widened by its radius R (path_box).
+inline Box widened(Box b, double R) {
+    // Widened by R and a relative margin, so that a rounded box never leaves out a pair whose exact paths come
+    // within R_a + R_b (the exact decision is first_meet's).
+    const double m = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
+    const double pad = R + R * 0x1p-40 + m * 0x1p-40;
+    return {{b.lo.x - pad, b.lo.y - pad}, {b.hi.x + pad, b.hi.y + pad}};
+}
+
 /// A box around a ball's path, widened by its radius.
 inline Box path_box(std::span<const PathPoint> path, double R) {
     Box b{path.front().p, path.front().p};
@@ -66,11 +75,12 @@ inline Box path_box(std::span<const PathPoint> path, double R) {
         b.lo = {std::min(b.lo.x, p.p.x), std::min(b.lo.y, p.p.y)};
         b.hi = {std::max(b.hi.x, p.p.x), std::max(b.hi.y, p.p.y)};
     }
-    // Widened by R and a relative margin, so that a rounded box never leaves out a pair whose exact paths come
-    // within R_a + R_b (the exact decision is first_meet's).
-    const double m = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
-    const double pad = R + R * 0x1p-40 + m * 0x1p-40;
-    return {{b.lo.x - pad, b.lo.y - pad}, {b.hi.x + pad, b.hi.y + pad}};
+    return widened(b, R);
+}
+
+/// path_box of the path of two points p0 and p1, from the points themselves.
+inline Box segment_box(Vec2 p0, Vec2 p1, double R) {
+    return widened({{std::min(p0.x, p1.x), std::min(p0.y, p1.y)}, {std::max(p0.x, p1.x), std::max(p0.y, p1.y)}}, R);
 }
 
 /// The path of a step from (t0, p0): its start, each contact at its time (never before the previous one, never
