@@ -282,6 +282,60 @@ TEST(MeetRootStages, MovingApartIsDecidedAsTheRationalsDecideIt) {
     EXPECT_GT(outcome[2], 500);
 }
 
+TEST(MeetRootStages, ClosingAtTheEndIsTheRationalSignAndLeavesNoMeetBeforeIt) {
+    // closing_at_end: the sign of D1·(D1 − D0) ≤ 0 where its bound decides it, else nothing. A meet's placement
+    // (pieces_enter) leans on it: two pieces from lo to t whose ends are not closer than S and which close in at t
+    // hold no meet before t, so the search is skipped. Cases where both are thin: the ends touching a few ulps
+    // off S, moving nearly square to the line of centres at t (the slope a few ulps either side of 0, or 0), far
+    // from the origin, at magnitudes from 2^−500 to 2^500; each decided sign against the rationals, and each
+    // "closing" with ends not closer than S against first_meet itself.
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0), angle(0.0, 6.283185307179586), t01(0.05, 0.45);
+    int decided = 0, closing_clear = 0, opening = 0;
+    for (int n = 0; n < 20000; ++n) {
+        const double s = scale_of(rng);
+        const double far = rng() % 2 ? std::ldexp(s, static_cast<int>(rng() % 40)) : 0.0;
+        const double th = angle(rng), S = s * (0.5 + std::fabs(u(rng)));
+        const Vec2 e{std::cos(th), std::sin(th)}, side{-e.y, e.x};
+        // At t: b at b1, a at D1 from it, |D1| about S; over [lo, t], a moved by W = k·side − lean·s·e.
+        const Vec2 b1{far + u(rng) * s, far + u(rng) * s};
+        const double stretch = rng() % 3 == 0 ? 1.0 : 1.0 + u(rng) * 0x1p-45;
+        const Vec2 a1 = b1 + stretch * S * e;
+        const int kind = static_cast<int>(rng() % 4);
+        const double lean = kind == 0   ? 0.0
+                            : kind == 1 ? u(rng) * std::ldexp(1.0, -(30 + static_cast<int>(rng() % 25)))
+                                        : u(rng);
+        const Vec2 W = s * u(rng) * side - lean * s * e;
+        const Vec2 bw{u(rng) * s * 0x1p-20, u(rng) * s * 0x1p-20};
+        const Vec2 a0 = a1 - W, b0 = b1 - bw;
+        const double ra = nudge(rng, S / 2), rb = S - ra;
+        const Rational d1x = q(a1.x) - q(b1.x), d1y = q(a1.y) - q(b1.y);
+        const Rational wx = d1x - (q(a0.x) - q(b0.x)), wy = d1y - (q(a0.y) - q(b0.y));
+        const bool want = bignum::sign(Rational(d1x * wx + d1y * wy)) <= 0;
+        const std::optional<bool> got = meet::closing_at_end(a0, b0, a1, b1);
+        if (!got) continue;
+        ++decided;
+        ASSERT_EQ(*got, want) << "case " << n;
+        const Rational sum = q(ra) + q(rb);
+        const bool clear = !(d1x * d1x + d1y * d1y < sum * sum);
+        if (!*got) {
+            ++opening;
+            continue;
+        }
+        if (!clear) continue;
+        ++closing_clear;
+        const double lo = t01(rng), t = 1.0 - t01(rng);
+        const std::vector<PathPoint> pa{{lo, a0}, {t, a1}}, pb{{lo, b0}, {t, b1}};
+        const std::optional<meet::Root> m = meet::first_meet(pa, pb, {ra, rb}, lo, {}, {}, t);
+        ASSERT_FALSE(m && meet::compare(*m, t) < 0) << "case " << n;
+    }
+    // The bound decides nearly every case, and each branch is reached often (a guard against a generator that
+    // proves nothing).
+    EXPECT_GT(decided, 18000);
+    EXPECT_GT(closing_clear, 3000);
+    EXPECT_GT(opening, 3000);
+}
+
 TEST(MeetRootStages, AJumpEntersAsJumpThroughReadsIt) {
     // jump_enters (a nudged centre's jump, docs/scene-log.md, "Balls that meet", 4): a jump p0 → p1 that starts at
     // least S from k enters where it comes strictly closer than S on the segment; from within reach it enters

@@ -367,6 +367,14 @@ bool closer_than(Vec2 a, Vec2 b, Radii S) {
     return ex * ex + ey * ey < sum_exact * sum_exact;
 }
 
+std::optional<bool> closing_at_end(Vec2 a0, Vec2 b0, Vec2 a1, Vec2 b1) {
+    const Approx2 d1x = fine(a1.x) - fine(b1.x), d1y = fine(a1.y) - fine(b1.y);
+    const Approx2 wx = d1x - (fine(a0.x) - fine(b0.x)), wy = d1y - (fine(a0.y) - fine(b0.y));
+    const std::optional<int> s = disc::sign(d1x * wx + d1y * wy);
+    if (!s) return std::nullopt;
+    return *s <= 0;
+}
+
 bool jump_enters(Vec2 p0, Vec2 p1, const std::pair<Rational, Rational>& k, Radii S) {
     const Rational dx = Rational(p0.x) - k.first, dy = Rational(p0.y) - k.second;
     const Rational wx = Rational(p1.x) - Rational(p0.x), wy = Rational(p1.y) - Rational(p0.y);

@@ -91,6 +91,11 @@ double next_point(std::span<const PathPoint> a, std::span<const PathPoint> b, do
 /// |a − b|² < S², exactly (a filter in doubles first).
 bool closer_than(Vec2 a, Vec2 b, Radii S);
 
+/// Whether two balls moving from a0, b0 to a1, b1 on one interval come no farther apart at its end: the sign of
+/// D1·(D1 − D0) ≤ 0, D0 = a0 − b0, D1 = a1 − b1 (the end of |D(u)|², a convex quadratic, falls or is flat). In
+/// bounded double-double; nothing where the bound does not decide it.
+std::optional<bool> closing_at_end(Vec2 a0, Vec2 b0, Vec2 a1, Vec2 b1);
+
 /// Whether a jump p0 → p1 (a centre moved at one time) that starts at least S from the point k comes closer than S
 /// to it along the way: |D + W·u|² < S² for some u in [0, 1], D = p0 − k, W = p1 − p0, exactly (jump-through's rule).
 bool jump_enters(Vec2 p0, Vec2 p1, const std::pair<bignum::Rational, bignum::Rational>& k, Radii S);

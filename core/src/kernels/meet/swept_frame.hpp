@@ -165,7 +165,7 @@ private:
 
     /// Whether the pieces to the centres (cut_a_, cut_b_, made by too_close) enter each other's reach before t, or
     /// one that starts before lo enters the other's printed path there: from outside S (pass-through's rule), or, with
-    /// `any`, before t also from within.
+    /// `any`, before t also from within. `any` is asked only where the centres are not closer than S (too_close).
     bool pieces_enter(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, bool any);
 
     /// Whether balls a and b were closer than S at lo already, placed so by the scene: on their paths' exact points
