@@ -284,14 +284,14 @@ TEST(MeetRootStages, MovingApartIsDecidedAsTheRationalsDecideIt) {
 
 TEST(MeetRootStages, ClosingAtTheEndIsTheRationalSignAndLeavesNoMeetBeforeIt) {
     // closing_at_end: the sign of D1·(D1 − D0) ≤ 0 where its bound decides it, else nothing. A meet's placement
-    // (pieces_enter) leans on it: two pieces from lo to t whose ends are not closer than S and which close in at t
-    // hold no meet before t, so the search is skipped. Cases where both are thin: the ends touching a few ulps
-    // off S, moving nearly square to the line of centres at t (the slope a few ulps either side of 0, or 0), far
-    // from the origin, at magnitudes from 2^−500 to 2^500; each decided sign against the rationals, and each
-    // "closing" with ends not closer than S against first_meet itself.
+    // (pieces_enter) leans on it through surely_no_meet_before_end: two pieces from lo to t whose ends are not closer
+    // than S and which close in at t hold no meet before t, so the search is skipped. Cases where both are thin: the
+    // ends touching a few ulps off S, moving nearly square to the line of centres at t (the slope a few ulps either
+    // side of 0, or 0), far from the origin, at magnitudes from 2^−500 to 2^500; each decided sign against the
+    // rationals, and each pair with ends not closer than S against first_meet itself.
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(-1.0, 1.0), angle(0.0, 6.283185307179586), t01(0.05, 0.45);
-    int decided = 0, closing_clear = 0, opening = 0;
+    int decided = 0, skipped = 0, opening = 0, dips = 0;
     for (int n = 0; n < 20000; ++n) {
         const double s = scale_of(rng);
         const double far = rng() % 2 ? std::ldexp(s, static_cast<int>(rng() % 40)) : 0.0;
@@ -311,29 +311,36 @@ TEST(MeetRootStages, ClosingAtTheEndIsTheRationalSignAndLeavesNoMeetBeforeIt) {
         const double ra = nudge(rng, S / 2), rb = S - ra;
         const Rational d1x = q(a1.x) - q(b1.x), d1y = q(a1.y) - q(b1.y);
         const Rational wx = d1x - (q(a0.x) - q(b0.x)), wy = d1y - (q(a0.y) - q(b0.y));
-        const bool want = bignum::sign(Rational(d1x * wx + d1y * wy)) <= 0;
+        const bool closing = bignum::sign(Rational(d1x * wx + d1y * wy)) <= 0;
         const std::optional<bool> got = meet::closing_at_end(a0, b0, a1, b1);
-        if (!got) continue;
-        ++decided;
-        ASSERT_EQ(*got, want) << "case " << n;
-        const Rational sum = q(ra) + q(rb);
-        const bool clear = !(d1x * d1x + d1y * d1y < sum * sum);
-        if (!*got) {
-            ++opening;
-            continue;
+        if (got) {
+            ++decided;
+            ASSERT_EQ(*got, closing) << "case " << n;
         }
-        if (!clear) continue;
-        ++closing_clear;
+        const Rational sum = q(ra) + q(rb);
+        if (d1x * d1x + d1y * d1y < sum * sum) continue;  // (ends closer than S: not asked)
         const double lo = t01(rng), t = 1.0 - t01(rng);
         const std::vector<PathPoint> pa{{lo, a0}, {t, a1}}, pb{{lo, b0}, {t, b1}};
         const std::optional<meet::Root> m = meet::first_meet(pa, pb, {ra, rb}, lo, {}, {}, t);
-        ASSERT_FALSE(m && meet::compare(*m, t) < 0) << "case " << n;
+        const bool before = m && meet::compare(*m, t) < 0;
+        const bool sure = meet::surely_no_meet_before_end(pa, pb, lo, t);
+        ASSERT_EQ(sure, got && *got) << "case " << n;
+        if (sure) {
+            ++skipped;
+            ASSERT_FALSE(before) << "case " << n;
+        }
+        opening += !closing;
+        dips += !closing && before;
+        // Other paths are left to the search: a piece that starts later than lo, or a path of more points.
+        EXPECT_FALSE(meet::surely_no_meet_before_end(std::vector<PathPoint>{{lo + (t - lo) / 2, a0}, {t, a1}}, pb, lo, t));
+        EXPECT_FALSE(meet::surely_no_meet_before_end(std::vector<PathPoint>{{lo, a0}, {t, a1}, {1.0, a1}}, pb, lo, t));
     }
-    // The bound decides nearly every case, and each branch is reached often (a guard against a generator that
-    // proves nothing).
+    // The bound decides nearly every case, and each branch is reached often: pairs skipped, and pairs opening at t
+    // that dip into reach before it (what the slope's test keeps out; a guard against a generator that proves nothing).
     EXPECT_GT(decided, 18000);
-    EXPECT_GT(closing_clear, 3000);
+    EXPECT_GT(skipped, 3000);
     EXPECT_GT(opening, 3000);
+    EXPECT_GT(dips, 300);
 }
 
 TEST(MeetRootStages, AJumpEntersAsJumpThroughReadsIt) {

@@ -174,16 +174,9 @@ void SweptFrame::end_at(std::uint32_t i, const meet::PointOnPath& p, double t, s
 }
 
 bool SweptFrame::pieces_enter(std::uint32_t a, std::uint32_t b, meet::Radii S, double lo, double t, bool any) {
-    // (The common case, decided without the search: two pieces from lo to t alone, the centres they end at not
-    // closer than S (too_close asks `any` only of such), and the two no farther apart at t than just before it. On
-    // [lo, t], |D(u)|² − S² is convex with a slope ≤ 0 at t, so it falls all through and is ≥ 0 at t: it is ≥ 0
-    // everywhere, > 0 before t unless the two rest relative to each other, and no meet lies before t. Where the
-    // bound does not decide the slope, the search does.)
-    if (any && cut_a_.size() == 2 && cut_b_.size() == 2 && cut_a_[0].t == lo && cut_b_[0].t == lo && lo < t &&
-        cut_a_[1].t == t && cut_b_[1].t == t) {
-        if (const auto closing = meet::closing_at_end(cut_a_[0].p, cut_b_[0].p, cut_a_[1].p, cut_b_[1].p))
-            if (*closing) return false;
-    }
+    // (The common case, decided without the search: two pieces from lo to t alone, closing in at t, whose centres
+    // are not closer than S: too_close asks `any` only of such.)
+    if (any && meet::surely_no_meet_before_end(cut_a_, cut_b_, lo, t)) return false;
     // An entry before t on the pieces that end at the centres (one at t itself is the meet).
     const std::optional<meet::Root> r =
         any ? meet::first_meet(cut_a_, cut_b_, S, lo, {}, {}, t) : meet::first_entry(cut_a_, cut_b_, S, lo, t);

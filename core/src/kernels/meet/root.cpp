@@ -375,6 +375,13 @@ std::optional<bool> closing_at_end(Vec2 a0, Vec2 b0, Vec2 a1, Vec2 b1) {
     return *s <= 0;
 }
 
+bool surely_no_meet_before_end(std::span<const PathPoint> a, std::span<const PathPoint> b, double lo, double t) {
+    if (a.size() != 2 || b.size() != 2 || !(lo < t)) return false;
+    if (a[0].t != lo || b[0].t != lo || a[1].t != t || b[1].t != t) return false;
+    const std::optional<bool> closing = closing_at_end(a[0].p, b[0].p, a[1].p, b[1].p);
+    return closing && *closing;
+}
+
 bool jump_enters(Vec2 p0, Vec2 p1, const std::pair<Rational, Rational>& k, Radii S) {
     const Rational dx = Rational(p0.x) - k.first, dy = Rational(p0.y) - k.second;
     const Rational wx = Rational(p1.x) - Rational(p0.x), wy = Rational(p1.y) - Rational(p0.y);

@@ -96,6 +96,12 @@ bool closer_than(Vec2 a, Vec2 b, Radii S);
 /// bounded double-double; nothing where the bound does not decide it.
 std::optional<bool> closing_at_end(Vec2 a0, Vec2 b0, Vec2 a1, Vec2 b1);
 
+/// True if paths a and b, each one piece from lo to t (lo < t), whose ends at t are not closer than S (the caller's
+/// to know), surely hold no meet before t: where the two close in at t (closing_at_end). On [lo, t], |D(u)|² − S² is
+/// convex with a slope ≤ 0 at t, so it falls all through to a value ≥ 0 at t. False decides nothing (other paths, or
+/// the bound undecided: first_meet's search decides).
+bool surely_no_meet_before_end(std::span<const PathPoint> a, std::span<const PathPoint> b, double lo, double t);
+
 /// Whether a jump p0 → p1 (a centre moved at one time) that starts at least S from the point k comes closer than S
 /// to it along the way: |D + W·u|² < S² for some u in [0, 1], D = p0 − k, W = p1 − p0, exactly (jump-through's rule).
 bool jump_enters(Vec2 p0, Vec2 p1, const std::pair<bignum::Rational, bignum::Rational>& k, Radii S);
