@@ -332,8 +332,9 @@ TEST(MeetRootStages, ClosingAtTheEndIsTheRationalSignAndLeavesNoMeetBeforeIt) {
         opening += !closing;
         dips += !closing && before;
         // Other paths are left to the search: a piece that starts later than lo, or a path of more points.
-        EXPECT_FALSE(meet::surely_no_meet_before_end(std::vector<PathPoint>{{lo + (t - lo) / 2, a0}, {t, a1}}, pb, lo, t));
-        EXPECT_FALSE(meet::surely_no_meet_before_end(std::vector<PathPoint>{{lo, a0}, {t, a1}, {1.0, a1}}, pb, lo, t));
+        const std::vector<PathPoint> later{{lo + (t - lo) / 2, a0}, {t, a1}}, longer{{lo, a0}, {t, a1}, {1.0, a1}};
+        EXPECT_FALSE(meet::surely_no_meet_before_end(later, pb, lo, t));
+        EXPECT_FALSE(meet::surely_no_meet_before_end(longer, pb, lo, t));
     }
     // The bound decides nearly every case, and each branch is reached often: pairs skipped, and pairs opening at t
     // that dip into reach before it (what the slope's test keeps out; a guard against a generator that proves nothing).
