@@ -142,7 +142,8 @@ private:
     bool balls_meet_ = false;
     std::vector<double> masses_;
     std::vector<MeetRecord> meets_;
-    std::vector<BallFrame> frames_;  // the frame's balls as step_meets works them; their paths the last frame's
+    std::vector<BallFrame> frames_;  // the frame's balls as step_meets works them; between frames, their paths the
+                                     // last frame's, their `before` and `memory` the next one's
     StepScratch meet_scratch_;
 };
 

@@ -156,10 +156,13 @@ std::optional<StepError> World::step(std::vector<Event>& out) {
 std::optional<StepError> World::step_meeting(std::vector<Event>& out) {
     // Each ball alone through the frame (in parallel), then the frame's meets among them (meet.hpp), which re-step
     // the balls that meet from their meets on.
-    frames_.resize(balls_.size());
-    for (std::size_t i = 0; i < balls_.size(); ++i) {
-        frames_[i].before = balls_[i];
-        frames_[i].memory = memories_[i];
+    if (frames_.size() != balls_.size()) {
+        // The first frame; each later one finds its balls' states and memories here, written as the last one ended.
+        frames_.resize(balls_.size());
+        for (std::size_t i = 0; i < balls_.size(); ++i) {
+            frames_[i].before = balls_[i];
+            frames_[i].memory = memories_[i];
+        }
     }
     stepper_->step(kernel_, balls_, memories_, obstacles(), prefetch_ ? &*grid_ : nullptr);
     for (std::size_t i = 0; i < balls_.size(); ++i) {
@@ -179,6 +182,9 @@ std::optional<StepError> World::step_meeting(std::vector<Event>& out) {
         // A step that would leave the range left its ball where that step began.
         if (f.status == FrameStatus::out_of_range && !error) error = StepError{frame_, ball, f.status, f.state};
         balls_[i] = f.state;
+        // (the next frame's start, while its frame is at hand)
+        f.before = f.state;
+        f.memory = memories_[i];
         for (const HitEvent& h : f.events) {
             if (h.ball)
                 out.push_back({Event::Kind::meet, frame_, ball, Event::Shape::none, h.wall, h.point, h.out});
