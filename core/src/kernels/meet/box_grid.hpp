@@ -74,7 +74,9 @@ public:
         for (std::size_t c = 0; c + 1 < start_.size(); ++c) start_[c + 1] += start_[c];
         entries_.resize(start_.back());
         next_.assign(start_.begin(), start_.end() - 1);
-        for_cells(false, [&](std::uint32_t i, std::size_t c) { entries_[next_[c]++] = i; });
+        for_cells(false, [&](std::uint32_t i, std::size_t c) {
+            entries_[next_[c]++] = {boxes[i], i, ranges_[i].x0, ranges_[i].y0};
+        });
     }
 
     /// Calls f(i, j), i < j, once for every two balls entered by build whose boxes overlap (and possibly for a few
@@ -101,12 +103,10 @@ public:
                 const std::size_t c = y * nx_ + x;
                 for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k)
                     for (std::uint32_t m = k + 1; m < start_[c + 1]; ++m) {
-                        const std::uint32_t i = std::min(entries_[k], entries_[m]);
-                        const std::uint32_t j = std::max(entries_[k], entries_[m]);
-                        const Range &a = ranges_[i], &b = ranges_[j];
+                        const Entry &a = entries_[k], &b = entries_[m];
                         // Listed in an earlier cell?
                         if (std::max(a.x0, b.x0) != x || std::max(a.y0, b.y0) != y) continue;
-                        if (boxes_overlap(boxes[i], boxes[j])) f(i, j);
+                        if (boxes_overlap(a.box, b.box)) f(std::min(a.ball, b.ball), std::max(a.ball, b.ball));
                     }
             }
     }
@@ -133,14 +133,14 @@ public:
         if (nx_ == 0) return;
         const Range r = range(b);
         if (cells(r) > k_big_cells) {
-            for (std::uint32_t j : entries_) f(j);
+            for (const Entry& e : entries_) f(e.ball);
             for (const Later& e : later_) f(e.ball);
             return;
         }
         for (std::size_t y = r.y0; y <= r.y1; ++y)
             for (std::size_t x = r.x0; x <= r.x1; ++x) {
                 const std::size_t c = y * nx_ + x;
-                for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) f(entries_[k]);
+                for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) f(entries_[k].ball);
                 if (head_.empty()) continue;
                 for (std::uint32_t e = head_[c]; e != k_none; e = later_[e].next) f(later_[e].ball);
             }
@@ -153,15 +153,25 @@ private:
     static constexpr std::size_t k_big_cells = 256;
     static constexpr std::uint32_t k_none = 0xffffffffu;
 
+    /// The cells a box reaches: columns x0..x1, rows y0..y1 (each below 4097).
     struct Range {
-        std::size_t x0, x1, y0, y1;
+        std::uint16_t x0, x1, y0, y1;
+    };
+    /// A ball entered by build in a cell: its box and its first cell (x0, y0: below 4097), where pairs() reads them
+    /// in cell order.
+    struct Entry {
+        Box box;
+        std::uint32_t ball;
+        std::uint16_t x0, y0;
     };
     /// An entry made after the grid was built: its ball and the cell's previous such entry.
     struct Later {
         std::uint32_t ball, next;
     };
 
-    static std::size_t cells(const Range& r) { return (r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1); }
+    static std::size_t cells(const Range& r) {
+        return static_cast<std::size_t>(r.x1 - r.x0 + 1) * static_cast<std::size_t>(r.y1 - r.y0 + 1);
+    }
 
     /// Calls f(i, c) for each ball i and each cell c its box reaches; a ball whose box reaches too many is entered
     /// as reaching everywhere instead (if enter_big: on the first of the two passes).
@@ -178,11 +188,11 @@ private:
         }
     }
 
-    std::size_t clamp_cell(double v, std::size_t n) const {
+    static std::uint16_t clamp_cell(double v, std::size_t n) {
         if (!(v > 0.0)) return 0;  // below the origin, or NaN
         // (through a signed integer: one instruction, where a double to a 64-bit unsigned one is a branch; the value
         // is below 4097)
-        return static_cast<std::size_t>(static_cast<std::int64_t>(std::min(v, static_cast<double>(n - 1))));
+        return static_cast<std::uint16_t>(static_cast<std::int32_t>(std::min(v, static_cast<double>(n - 1))));
     }
 
     Range range(const Box& b) const {
@@ -194,7 +204,7 @@ private:
     double cell_ = 1.0;
     std::size_t nx_ = 0, ny_ = 0;
     std::vector<std::uint32_t> start_;     // cell c's entries are entries_[start_[c] .. start_[c + 1])
-    std::vector<std::uint32_t> entries_;   // the frame's boxes, by cell
+    std::vector<Entry> entries_;           // the frame's boxes, by cell
     std::vector<std::uint32_t> head_;      // cell c's latest later entry, or k_none (empty: none made yet)
     std::vector<Later> later_;             // the boxes entered since
     std::vector<std::uint32_t> everyone_;  // balls whose boxes reach too many cells (or every ball: no grid)
