@@ -132,31 +132,67 @@ openssl_sysroot() {
 }
 
 # --- runs -----------------------------------------------------------------------------------------
+# par CMD...: CMD in the background, with at most $jobs of them running at once. Every run below writes files
+# of its own and nothing else, so the order they finish in changes no byte; `wait` collects them. (The runs are
+# one process each, under qemu or node one core each: one at a time, a core stood idle through half a leg.)
+par() {
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
+  "$@" &
+}
+
+# run_to FILE CMD...: CMD's standard output into FILE, then "# exit STATUS" after it.
+run_to() {
+  local file=$1; shift
+  "$@" >"$file" 2>/dev/null </dev/null
+  echo "# exit $?" >>"$file"
+}
+
 # capture DIR RUNNER...: the hashes and every log's `ricochet run` output into DIR.
 capture() {
   local dir=$1; shift
-  local log name rc
+  local log
   mkdir -p "$dir/run"
   # The peers' logs are left out (see the top of this file).
   local logs=()
   mapfile -t logs < <(find replays -name '*.scene' -not -path 'replays/peers/*' | LC_ALL=C sort)
   # Pass/fail of the replay is not the question here (the replay tests ask it); the bytes are.
-  "$@" replay --hashes "${logs[@]}" >"$dir/hashes.txt" 2>"$dir/hashes.err" </dev/null
-  echo "# exit $?" >>"$dir/hashes.txt"
+  par run_to "$dir/hashes.txt" "$@" replay --hashes "${logs[@]}"
   for log in "${logs[@]}"; do
-    name=${log//\//__}
-    "$@" run "$log" >"$dir/run/$name" 2>/dev/null </dev/null
-    rc=$?
-    echo "# exit $rc" >>"$dir/run/$name"
+    par run_to "$dir/run/${log//\//__}" "$@" run "$log"
   done
   # The harness's own output: the failure log `ricochet reduce` saves for each of replays/lecture/'s logs
   # (each fails under its lecture kernel), on stdout, with its exit status; on the legs of reduce_legs.
-  [ "${capture_reduce:-1}" = 1 ] || return 0
-  for log in replays/lecture/*.scene; do
-    name=reduce__${log//\//__}
-    "$@" reduce "$log" >"$dir/run/$name" 2>/dev/null </dev/null
-    rc=$?
-    echo "# exit $rc" >>"$dir/run/$name"
+  if [ "${capture_reduce:-1}" = 1 ]; then
+    for log in replays/lecture/*.scene; do
+      par run_to "$dir/run/reduce__${log//\//__}" "$@" reduce "$log"
+    done
+  fi
+  wait
+}
+
+# fuzz_one DIR NAME INPUT KERNEL TARGET_PATH RUNNER...: one fuzz target on one input (see capture_harness).
+fuzz_one() {
+  local dir=$1 name=$2 input=$3 k=$4 target=$5; shift 5
+  local saved=$dir/saved/$name.scene verdict=passed
+  # In a subshell whose own stderr is dropped (the `exit` keeps bash from exec'ing the target in its place): a
+  # failing input aborts the target, and bash would say so on the script's stderr.
+  ( RICOCHET_KERNEL=$k RICOCHET_FUZZ_SCENE_OUT=$saved RICOCHET_FUZZ_SHA1=${input##*/} \
+      "$@" "$target" "$input" >/dev/null 2>"$dir/saved/$name.err" </dev/null; exit $? ) 2>/dev/null ||
+    verdict=failed
+  { echo "# $verdict"; grep -a '^==ricochet-fuzz== FAILURE' "$dir/saved/$name.err"
+    [ -f "$saved" ] && cat "$saved"; } >"$dir/run/$name"
+}
+
+# props_one DIR KERNEL PROPS RUNNER...: the property suite under KERNEL (see capture_harness).
+props_one() {
+  local dir=$1 k=$2 props=$3 saved; shift 3
+  rm -rf "$dir/saved/props-$k"; mkdir -p "$dir/saved/props-$k"
+  RICOCHET_KERNEL=$k RICOCHET_REPLAY_DIR=$dir/saved/props-$k RC_PARAMS="seed=1" \
+    "$@" "$props" >"$dir/saved/props-$k.out" 2>&1 </dev/null
+  echo "# exit $?" >"$dir/run/props__${k}__failed"
+  sed -n 's/^\[  FAILED  \] \([A-Za-z0-9_./]*\).*/\1/p' "$dir/saved/props-$k.out" | LC_ALL=C sort -u >>"$dir/run/props__${k}__failed"
+  for saved in "$dir/saved/props-$k"/*.scene; do
+    [ -f "$saved" ] && cp "$saved" "$dir/run/props__${k}__${saved##*/}"
   done
 }
 
@@ -171,37 +207,24 @@ capture() {
 #     compared; the reducer's budget is a count of tries, so what it saves does not depend on the clock.)
 capture_harness() {
   local dir=$1 build=$2; shift 2
-  local t k input name saved verdict props=$build/properties/ricochet_properties
+  local t k input
   local ext=
   [ "$(basename "${1:-}")" = node ] && ext=.js
   mkdir -p "$dir/run" "$dir/saved"
+  # The property suites first: the longest runs, started while the short ones fill the other core.
+  if [ -z "$ext" ]; then
+    for k in $harness_kernels; do
+      par props_one "$dir" "$k" "$build/properties/ricochet_properties" "$@"
+    done
+  fi
   for t in static sweep scene disc meet; do
     for k in $harness_kernels; do
       for input in fuzz/corpus/$t/*; do
-        name=fuzz__${t}__${k}__${input##*/}
-        saved=$dir/saved/$name.scene
-        verdict=passed
-        # In a subshell whose own stderr is dropped (the `exit` keeps bash from exec'ing the target in its place): a
-        # failing input aborts the target, and bash would say so on the script's stderr.
-        ( RICOCHET_KERNEL=$k RICOCHET_FUZZ_SCENE_OUT=$saved RICOCHET_FUZZ_SHA1=${input##*/} \
-            "$@" "$build/fuzz/fuzz_$t$ext" "$input" >/dev/null 2>"$dir/saved/$name.err" </dev/null; exit $? ) 2>/dev/null ||
-          verdict=failed
-        { echo "# $verdict"; grep -a '^==ricochet-fuzz== FAILURE' "$dir/saved/$name.err"
-          [ -f "$saved" ] && cat "$saved"; } >"$dir/run/$name"
+        par fuzz_one "$dir" "fuzz__${t}__${k}__${input##*/}" "$input" "$k" "$build/fuzz/fuzz_$t$ext" "$@"
       done
     done
   done
-  [ -n "$ext" ] && return 0
-  for k in $harness_kernels; do
-    rm -rf "$dir/saved/props-$k"; mkdir -p "$dir/saved/props-$k"
-    RICOCHET_KERNEL=$k RICOCHET_REPLAY_DIR=$dir/saved/props-$k RC_PARAMS="seed=1" \
-      "$@" "$props" >"$dir/saved/props-$k.out" 2>&1 </dev/null
-    echo "# exit $?" >"$dir/run/props__${k}__failed"
-    sed -n 's/^\[  FAILED  \] \([A-Za-z0-9_./]*\).*/\1/p' "$dir/saved/props-$k.out" | LC_ALL=C sort -u >>"$dir/run/props__${k}__failed"
-    for saved in "$dir/saved/props-$k"/*.scene; do
-      [ -f "$saved" ] && cp "$saved" "$dir/run/props__${k}__${saved##*/}"
-    done
-  done
+  wait
 }
 harness_kernels="lecture-float lecture-double"
 harness_targets=(fuzz_static fuzz_sweep fuzz_scene fuzz_disc fuzz_meet)
