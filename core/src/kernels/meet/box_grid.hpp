@@ -22,6 +22,11 @@ inline bool boxes_overlap(const Box& a, const Box& b) {
     return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
 }
 
+/// The smallest box holding a and b.
+inline Box enclosing(const Box& a, const Box& b) {
+    return {{std::min(a.lo.x, b.lo.x), std::min(a.lo.y, b.lo.y)}, {std::max(a.hi.x, b.hi.x), std::max(a.hi.y, b.hi.y)}};
+}
+
 /// A uniform grid of cells, each listing the balls entered whose boxes reach it: the frame's boxes in one array in
 /// cell order (a counting sort: a few allocations a frame, not one per cell), the boxes entered later (new paths
 /// after meets, few) in a list per cell.

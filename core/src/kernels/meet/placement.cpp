@@ -105,7 +105,7 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
         const double from = piece_start(piece);
         neighbours(i, [&](std::uint32_t k) {
             const meet::Radii Sk{radius(i), radius(k)};
-            if (crowded || k == a || k == b || !(Sk.rounded() > 0.0)) return;
+            if (crowded || k == a || k == b || !(Sk.rounded() > 0.0) || out_of_reach(i, k, from)) return;
             const MeetSnapshot* was = before(k);
             const std::vector<PathPoint>& path = was ? was->path : balls_[k].path;
             const double k_from = was ? was->seg_t : seg_t_[k];
@@ -306,7 +306,7 @@ bool SweptFrame::enters_before(std::uint32_t i, std::uint32_t a, std::uint32_t b
     bool enters = false;
     neighbours(i, [&](std::uint32_t k) {
         const meet::Radii Sk{radius(i), radius(k)};
-        if (enters || k == a || k == b || !(Sk.rounded() > 0.0)) return;
+        if (enters || k == a || k == b || !(Sk.rounded() > 0.0) || out_of_reach(i, k, from)) return;
         const std::vector<PathPoint>&fi = printed(i, cut, full_a_), &fk = third_printed(k, full_k_);
         const std::optional<meet::Root> e = meet::first_entry(fi, fk, Sk, from, until);
         enters = e && meet::compare(*e, until) < 0;
@@ -326,7 +326,7 @@ bool SweptFrame::crowds_others(std::uint32_t i, std::uint32_t a, std::uint32_t b
     bool crowded = false;
     neighbours(i, [&](std::uint32_t k) {
         const meet::Radii Sk{radius(i), radius(k)};
-        if (crowded || k == a || k == b || !(Sk.rounded() > 0.0)) return;
+        if (crowded || k == a || k == b || !(Sk.rounded() > 0.0) || out_of_reach(i, k, s)) return;
         const std::vector<PathPoint>& whole = third_printed(k, full_k_);
         if (whole.back().t < t) return;
         const Vec2 at = meet::point_at(whole, t).x;

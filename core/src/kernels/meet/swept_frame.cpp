@@ -18,9 +18,9 @@ SweptFrame::SweptFrame(KernelId k, const Obstacles& obstacles, std::span<const d
                        MeetFrameScratch& kept)
     : k_(k), obstacles_(obstacles), masses_(masses), balls_(balls), meets_(meets), scratch_(scratch),
       n_(balls.size()), seg_t_(kept.seg_t), seg_vel_(kept.seg_vel), version_(kept.version),
-      committed_(kept.committed), done_(kept.done), box_(kept.box), grid_(kept.grid), seen_(kept.seen),
-      heap_(kept.heap), cut_a_(kept.cut_a), cut_b_(kept.cut_b), full_a_(kept.full_a), full_b_(kept.full_b),
-      full_k_(kept.full_k), before_(kept.before), touched_(kept.touched) {
+      committed_(kept.committed), done_(kept.done), box_(kept.box), reach_(kept.reach), grid_(kept.grid),
+      seen_(kept.seen), heap_(kept.heap), cut_a_(kept.cut_a), cut_b_(kept.cut_b), full_a_(kept.full_a),
+      full_b_(kept.full_b), full_k_(kept.full_k), before_(kept.before), touched_(kept.touched) {
     seg_t_.assign(n_, 0.0);
     seg_vel_.resize(n_);
     version_.assign(n_, 0);
@@ -36,7 +36,29 @@ SweptFrame::SweptFrame(KernelId k, const Obstacles& obstacles, std::span<const d
     done_.resize(n_);
     before_.resize(n_);
     box_.resize(n_);
+    reach_.resize(n_);
     heap_.clear();
+}
+
+const std::vector<std::uint32_t>& SweptFrame::near(std::uint32_t i) {
+    for (int k = 0; k < 2; ++k)
+        if (near_[k].ball == i && near_[k].paths == paths_) {
+            near_next_ = 1 - k;
+            return near_[k].balls;
+        }
+    NearList& l = near_[near_next_];
+    near_next_ = 1 - near_next_;
+    l.ball = i;
+    l.paths = paths_;
+    l.balls.clear();
+    ++stamp_;
+    seen_[i] = stamp_;
+    grid_.query(box_[i], [&](std::uint32_t j) {
+        if (seen_[j] == stamp_) return;
+        seen_[j] = stamp_;
+        l.balls.push_back(j);
+    });
+    return l.balls;
 }
 
 void SweptFrame::run() {
@@ -131,8 +153,11 @@ void SweptFrame::restart(std::size_t i, double t, Vec2 x, Vec2 v) {
     seg_t_[i] = t;
     seg_vel_[i] = v;
     meet::build_path(f.path, t, x, f.events, ball.pos);
+    if (version_[i] == 0) reach_[i] = box_[i];
     box_[i] = meet::path_box(f.path, radius(i));
+    reach_[i] = meet::enclosing(reach_[i], box_[i]);
     ++version_[i];
+    ++paths_;
 }
 
 void SweptFrame::hold(std::size_t i, double t) {
@@ -143,7 +168,9 @@ void SweptFrame::hold(std::size_t i, double t) {
     f.state = {x, seg_vel_[i], radius(i)};
     f.path = {{t, x}, {1.0, x}};
     box_[i] = meet::path_box(f.path, radius(i));
+    reach_[i] = meet::enclosing(reach_[i], box_[i]);
     ++version_[i];
+    ++paths_;
 }
 
 SweptFrame::SameTime SweptFrame::same_time(const Candidate& c) {
@@ -229,6 +256,7 @@ void SweptFrame::take(const Candidate& c, bool tied, bool grouped) {
     }
     grid_.insert(a, box_[a]);
     grid_.insert(b, box_[b]);
+    ++paths_;  // (the grid lists them where they go now)
     if (again) push(a, b, std::move(*again));
     neighbours(a, [&](std::uint32_t k) {
         if (k != b) consider(std::min(a, k), std::max(a, k));

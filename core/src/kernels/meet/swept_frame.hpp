@@ -44,6 +44,7 @@ struct MeetFrameScratch {
     std::vector<std::vector<PathPoint>> committed;
     std::vector<std::vector<HitEvent>> done;
     std::vector<meet::Box> box;
+    std::vector<meet::Box> reach;
     meet::BoxGrid grid;
     std::vector<std::uint32_t> seen;
     std::vector<MeetCandidate> heap;
@@ -114,17 +115,16 @@ private:
 
     // Finding meets (swept_frame.cpp).
 
-    /// Calls f(j) once for every other ball j the grid lists near ball i's box.
+    /// Calls f(j) once for every other ball j the grid lists near ball i's box (f asks for no other ball's).
     template <class F>
     void neighbours(std::uint32_t i, F&& f) {
-        ++stamp_;
-        seen_[i] = stamp_;
-        grid_.query(box_[i], [&](std::uint32_t j) {
-            if (seen_[j] == stamp_) return;
-            seen_[j] = stamp_;
-            f(j);
-        });
+        for (const std::uint32_t j : near(i)) f(j);
     }
+
+    /// The balls the grid lists near ball i's box, each once, in the order the grid gives them. The lists of the last
+    /// two balls asked about are kept until a path changes (the grid and the boxes stay as they are until then, and a
+    /// meet's placement asks about its two balls again and again).
+    const std::vector<std::uint32_t>& near(std::uint32_t i);
 
     /// The pair's next meet on the current paths, from `from` (default: the later of their starts) on.
     std::optional<meet::Root> search(std::uint32_t a, std::uint32_t b, double from = -1.0) const;
@@ -202,6 +202,18 @@ private:
         if (!see_before_ || taking_tied_ || group_ == 0 || before_[k].group != group_) return nullptr;
         const MeetSnapshot& s = before_[k];
         return s.a == taking_a_ || s.a == taking_b_ || s.b == taking_a_ || s.b == taking_b_ ? nullptr : &s;
+    }
+
+    /// Whether third ball k is surely out of ball i's reach from frame time `from` on, i one of the meet's two balls
+    /// and `from` no earlier than its current path's start: k seen as it is (not as it was, before), and i's box apart
+    /// from k's current path's, where that is all k printed from `from` on (no path before it in this frame, or one
+    /// left before `from`), else from the box around every path k had in this frame (reach_). The piece to i's centre
+    /// lies in i's box (its path's points, the centre rounded or moved a few ulps off it, within path_box's margin),
+    /// so no entry, crowding or jump between the two can be found there (the test too_close makes of k's current
+    /// path).
+    bool out_of_reach(std::uint32_t i, std::uint32_t k, double from) const {
+        if (before(k) != nullptr) return false;
+        return !meet::boxes_overlap(box_[i], version_[k] == 0 || seg_t_[k] < from ? box_[k] : reach_[k]);
     }
 
     /// Third ball k's printed path so far, as the placement sees it (before): its committed points then its
@@ -320,9 +332,18 @@ private:
     std::vector<std::vector<PathPoint>>& committed_;  // its path's points before the current path
     std::vector<std::vector<HitEvent>>& done_;       // its contacts before the current path, meets included
     std::vector<Box>& box_;
+    std::vector<Box>& reach_;  // once its path changed (version_ > 0): the box around every path it had in the frame
     meet::BoxGrid& grid_;
-    std::vector<std::uint32_t>& seen_;  // the stamp of the last neighbours() call that listed the ball
+    std::vector<std::uint32_t>& seen_;  // the stamp of the last query near() made that listed the ball
     std::uint32_t stamp_ = 0;
+    struct NearList {
+        std::uint32_t ball = 0xffffffffu;  // none
+        std::uint64_t paths = 0;           // paths_ when it was made
+        std::vector<std::uint32_t> balls;
+    };
+    NearList near_[2];
+    int near_next_ = 0;       // the list near() replaces next (the one not asked about last)
+    std::uint64_t paths_ = 0;  // how many times a path changed in this frame
     std::vector<Candidate>& heap_;
     std::vector<PathPoint>&cut_a_, &cut_b_;  // the paths to a meet's centres (too_close)
     std::vector<PathPoint>&full_a_, &full_b_, &full_k_;  // printed paths with their committed points
