@@ -103,6 +103,7 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
         if (start.t == t && same_bits(start.p, x)) continue;
         if (enters_before(i, a, b, piece, lo)) return true;
         const double from = piece_start(piece);
+        const std::vector<PathPoint>* fi = nullptr;  // ball i's printed path, made where first needed
         neighbours(i, [&](std::uint32_t k) {
             const meet::Radii Sk{radius(i), radius(k)};
             if (crowded || k == a || k == b || !(Sk.rounded() > 0.0) || out_of_reach(i, k, from)) return;
@@ -113,8 +114,9 @@ bool SweptFrame::too_close(std::uint32_t a, std::uint32_t b, meet::Radii S, doub
             // from outside (pass-through's rule, as enters_before asks it up to lo), up to that beginning or t.
             if (k_from > lo && from < k_from) {
                 const double u = std::min(t, k_from);
-                const std::vector<PathPoint>&fi = printed(i, piece, full_a_), &fk = third_printed(k, full_k_);
-                const std::optional<meet::Root> e = meet::first_entry(fi, fk, Sk, from, u);
+                if (fi == nullptr) fi = &printed(i, piece, full_a_);
+                const std::vector<PathPoint>& fk = third_printed(k, full_k_);
+                const std::optional<meet::Root> e = meet::first_entry(*fi, fk, Sk, from, u);
                 if (e && meet::compare(*e, u) < 0) {
                     crowded = true;
                     return;
@@ -304,11 +306,13 @@ bool SweptFrame::enters_before(std::uint32_t i, std::uint32_t a, std::uint32_t b
     const double from = piece_start(cut);
     if (!(from < until)) return false;
     bool enters = false;
+    const std::vector<PathPoint>* fi = nullptr;  // ball i's printed path, made for the first ball within reach
     neighbours(i, [&](std::uint32_t k) {
         const meet::Radii Sk{radius(i), radius(k)};
         if (enters || k == a || k == b || !(Sk.rounded() > 0.0) || out_of_reach(i, k, from)) return;
-        const std::vector<PathPoint>&fi = printed(i, cut, full_a_), &fk = third_printed(k, full_k_);
-        const std::optional<meet::Root> e = meet::first_entry(fi, fk, Sk, from, until);
+        if (fi == nullptr) fi = &printed(i, cut, full_a_);
+        const std::vector<PathPoint>& fk = third_printed(k, full_k_);
+        const std::optional<meet::Root> e = meet::first_entry(*fi, fk, Sk, from, until);
         enters = e && meet::compare(*e, until) < 0;
     });
     return enters;
