@@ -117,6 +117,7 @@ TEST(MeetBoxGrid, QueryListsEveryOverlappingBallAfterInserts) {
         BoxGrid grid;
         grid.build(boxes);
         grid.pairs(boxes, [](std::uint32_t, std::uint32_t) {});
+        EXPECT_EQ(grid.inserted(), 0u);
         std::uniform_int_distribution<std::uint32_t> ball(0, 899);
         std::uniform_real_distribution<double> coord(-5.0, 65.0), len(0.0, 3.0);
         for (int step = 0; step < 400; ++step) {
@@ -125,7 +126,14 @@ TEST(MeetBoxGrid, QueryListsEveryOverlappingBallAfterInserts) {
                 const std::uint32_t i = ball(rng);
                 const Vec2 p{coord(rng), coord(rng)};
                 boxes[i] = around(p, p + Vec2{len(rng), -len(rng)} * (step % 50 == 0 ? 40.0 : 1.0), 0.1);
+                const std::size_t before = grid.inserted();
                 grid.insert(i, boxes[i]);
+                EXPECT_GE(grid.inserted(), before + 1);  // at least one entry (a cell, or everywhere)
+            }
+            // Built afresh over the current boxes, as the meet step does once the entries made since are many.
+            if (step % 100 == 99) {
+                grid.build(boxes);
+                EXPECT_EQ(grid.inserted(), 0u);
             }
             const Vec2 p{coord(rng), coord(rng)};
             expect_query(grid, boxes, around(p, p + Vec2{len(rng), len(rng)}, 0.1));

@@ -1,7 +1,8 @@
 // Internal: the balls whose path boxes may overlap a given one, for the frame's meets (frame.cpp): a uniform grid
 // over the frame's path boxes, so that N balls cost near N box tests, not N². A ball whose box changes (a new path
 // after a meet) is entered again where its new box lies; stale entries only cost a box test (the caller tests the
-// current boxes). What it returns decides nothing: first_meet does, exactly, on every pair whose boxes overlap.
+// current boxes), and once they are many the caller builds the grid afresh over the current boxes (inserted()). What
+// it returns decides nothing: first_meet does, exactly, on every pair whose boxes overlap.
 #pragma once
 
 #include <algorithm>
@@ -37,6 +38,7 @@ public:
     void build(const std::vector<Box>& boxes) {
         everyone_.clear();
         later_.clear();
+        inserted_ = 0;
         start_.clear();
         entries_.clear();
         head_.clear();
@@ -116,11 +118,16 @@ public:
             }
     }
 
+    /// How many entries insert made since the grid was built (each cell a box reached; a ball reaching everywhere, 1).
+    std::size_t inserted() const { return inserted_; }
+
     /// Enters ball i again with box b (its entries under its old box stay: stale, the caller tests boxes).
     void insert(std::uint32_t i, const Box& b) {
+        ++inserted_;
         if (nx_ == 0) return everyone_.push_back(i);
         const Range r = range(b);
         if (cells(r) > k_big_cells) return everyone_.push_back(i);
+        inserted_ += cells(r) - 1;
         if (head_.empty()) head_.assign(nx_ * ny_, k_none);  // the first entry made after the build
         for (std::size_t y = r.y0; y <= r.y1; ++y)
             for (std::size_t x = r.x0; x <= r.x1; ++x) {
@@ -213,6 +220,7 @@ private:
     std::vector<std::uint32_t> head_;      // cell c's latest later entry, or k_none (empty: none made yet)
     std::vector<Later> later_;             // the boxes entered since
     std::vector<std::uint32_t> everyone_;  // balls whose boxes reach too many cells (or every ball: no grid)
+    std::size_t inserted_ = 0;             // entries insert made since build
     std::vector<Range> ranges_;            // the cells each box entered by build reaches
     std::vector<double> sides_;            // build's scratch: the boxes' larger sides
     std::vector<std::uint32_t> next_;      // build's scratch: each cell's next free entry
