@@ -256,7 +256,7 @@ void SweptFrame::take(const Candidate& c, bool tied, bool grouped) {
     }
     grid_.insert(a, box_[a]);
     grid_.insert(b, box_[b]);
-    // Made afresh once the entries made since outnumber the balls (each meet leaves its balls' old ones behind,
+    // Made afresh once the entries made since outnumber twice the balls (each meet leaves its balls' old ones behind,
     // stale, for every query to pass over).
     if (grid_.inserted() > 2 * n_) grid_.build(box_);
     ++paths_;  // (the grid lists them where they go now)
