@@ -46,10 +46,7 @@ public:
         const std::size_t n = boxes.size();
         if (n == 0) return;
         Box all = boxes[0];
-        for (const Box& b : boxes) {
-            all.lo = {std::min(all.lo.x, b.lo.x), std::min(all.lo.y, b.lo.y)};
-            all.hi = {std::max(all.hi.x, b.hi.x), std::max(all.hi.y, b.hi.y)};
-        }
+        for (const Box& b : boxes) all = enclosing(all, b);
         // The median of the larger sides of at most k_sampled boxes spread evenly over the array.
         std::vector<double>& sides = sides_;
         sides.clear();
