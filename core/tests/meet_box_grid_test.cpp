@@ -1,5 +1,5 @@
-// The meet step's broad phase (kernels/meet/box_grid.hpp) against every pair tried: pairs() lists each two boxes
-// entered by build that overlap exactly once, and query() lists every ball whose current box overlaps the one asked
+// The meet step's broad phase (kernels/meet/box_grid.hpp) against every pair tried: build lists each two boxes
+// it enters that overlap exactly once, and query() lists every ball whose current box overlaps the one asked
 // about, after boxes entered again with insert(). A pair it missed would be a meet never searched, so this is the
 // grid's whole promise. Fixed seeds; box sets like the meet bench's, boxes of every size up to the whole scene, and
 // the degenerate extents the grid falls back on (every box one point, a line, boxes reaching infinity).
@@ -29,11 +29,10 @@ std::set<Pair> overlapping(const std::vector<Box>& boxes) {
     return out;
 }
 
-/// Builds the grid over boxes and checks pairs(): every overlapping pair once, i < j, no pair twice.
+/// Builds the grid over boxes and checks the pairs it lists: every overlapping pair once, i < j, no pair twice.
 void expect_pairs(BoxGrid& grid, const std::vector<Box>& boxes) {
-    grid.build(boxes);
     std::map<Pair, int> listed;
-    grid.pairs(boxes, [&](std::uint32_t i, std::uint32_t j) {
+    grid.build(boxes, [&](std::uint32_t i, std::uint32_t j) {
         EXPECT_LT(i, j);
         ++listed[{i, j}];
     });
@@ -116,7 +115,6 @@ TEST(MeetBoxGrid, QueryListsEveryOverlappingBallAfterInserts) {
         std::vector<Box> boxes = bench_like(900, 11, 0.1, 0.5, 0.05, far);
         BoxGrid grid;
         grid.build(boxes);
-        grid.pairs(boxes, [](std::uint32_t, std::uint32_t) {});
         EXPECT_EQ(grid.inserted(), 0u);
         std::uniform_int_distribution<std::uint32_t> ball(0, 899);
         std::uniform_real_distribution<double> coord(-5.0, 65.0), len(0.0, 3.0);

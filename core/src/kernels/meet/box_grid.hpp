@@ -36,6 +36,15 @@ public:
     /// The grid made afresh over boxes (its arrays reused), cells as large as the median box's larger side (of a
     /// sample), at most about one cell per ball, with every ball i entered with boxes[i].
     void build(const std::vector<Box>& boxes) {
+        build(boxes, [](std::uint32_t, std::uint32_t) {});
+    }
+
+    /// build(boxes), calling pair(i, j), i < j, once for every two balls whose boxes overlap (and possibly for a few
+    /// that do not: pair tests the boxes), in no order to rely on. Where the grid has cells, a pair is found as its
+    /// second ball is entered, in the first cell (lowest row, then column) both boxes reach: two overlapping boxes
+    /// reach that cell, since a box's cells grow with its corners.
+    template <class F>
+    void build(const std::vector<Box>& boxes, F&& pair) {
         everyone_.clear();
         later_.clear();
         inserted_ = 0;
@@ -61,57 +70,46 @@ public:
         const double floor_cell = std::sqrt(std::max(w * h, 0.0) / static_cast<double>(n));
         cell = std::max(cell, floor_cell);
         if (!(cell > 0.0) || !std::isfinite(cell) || !std::isfinite(w) || !std::isfinite(h)) {
-            // One cell: everyone.
+            // One cell: everyone, and every two of them a pair.
             for (std::uint32_t i = 0; i < n; ++i) everyone_.push_back(i);
+            for (std::uint32_t i = 0; i < n; ++i)
+                for (std::uint32_t j = i + 1; j < n; ++j) pair(i, j);
             return;
         }
         origin_ = all.lo;
         cell_ = cell;
         nx_ = static_cast<std::size_t>(std::min(w / cell, 4096.0)) + 1;
         ny_ = static_cast<std::size_t>(std::min(h / cell, 4096.0)) + 1;
-        // Each box's cells once (both passes and pairs() read them), then each cell's balls counted and placed:
+        // Each box's cells once (both passes read them), then each cell's balls counted and placed:
         // start_[c] .. start_[c + 1] are cell c's.
         ranges_.resize(n);
         for (std::size_t i = 0; i < n; ++i) ranges_[i] = range(boxes[i]);
         start_.assign(nx_ * ny_ + 1, 0);
-        for_cells(true, [&](std::uint32_t, std::size_t c) { ++start_[c + 1]; });
+        for_cells(true, [&](std::uint32_t, std::size_t c, std::uint16_t, std::uint16_t) { ++start_[c + 1]; });
         for (std::size_t c = 0; c + 1 < start_.size(); ++c) start_[c + 1] += start_[c];
         entries_.resize(start_.back());
         next_.assign(start_.begin(), start_.end() - 1);
-        for_cells(false, [&](std::uint32_t i, std::size_t c) {
-            entries_[next_[c]++] = {boxes[i], i, ranges_[i].x0, ranges_[i].y0};
+        // Balls are entered in index order: a cell's entries so far are of balls below i.
+        for_cells(false, [&](std::uint32_t i, std::size_t c, std::uint16_t x, std::uint16_t y) {
+            const Range& r = ranges_[i];
+            const std::uint32_t at = next_[c]++;
+            for (std::uint32_t k = start_[c]; k < at; ++k) {
+                const Entry& e = entries_[k];
+                // Found in an earlier cell?
+                if (std::max(e.x0, r.x0) != x || std::max(e.y0, r.y0) != y) continue;
+                if (boxes_overlap(e.box, boxes[i])) pair(e.ball, i);
+            }
+            entries_[at] = {boxes[i], i, r.x0, r.y0};
         });
-    }
-
-    /// Calls f(i, j), i < j, once for every two balls entered by build whose boxes overlap (and possibly for a few
-    /// that do not: f tests the boxes), before any insert. A pair is listed in the first cell (lowest row, then
-    /// column) both boxes reach: two overlapping boxes reach that cell, since a box's cells grow with its corners.
-    template <class F>
-    void pairs(const std::vector<Box>& boxes, F&& f) const {
-        const std::size_t n = boxes.size();
-        if (nx_ == 0) {
-            for (std::uint32_t i = 0; i < n; ++i)
-                for (std::uint32_t j = i + 1; j < n; ++j) f(i, j);
-            return;
-        }
         // The balls listed as reaching everywhere meet every other one.
-        std::vector<bool> big(everyone_.empty() ? 0 : n, false);
+        if (everyone_.empty()) return;
+        std::vector<bool>& big = big_;
+        big.assign(n, false);
         for (const std::uint32_t i : everyone_) big[i] = true;
         for (const std::uint32_t i : everyone_)
             for (std::uint32_t j = 0; j < n; ++j) {
                 if (j == i || (big[j] && j < i) || !boxes_overlap(boxes[i], boxes[j])) continue;
-                f(std::min(i, j), std::max(i, j));
-            }
-        for (std::size_t y = 0; y < ny_; ++y)
-            for (std::size_t x = 0; x < nx_; ++x) {
-                const std::size_t c = y * nx_ + x;
-                for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k)
-                    for (std::uint32_t m = k + 1; m < start_[c + 1]; ++m) {
-                        const Entry &a = entries_[k], &b = entries_[m];
-                        // Listed in an earlier cell?
-                        if (std::max(a.x0, b.x0) != x || std::max(a.y0, b.y0) != y) continue;
-                        if (boxes_overlap(a.box, b.box)) f(std::min(a.ball, b.ball), std::max(a.ball, b.ball));
-                    }
+                pair(std::min(i, j), std::max(i, j));
             }
     }
 
@@ -166,8 +164,8 @@ private:
     struct Range {
         std::uint16_t x0, x1, y0, y1;
     };
-    /// A ball entered by build in a cell: its box and its first cell (x0, y0: below 4097), where pairs() reads them
-    /// in cell order.
+    /// A ball entered by build in a cell: its box and its first cell (x0, y0: below 4097), which build reads as it
+    /// enters a later ball in the cell.
     struct Entry {
         Box box;
         std::uint32_t ball;
@@ -182,8 +180,8 @@ private:
         return static_cast<std::size_t>(r.x1 - r.x0 + 1) * static_cast<std::size_t>(r.y1 - r.y0 + 1);
     }
 
-    /// Calls f(i, c) for each ball i and each cell c its box reaches; a ball whose box reaches too many is entered
-    /// as reaching everywhere instead (if enter_big: on the first of the two passes).
+    /// Calls f(i, c, x, y) for each ball i and each cell c (column x, row y) its box reaches; a ball whose box reaches
+    /// too many is entered as reaching everywhere instead (if enter_big: on the first of the two passes).
     template <class F>
     void for_cells(bool enter_big, F&& f) {
         for (std::uint32_t i = 0; i < ranges_.size(); ++i) {
@@ -192,8 +190,8 @@ private:
                 if (enter_big) everyone_.push_back(i);
                 continue;
             }
-            for (std::size_t y = r.y0; y <= r.y1; ++y)
-                for (std::size_t x = r.x0; x <= r.x1; ++x) f(i, y * nx_ + x);
+            for (std::uint16_t y = r.y0; y <= r.y1; ++y)
+                for (std::uint16_t x = r.x0; x <= r.x1; ++x) f(i, y * nx_ + x, x, y);
         }
     }
 
@@ -221,6 +219,7 @@ private:
     std::vector<Range> ranges_;            // the cells each box entered by build reaches
     std::vector<double> sides_;            // build's scratch: the boxes' larger sides
     std::vector<std::uint32_t> next_;      // build's scratch: each cell's next free entry
+    std::vector<bool> big_;                // build's scratch: the balls reaching everywhere
 };
 
 }  // namespace ricochet::meet

@@ -80,9 +80,8 @@ void SweptFrame::run() {
     }
     // Every pair whose boxes overlap, found through a grid of the boxes (the heap's order is total: the order
     // pairs are found in changes nothing).
-    grid_.build(box_);
+    grid_.build(box_, [&](std::uint32_t i, std::uint32_t j) { consider(i, j); });
     seen_.assign(n_, 0);
-    grid_.pairs(box_, [&](std::uint32_t i, std::uint32_t j) { consider(i, j); });
     const std::size_t limit = static_cast<std::size_t>(k_max_meets_per_ball) * n_;
     std::size_t taken = 0;
     while (!heap_.empty()) {
