@@ -77,9 +77,11 @@ public:
             return;
         }
         origin_ = all.lo;
-        cell_ = cell;
+        per_cell_ = 1.0 / cell;
         nx_ = static_cast<std::size_t>(std::min(w / cell, 4096.0)) + 1;
         ny_ = static_cast<std::size_t>(std::min(h / cell, 4096.0)) + 1;
+        last_x_ = static_cast<double>(nx_ - 1);
+        last_y_ = static_cast<double>(ny_ - 1);
         // Each box's cells once (both passes read them), then each cell's balls counted and placed:
         // start_[c] .. start_[c + 1] are cell c's.
         ranges_.resize(n);
@@ -195,20 +197,25 @@ private:
         }
     }
 
-    static std::uint16_t clamp_cell(double v, std::size_t n) {
+    /// The column or row of v, the coordinate's distance from the origin in cells, at most last.
+    static std::uint16_t clamp_cell(double v, double last) {
         if (!(v > 0.0)) return 0;  // below the origin, or NaN
         // (through a signed integer: one instruction, where a double to a 64-bit unsigned one is a branch; the value
         // is below 4097)
-        return static_cast<std::uint16_t>(static_cast<std::int32_t>(std::min(v, static_cast<double>(n - 1))));
+        return static_cast<std::uint16_t>(static_cast<std::int32_t>(std::min(v, last)));
     }
 
+    /// A box's cells. (Times 1/cell, not divided by cell: a product's throughput is several times a quotient's. Both
+    /// are rounded and monotone in the coordinate, so a box's cells still grow with its corners, all the grid needs.)
     Range range(const Box& b) const {
-        return {clamp_cell((b.lo.x - origin_.x) / cell_, nx_), clamp_cell((b.hi.x - origin_.x) / cell_, nx_),
-                clamp_cell((b.lo.y - origin_.y) / cell_, ny_), clamp_cell((b.hi.y - origin_.y) / cell_, ny_)};
+        const auto cell = [&](double v, double from, double last) { return clamp_cell((v - from) * per_cell_, last); };
+        return {cell(b.lo.x, origin_.x, last_x_), cell(b.hi.x, origin_.x, last_x_), cell(b.lo.y, origin_.y, last_y_),
+                cell(b.hi.y, origin_.y, last_y_)};
     }
 
     Vec2 origin_{};
-    double cell_ = 1.0;
+    double per_cell_ = 1.0;               // 1 / the cells' side
+    double last_x_ = 0.0, last_y_ = 0.0;  // nx_ − 1 and ny_ − 1
     std::size_t nx_ = 0, ny_ = 0;
     std::vector<std::uint32_t> start_;     // cell c's entries are entries_[start_[c] .. start_[c + 1])
     std::vector<Entry> entries_;           // the frame's boxes, by cell
