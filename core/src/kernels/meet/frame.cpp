@@ -19,6 +19,13 @@ bool later(const MeetCandidate& x, const MeetCandidate& y) {
     return std::pair(x.a, x.b) > std::pair(y.a, y.b);
 }
 
+bool later(const MeetKey& x, const MeetKey& y, const std::vector<MeetCandidate>& pool) {
+    // (compare's first test, on the estimates the keys keep: farther apart than 2^−48, they decide)
+    if (x.estimate < y.estimate - 0x1p-48) return false;
+    if (x.estimate > y.estimate + 0x1p-48) return true;
+    return later(pool[x.slot], pool[y.slot]);
+}
+
 }  // namespace meet
 
 namespace {

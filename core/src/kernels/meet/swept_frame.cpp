@@ -19,8 +19,8 @@ SweptFrame::SweptFrame(KernelId k, const Obstacles& obstacles, std::span<const d
     : k_(k), obstacles_(obstacles), masses_(masses), balls_(balls), meets_(meets), scratch_(scratch),
       n_(balls.size()), seg_t_(kept.seg_t), seg_vel_(kept.seg_vel), version_(kept.version),
       committed_(kept.committed), done_(kept.done), box_(kept.box), reach_(kept.reach), grid_(kept.grid),
-      seen_(kept.seen), heap_(kept.heap), cut_a_(kept.cut_a), cut_b_(kept.cut_b), full_a_(kept.full_a),
-      full_b_(kept.full_b), full_k_(kept.full_k), before_(kept.before), touched_(kept.touched) {
+      seen_(kept.seen), pool_(kept.pool), free_(kept.free), heap_(kept.heap), cut_a_(kept.cut_a), cut_b_(kept.cut_b),
+      full_a_(kept.full_a), full_b_(kept.full_b), full_k_(kept.full_k), before_(kept.before), touched_(kept.touched) {
     seg_t_.assign(n_, 0.0);
     seg_vel_.resize(n_);
     version_.assign(n_, 0);
@@ -38,6 +38,8 @@ SweptFrame::SweptFrame(KernelId k, const Obstacles& obstacles, std::span<const d
     box_.resize(n_);
     reach_.resize(n_);
     heap_.clear();
+    pool_.clear();
+    free_.clear();
 }
 
 const std::vector<std::uint32_t>& SweptFrame::near(std::uint32_t i) {
@@ -85,9 +87,7 @@ void SweptFrame::run() {
     const std::size_t limit = static_cast<std::size_t>(k_max_meets_per_ball) * n_;
     std::size_t taken = 0;
     while (!heap_.empty()) {
-        std::pop_heap(heap_.begin(), heap_.end(), meet::later);
-        const Candidate c = std::move(heap_.back());
-        heap_.pop_back();
+        const Candidate c = pop();
         if (c.version_a != version_[c.a] || c.version_b != version_[c.b]) continue;  // a path it was found on changed
         if (taken == limit) {
             safe_stop(last_t_);
@@ -117,6 +117,28 @@ std::optional<meet::Root> SweptFrame::search(std::uint32_t a, std::uint32_t b, d
     if (!(S.rounded() > 0.0) || !meet::boxes_overlap(box_[a], box_[b])) return std::nullopt;
     from = std::max({from, seg_t_[a], seg_t_[b]});
     return meet::first_meet(balls_[a].path, balls_[b].path, S, from, balls_[a].state.vel, balls_[b].state.vel);
+}
+
+void SweptFrame::push(std::uint32_t a, std::uint32_t b, meet::Root root) {
+    std::uint32_t slot;
+    if (free_.empty()) {
+        slot = static_cast<std::uint32_t>(pool_.size());
+        pool_.emplace_back();
+    } else {
+        slot = free_.back();
+        free_.pop_back();
+    }
+    heap_.push_back({root.estimate, slot});
+    pool_[slot] = {a, b, version_[a], version_[b], std::move(root)};
+    std::push_heap(heap_.begin(), heap_.end(), later());
+}
+
+SweptFrame::Candidate SweptFrame::pop() {
+    std::pop_heap(heap_.begin(), heap_.end(), later());
+    const std::uint32_t slot = heap_.back().slot;
+    heap_.pop_back();
+    free_.push_back(slot);
+    return std::move(pool_[slot]);
 }
 
 double SweptFrame::next_printed(std::uint32_t a, std::uint32_t b, double t) const {
@@ -174,24 +196,24 @@ void SweptFrame::hold(std::size_t i, double t) {
 
 SweptFrame::SameTime SweptFrame::same_time(const Candidate& c) {
     SameTime out;
-    std::vector<Candidate> same;
+    std::vector<MeetKey> same;
     while (!heap_.empty()) {
-        const Candidate& next = heap_.front();
+        const Candidate& next = pool_[heap_.front().slot];
         const bool stale = next.version_a != version_[next.a] || next.version_b != version_[next.b];
         if (!stale && meet::compare(next.root, c.root) != 0) break;
-        std::pop_heap(heap_.begin(), heap_.end(), meet::later);
-        // The entry just looked at is at the back now.
-        const Candidate& x = heap_.back();
         if (!stale) {
-            out.shared = out.shared || x.a == c.a || x.a == c.b || x.b == c.a || x.b == c.b;
+            out.shared = out.shared || next.a == c.a || next.a == c.b || next.b == c.a || next.b == c.b;
             out.any = true;
-            same.push_back(std::move(heap_.back()));
         }
+        std::pop_heap(heap_.begin(), heap_.end(), later());
+        // The entry just looked at is at the back now.
+        if (stale) free_.push_back(heap_.back().slot);
+        else same.push_back(heap_.back());
         heap_.pop_back();
     }
-    for (Candidate& x : same) {
-        heap_.push_back(std::move(x));
-        std::push_heap(heap_.begin(), heap_.end(), meet::later);
+    for (const MeetKey& x : same) {
+        heap_.push_back(x);
+        std::push_heap(heap_.begin(), heap_.end(), later());
     }
     return out;
 }

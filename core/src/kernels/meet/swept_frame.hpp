@@ -27,6 +27,13 @@ struct MeetCandidate {
     meet::Root root;
 };
 
+/// A meet on the heap: its time's estimate (all the order needs of two times more than 2^−48 apart) and where its
+/// candidate lies in the pool (MeetFrameScratch::pool). The heap moves these, not candidates.
+struct MeetKey {
+    double estimate = 0.0;
+    std::uint32_t slot = 0;
+};
+
 /// A ball's path as it was before a meet moved it, kept while meets at that meet's exact time on other pairs are
 /// due: their placements see the ball as it was (docs/scene-log.md, "Balls that meet", 3).
 struct MeetSnapshot {
@@ -47,7 +54,9 @@ struct MeetFrameScratch {
     std::vector<meet::Box> reach;
     meet::BoxGrid grid;
     std::vector<std::uint32_t> seen;
-    std::vector<MeetCandidate> heap;
+    std::vector<MeetCandidate> pool;  // the heap's candidates, each where its key's slot says
+    std::vector<std::uint32_t> free;  // the pool's slots taken off the heap, free again
+    std::vector<MeetKey> heap;
     std::vector<PathPoint> cut_a, cut_b;
     std::vector<PathPoint> full_a, full_b, full_k;
     std::vector<MeetSnapshot> before;
@@ -96,6 +105,9 @@ inline void build_path(std::vector<PathPoint>& path, double t0, Vec2 p0, std::sp
 /// The heap's order: a comes out after b (later time; on an exact tie the higher pair).
 bool later(const MeetCandidate& x, const MeetCandidate& y);
 
+/// later on the candidates the keys stand for (pool), from the keys alone where their estimates decide it.
+bool later(const MeetKey& x, const MeetKey& y, const std::vector<MeetCandidate>& pool);
+
 }  // namespace meet
 
 /// The swept rule: meets in exact time order on the balls' paths.
@@ -132,10 +144,15 @@ private:
     /// The next printed time of either ball's current path after t (1 if none).
     double next_printed(std::uint32_t a, std::uint32_t b, double t) const;
 
-    void push(std::uint32_t a, std::uint32_t b, meet::Root root) {
-        heap_.push_back({a, b, version_[a], version_[b], std::move(root)});
-        std::push_heap(heap_.begin(), heap_.end(), meet::later);
+    void push(std::uint32_t a, std::uint32_t b, meet::Root root);
+
+    /// The heap's order on keys (meet::later).
+    auto later() const {
+        return [this](const MeetKey& x, const MeetKey& y) { return meet::later(x, y, pool_); };
     }
+
+    /// Takes the heap's first meet off it: its candidate, its pool slot freed.
+    Candidate pop();
 
     /// Searches the pair's next meet on the current paths and puts it on the heap.
     void consider(std::uint32_t a, std::uint32_t b) {
@@ -344,7 +361,9 @@ private:
     NearList near_[2];
     int near_next_ = 0;       // the list near() replaces next (the one not asked about last)
     std::uint64_t paths_ = 0;  // how many times a path changed in this frame
-    std::vector<Candidate>& heap_;
+    std::vector<Candidate>& pool_;
+    std::vector<std::uint32_t>& free_;
+    std::vector<MeetKey>& heap_;
     std::vector<PathPoint>&cut_a_, &cut_b_;  // the paths to a meet's centres (too_close)
     std::vector<PathPoint>&full_a_, &full_b_, &full_k_;  // printed paths with their committed points
     double last_t_ = 0.0;                   // the time of the last meet taken
