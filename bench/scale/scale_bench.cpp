@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <initializer_list>
+#include <memory>
 #include <random>
 #include <thread>
 #include <utility>
@@ -129,28 +130,67 @@ double thread_cpu_seconds() {
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-/// Median seconds per frame (wall and CPU, each its own median): frames run in chunks of at least
-/// ~2 ms, until budget seconds have passed (at least 3 chunks, after one warm-up frame).
-FrameTime time_per_frame(const std::function<void()>& frame, double budget) {
-    auto t0 = Clock::now();
-    frame();
-    const double first = std::chrono::duration<double>(Clock::now() - t0).count();
-    const int chunk = std::max(1, static_cast<int>(std::ceil(2e-3 / std::max(first, 1e-9))));
-    std::vector<double> wall, cpu;
-    const auto start = Clock::now();
-    while (wall.size() < 3 ||
-           (std::chrono::duration<double>(Clock::now() - start).count() < budget && wall.size() < 200)) {
-        t0 = Clock::now();
-        const double c0 = thread_cpu_seconds();
-        for (int i = 0; i < chunk; ++i) frame();
-        cpu.push_back((thread_cpu_seconds() - c0) / chunk);
-        wall.push_back(std::chrono::duration<double>(Clock::now() - t0).count() / chunk);
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// One workload's frames timed in chunks: as many frames as take ~2 ms (from one warm-up frame), each chunk's
+/// seconds per frame kept (wall and CPU).
+class ChunkTimer {
+public:
+    explicit ChunkTimer(const std::function<void()>& frame) : frame_(frame) {
+        const auto t0 = Clock::now();
+        frame_();
+        const double first = seconds_since(t0);
+        chunk_ = std::max(1, static_cast<int>(std::ceil(2e-3 / std::max(first, 1e-9))));
     }
-    const auto median = [](std::vector<double>& v) {
-        std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-        return v[v.size() / 2];
-    };
-    return {median(wall), median(cpu)};
+
+    void run_chunk() {
+        const auto t0 = Clock::now();
+        const double c0 = thread_cpu_seconds();
+        for (int i = 0; i < chunk_; ++i) frame_();
+        cpu_.push_back((thread_cpu_seconds() - c0) / chunk_);
+        wall_.push_back(seconds_since(t0) / chunk_);
+    }
+
+    std::size_t chunks() const { return wall_.size(); }
+
+    /// The median seconds per frame over the chunks (wall and CPU, each its own median).
+    FrameTime medians() {
+        const auto median = [](std::vector<double>& v) {
+            std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+            return v[v.size() / 2];
+        };
+        return {median(wall_), median(cpu_)};
+    }
+
+private:
+    const std::function<void()>& frame_;
+    int chunk_ = 1;
+    std::vector<double> wall_, cpu_;
+};
+
+/// Median seconds per frame: chunks of frames (ChunkTimer) until budget seconds have passed (at least 3 chunks, at
+/// most 200).
+FrameTime time_per_frame(const std::function<void()>& frame, double budget) {
+    ChunkTimer timer(frame);
+    const auto start = Clock::now();
+    while (timer.chunks() < 3 || (seconds_since(start) < budget && timer.chunks() < 200)) timer.run_chunk();
+    return timer.medians();
+}
+
+/// time_per_frame for two workloads side by side: rounds of 5 chunks of a, then 5 of b, for twice the budget (at
+/// least 5 chunks of each, at most 200), so that a slow spell of the machine falls on both alike and their ratio
+/// keeps (as the interleaved repetitions of `ricochet bench` keep theirs). The first chunk of a round finds the
+/// caches holding the other workload's data; the median passes over it.
+std::pair<FrameTime, FrameTime> time_per_frame_side_by_side(const std::function<void()>& a,
+                                                            const std::function<void()>& b, double budget) {
+    constexpr int round = 5;
+    ChunkTimer ta(a), tb(b);
+    const auto start = Clock::now();
+    do {
+        for (int k = 0; k < round; ++k) ta.run_chunk();
+        for (int k = 0; k < round; ++k) tb.run_chunk();
+    } while (seconds_since(start) < 2 * budget && ta.chunks() < 200);
+    return {ta.medians(), tb.medians()};
 }
 
 /// True if the piece q → r goes strictly from one side of a wall to the other through its closed
@@ -197,6 +237,7 @@ struct Row {
     long long tunnels = -1;           // pieces crossing a wall in the checked frames, -1 if not checked
     long long penetrations = -1;      // disc rows: contacts or ends inside a wall's reach, -1 if not checked
     std::size_t checked_ball_frames = 0;
+    double meets_per_ball_frame = 0;  // meet rows: from the checked frames
 };
 
 struct Config {
@@ -415,15 +456,18 @@ void measure(const Config& cfg, const std::string& sweep, int n, std::size_t bal
 /// The meet sweep at one size: count discs in a box (scale::make_box_discs), stepped by robust with the grid on one
 /// thread, without and with `balls collide`. Each is first checked: the first check_balls discs (alone in the box) for
 /// check_frames frames under the harness's no-tunnel and penetration, which read a meet as a printed point of the
-/// path (a failure counts as one, robust has none), counting the contacts with walls and the meets.
+/// path (a failure counts as one, robust has none), counting the contacts with walls and the meets. The two are then
+/// timed side by side (time_per_frame_side_by_side): the target is their ratio.
 void measure_meets(const Config& cfg, std::size_t count, std::vector<Row>& rows) {
     Scene base;
     base.walls = scale::make_box(count);
     base.balls = scale::make_box_discs(count, 3000 + count);
+    Row measured[2];
+    std::vector<std::unique_ptr<World>> worlds;
     for (const bool collide : {false, true}) {
         Scene scene = base;
         scene.balls_collide = collide;
-        Row r;
+        Row& r = measured[collide];
         r.sweep = "meet";
         r.method = collide ? "robust-meet+grid" : "robust-disc+grid";
         r.walls = scene.walls.size();
@@ -446,14 +490,22 @@ void measure_meets(const Config& cfg, std::size_t count, std::vector<Row>& rows)
         r.penetrations = penetrated ? 1 : 0;
         r.checked_ball_frames = checked.balls.size() * static_cast<std::size_t>(cfg.check_frames);
         r.hits_per_ball_frame = static_cast<double>(hits) / static_cast<double>(r.checked_ball_frames);
-        World world(scene, KernelId::robust, {.broad_phase = BroadPhase::grid, .threads = 1});
-        std::vector<Event> events;
-        const FrameTime t = time_per_frame(
-            [&] {
-                events.clear();
-                (void)world.step(events);
-            },
-            cfg.budget);
+        r.meets_per_ball_frame = static_cast<double>(meets) / 2 / static_cast<double>(r.checked_ball_frames);
+        worlds.push_back(std::make_unique<World>(scene, KernelId::robust,
+                                                 WorldOptions{.broad_phase = BroadPhase::grid, .threads = 1}));
+    }
+    std::vector<Event> events;
+    const auto stepper = [&events](World* world) {
+        return [&events, world] {
+            events.clear();
+            (void)world->step(events);
+        };
+    };
+    const std::function<void()> without = stepper(worlds[0].get()), with = stepper(worlds[1].get());
+    const auto [t_without, t_with] = time_per_frame_side_by_side(without, with, cfg.budget);
+    for (const bool collide : {false, true}) {
+        Row& r = measured[collide];
+        const FrameTime& t = collide ? t_with : t_without;
         r.ms_per_frame = t.wall * 1e3;
         r.ns_per_ball_frame = t.wall * 1e9 / static_cast<double>(count);
         r.cpu_ns_per_ball_frame = t.cpu * 1e9 / static_cast<double>(count);
@@ -461,8 +513,7 @@ void measure_meets(const Config& cfg, std::size_t count, std::vector<Row>& rows)
         fmt::print("{:<7} {:>8} walls {:>8} balls  {:<17} {:>10.4f} ms/frame {:>9.1f} ns/ball-frame ({:>7.1f} CPU)  "
                    "{:.3f} hits and {:.4f} meets/ball-frame, {} tunnels, {} penetrations in {} checked ball-frames\n",
                    r.sweep, r.walls, r.balls, r.method, r.ms_per_frame, r.ns_per_ball_frame, r.cpu_ns_per_ball_frame,
-                   r.hits_per_ball_frame, static_cast<double>(meets) / 2 / static_cast<double>(r.checked_ball_frames),
-                   r.tunnels, r.penetrations, r.checked_ball_frames);
+                   r.hits_per_ball_frame, r.meets_per_ball_frame, r.tunnels, r.penetrations, r.checked_ball_frames);
         std::fflush(stdout);
     }
 }
