@@ -20,9 +20,8 @@ bool later(const MeetCandidate& x, const MeetCandidate& y) {
 }
 
 bool later(const MeetKey& x, const MeetKey& y, const std::vector<MeetCandidate>& pool) {
-    // (compare's first test, on the estimates the keys keep: farther apart than 2^−48, they decide)
-    if (x.estimate < y.estimate - 0x1p-48) return false;
-    if (x.estimate > y.estimate + 0x1p-48) return true;
+    // (compare's first test, on the estimates the keys keep)
+    if (const int c = compare_estimates(x.estimate, y.estimate)) return c > 0;
     return later(pool[x.slot], pool[y.slot]);
 }
 

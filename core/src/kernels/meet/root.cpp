@@ -306,17 +306,13 @@ double next_point(std::span<const PathPoint> a, std::span<const PathPoint> b, do
 }
 
 int compare(const Root& x, const Root& y) {
-    // The estimates are the doubles nearest their exact values (within 2^−53 of them, t ≤ 1): farther apart than
-    // 2^−48, they decide.
-    if (x.estimate < y.estimate - 0x1p-48) return -1;
-    if (x.estimate > y.estimate + 0x1p-48) return 1;
+    if (const int c = compare_estimates(x.estimate, y.estimate)) return c;
     const Root::Exact &ex = exact_of(x), &ey = exact_of(y);
     return sign_two_roots(Rational(ex.p - ey.p), ex.q, ex.r, Rational(-ey.q), ey.r);
 }
 
 int compare(const Root& x, double t) {
-    if (x.estimate < t - 0x1p-48) return -1;
-    if (x.estimate > t + 0x1p-48) return 1;
+    if (const int c = compare_estimates(x.estimate, t)) return c;
     const Root::Exact& ex = exact_of(x);
     return sign_root(Rational(ex.p - Rational(t)), ex.q, ex.r);
 }

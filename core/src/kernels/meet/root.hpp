@@ -56,6 +56,14 @@ const Root::Exact& exact_of(const Root& root);
 std::optional<Root> first_meet(std::span<const PathPoint> a, std::span<const PathPoint> b, Radii S, double from,
                                Vec2 end_a = {}, Vec2 end_b = {}, double until = 1.0);
 
+/// The sign of x − y where two roots' estimates x and y decide it, else 0. The estimates are the doubles nearest their
+/// exact values (within 2^−53 of them, t ≤ 1): farther apart than 2^−48, they decide.
+inline int compare_estimates(double x, double y) {
+    if (x < y - 0x1p-48) return -1;
+    if (x > y + 0x1p-48) return 1;
+    return 0;
+}
+
 /// The sign of x − y, exactly.
 int compare(const Root& x, const Root& y);
 
